@@ -1,0 +1,7 @@
+package org.fclcert.model;
+
+/** {@code ACT:} algorithms (Table 4). */
+public enum ActivationMethod {
+    MIN,
+    PROD
+}

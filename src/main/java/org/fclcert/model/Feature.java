@@ -1,0 +1,140 @@
+package org.fclcert.model;
+
+import java.util.Arrays;
+import java.util.Optional;
+
+/**
+ * The conformance feature catalogue: one entry per row of Table 8 (Basic Level, mandatory),
+ * Table 9 (Extension Level, optional) and Table 10 (Open Level features fclcert can recognise).
+ * Ids are stable: reports, the corpus and the feature detector key on them. Descriptions are
+ * fclcert's own wording of the row.
+ */
+public enum Feature {
+    // Table 8 - Basic Level
+    B_FB("B-FB", ConformanceLevel.BASIC, "function block declaration",
+            "function block with VAR_INPUT and VAR_OUTPUT variables"),
+    B_IN_TERM("B-IN-TERM", ConformanceLevel.BASIC, "membership function, input",
+            "input term of at most three constant points, degrees 0 or 1"),
+    B_OUT_SINGLETON("B-OUT-SINGLETON", ConformanceLevel.BASIC, "membership function, output",
+            "constant singleton output terms"),
+    B_AND_MIN("B-AND-MIN", ConformanceLevel.BASIC, "conditional aggregation",
+            "AND operator with the MIN algorithm"),
+    B_ACCU_MAX("B-ACCU-MAX", ConformanceLevel.BASIC, "accumulation",
+            "ACCU with the MAX algorithm"),
+    B_COGS("B-COGS", ConformanceLevel.BASIC, "defuzzification",
+            "METHOD CoGS, centre of gravity for singletons"),
+    B_DEFAULT_VALUE("B-DEFAULT-VALUE", ConformanceLevel.BASIC, "default value",
+            "DEFAULT with a constant value when no rule fired"),
+    B_DEFAULT_NC("B-DEFAULT-NC", ConformanceLevel.BASIC, "default value",
+            "DEFAULT NC: output keeps its previous value when no rule fired"),
+    B_ONE_RULEBLOCK("B-ONE-RULEBLOCK", ConformanceLevel.BASIC, "ruleblock",
+            "a single rule block"),
+    B_SUBCONDITIONS("B-SUBCONDITIONS", ConformanceLevel.BASIC, "condition",
+            "any number of subconditions 'variable IS term'"),
+    B_ONE_SUBCONCLUSION("B-ONE-SUBCONCLUSION", ConformanceLevel.BASIC, "conclusion",
+            "one subconclusion per rule"),
+
+    // Table 9 - Extension Level
+    E_VAR_LOCAL("E-VAR-LOCAL", ConformanceLevel.EXTENSION, "function block declaration",
+            "local variables in a VAR section"),
+    E_IN_TERM_4("E-IN-TERM-4", ConformanceLevel.EXTENSION, "membership function, input",
+            "input terms of four points"),
+    E_OUT_TERM_4("E-OUT-TERM-4", ConformanceLevel.EXTENSION, "membership function, output",
+            "output terms of up to four points (degrees 0 or 1)"),
+    E_TERM_VARIABLE_POINT("E-TERM-VARIABLE-POINT", ConformanceLevel.EXTENSION, "membership function",
+            "term points or singletons given by input variables"),
+    E_AND_PROD("E-AND-PROD", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "AND operator with the PROD algorithm"),
+    E_AND_BDIF("E-AND-BDIF", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "AND operator with the BDIF algorithm"),
+    E_OR_MAX("E-OR-MAX", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "OR operator with the MAX algorithm (the pair of AND MIN, Table 3)"),
+    E_OR_ASUM("E-OR-ASUM", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "OR operator with the ASUM algorithm"),
+    E_OR_BSUM("E-OR-BSUM", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "OR operator with the BSUM algorithm"),
+    E_NOT("E-NOT", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "NOT operator, 1 - argument (also IS NOT)"),
+    E_PARENS("E-PARENS", ConformanceLevel.EXTENSION, "conditional aggregation",
+            "parentheses in conditions"),
+    E_ACT_MIN("E-ACT-MIN", ConformanceLevel.EXTENSION, "activation",
+            "ACT with the MIN algorithm"),
+    E_ACT_PROD("E-ACT-PROD", ConformanceLevel.EXTENSION, "activation",
+            "ACT with the PROD algorithm"),
+    E_ACCU_BSUM("E-ACCU-BSUM", ConformanceLevel.EXTENSION, "accumulation",
+            "ACCU with the BSUM algorithm"),
+    E_ACCU_NSUM("E-ACCU-NSUM", ConformanceLevel.EXTENSION, "accumulation",
+            "ACCU with the NSUM algorithm"),
+    E_RANGE("E-RANGE", ConformanceLevel.EXTENSION, "range",
+            "RANGE limiting the output membership functions"),
+    E_COG("E-COG", ConformanceLevel.EXTENSION, "defuzzification method",
+            "METHOD CoG, centre of gravity"),
+    E_COA("E-COA", ConformanceLevel.EXTENSION, "defuzzification method",
+            "METHOD CoA, centre of area"),
+    E_LM("E-LM", ConformanceLevel.EXTENSION, "defuzzification method",
+            "METHOD LM, left-most maximum"),
+    E_RM("E-RM", ConformanceLevel.EXTENSION, "defuzzification method",
+            "METHOD RM, right-most maximum"),
+    E_RULEBLOCKS("E-RULEBLOCKS", ConformanceLevel.EXTENSION, "ruleblock",
+            "several rule blocks"),
+    E_COND_VARIABLE("E-COND-VARIABLE", ConformanceLevel.EXTENSION, "condition",
+            "input variables used directly as subconditions"),
+    E_SUBCONCLUSIONS("E-SUBCONCLUSIONS", ConformanceLevel.EXTENSION, "conclusion",
+            "several subconclusions or output variables per rule, bare variable conclusions"),
+    E_WITH_CONST("E-WITH-CONST", ConformanceLevel.EXTENSION, "weighting factor",
+            "WITH a constant weighting factor"),
+    E_WITH_VAR("E-WITH-VAR", ConformanceLevel.EXTENSION, "weighting factor",
+            "WITH a VAR_INPUT variable as weighting factor"),
+
+    // Table 10 - Open Level
+    O_MANY_POINTS("O-MANY-POINTS", ConformanceLevel.OPEN, "membership function",
+            "more than four points in a term"),
+    O_DEGREES_0_1("O-DEGREES-0-1", ConformanceLevel.OPEN, "membership function",
+            "point degrees strictly between 0 and 1"),
+    O_VAR_DEGREE("O-VAR-DEGREE", ConformanceLevel.OPEN, "membership function",
+            "membership degrees given by variables");
+
+    private final String id;
+    private final ConformanceLevel level;
+    private final String element;
+    private final String description;
+
+    Feature(String id, ConformanceLevel level, String element, String description) {
+        this.id = id;
+        this.level = level;
+        this.element = element;
+        this.description = description;
+    }
+
+    /** Stable id, e.g. {@code E-ACCU-NSUM}. */
+    public String id() {
+        return id;
+    }
+
+    public ConformanceLevel level() {
+        return level;
+    }
+
+    /** The table this row belongs to: 8, 9 or 10. */
+    public int table() {
+        return switch (level) {
+            case BASIC -> 8;
+            case EXTENSION -> 9;
+            case OPEN -> 10;
+        };
+    }
+
+    /** The language element column of the table row (e.g. "accumulation"). */
+    public String element() {
+        return element;
+    }
+
+    /** One line in fclcert's words. */
+    public String description() {
+        return description;
+    }
+
+    public static Optional<Feature> byId(String id) {
+        return Arrays.stream(values()).filter(f -> f.id.equals(id)).findFirst();
+    }
+}
