@@ -4,17 +4,21 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.fclcert.model.Condition;
+import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Names;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
 import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Term;
+import org.fclcert.model.VariableKind;
 
 /**
  * FCL-W001 (warning): every term of a FUZZIFY block is named by some subcondition and every term of
  * a DEFUZZIFY block by some subconclusion. An unused term is legal but usually a leftover or a typo
- * elsewhere (Annex C itself defines terms no rule uses).
+ * elsewhere (Annex C itself defines terms no rule uses). Only the first FUZZIFY block of an input and
+ * the first DEFUZZIFY block of an output are considered: other blocks are errors of their own.
  */
 public final class NoUnusedTerms implements FunctionBlockRule {
     @Override
@@ -43,8 +47,19 @@ public final class NoUnusedTerms implements FunctionBlockRule {
                 }
             }
         }
-        block.fuzzifications().forEach(f -> report(f.variable(), f.terms(), inCondition, "subcondition", sink));
-        block.defuzzifications().forEach(d -> report(d.variable(), d.terms(), inConclusion, "subconclusion", sink));
+        // only blocks rules can reach: the first FUZZIFY of an input, the first DEFUZZIFY of an output
+        // (the terms of a misplaced or repeated block are already covered by that block's error)
+        Scope scope = new Scope(block);
+        for (Fuzzification f : block.fuzzifications()) {
+            if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
+                report(f.variable(), f.terms(), inCondition, "subcondition", sink);
+            }
+        }
+        for (Defuzzification d : block.defuzzifications()) {
+            if (scope.is(d.variable(), VariableKind.OUTPUT) && scope.defuzzification(d.variable()).get() == d) {
+                report(d.variable(), d.terms(), inConclusion, "subconclusion", sink);
+            }
+        }
     }
 
     private void report(String variable, List<Term> terms, Set<String> used, String by, DiagnosticSink sink) {
