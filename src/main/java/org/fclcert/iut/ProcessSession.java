@@ -8,7 +8,9 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.OptionalLong;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
@@ -91,6 +93,17 @@ final class ProcessSession {
         tree.forEach(ProcessHandle::destroyForcibly);
         writer.shutdownNow();
         exitCode(1000);
+        tree.forEach(ProcessSession::awaitExit);
+    }
+
+    private static void awaitExit(ProcessHandle p) {
+        try {
+            p.onExit().get(500, TimeUnit.MILLISECONDS);
+        } catch (ExecutionException | TimeoutException e) {
+            // killed but not yet reaped: the kill signal is all fclcert can do
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** Closes stdin so that an IUT reading to end of input can finish on its own. */
