@@ -31,8 +31,9 @@ import org.fclcert.model.VariableRef;
  * {@code RM}); names as declared; four spaces of indentation; one declaration, term, setting or
  * rule per line; the blocks of a function block in the order of the 5.4 production (variable
  * sections, FUZZIFY, DEFUZZIFY, RULEBLOCK, OPTIONS) with a blank line between blocks; DEFUZZIFY
- * items in the 5.4 order (RANGE, terms, METHOD, DEFAULT); a rule's second and later subconclusions
- * on their own lines. OPTIONS content is written verbatim. Numbers are spelled by {@link LiteralText}.
+ * items in the 5.4 order (RANGE, terms, METHOD, DEFAULT), RANGE in the 5.4 form {@code RANGE (a .. b);}
+ * (the prose form {@code RANGE := (...)} draws a reader warning); a rule's second and later
+ * subconclusions on their own lines. OPTIONS content is written verbatim. Numbers are spelled by {@link LiteralText}.
  */
 public final class CanonicalWriter {
     static final String INDENT = "    ";
@@ -95,7 +96,7 @@ public final class CanonicalWriter {
 
     private static String defuzzify(Defuzzification d) {
         StringBuilder out = new StringBuilder("DEFUZZIFY ").append(d.variable()).append('\n');
-        d.range().ifPresent(r -> line(out, "RANGE := (" + LiteralText.of(r.min()) + " .. " + LiteralText.of(r.max()) + ");"));
+        d.range().ifPresent(r -> line(out, "RANGE (" + LiteralText.of(r.min()) + " .. " + LiteralText.of(r.max()) + ");"));
         d.terms().forEach(t -> line(out, term(t)));
         d.method().ifPresent(m -> line(out, "METHOD : " + m.value().keyword() + ";"));
         d.defaultValue().ifPresent(v -> line(out, "DEFAULT := " + defaultValue(v) + ";"));

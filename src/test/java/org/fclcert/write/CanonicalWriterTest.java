@@ -166,7 +166,7 @@ class CanonicalWriterTest {
                 END_FUZZIFY
 
                 DEFUZZIFY out
-                    RANGE := (-10 .. 1.0E-5);
+                    RANGE (-10 .. 1.0E-5);
                     TERM a := (-10, 0) (0, 1);
                     METHOD : CoA;
                     DEFAULT := NC;
