@@ -1,6 +1,7 @@
 package org.fclcert.check;
 
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.Optional;
 import org.fclcert.model.Condition;
 import org.fclcert.model.FunctionBlock;
@@ -41,13 +42,13 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
                     if (c instanceof Condition.TermSubcondition t) {
                         check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
-                                Describe.subcondition(t), t.location(), sink);
+                                () -> Describe.subcondition(t), t.location(), sink);
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
                     if (s.term().isPresent()) {
                         check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(), false,
-                                Describe.subconclusion(s), s.location(), sink);
+                                () -> Describe.subconclusion(s), s.location(), sink);
                     }
                 }
             }
@@ -55,13 +56,12 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
     }
 
     private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
-            String element, SourceLocation at, DiagnosticSink sink) {
+            Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
         if (terms.isEmpty()) {
             return;
         }
-        String described = scope.describe(variable);
         if (terms.get().isEmpty()) {
-            sink.report(finding(at, element + ": " + described + " has no terms; define '" + term
+            sink.report(finding(at, element.get() + ": " + scope.describe(variable) + " has no terms; define '" + term
                     + "' with TERM in its block (5.2.2, 5.2.3)"));
             return;
         }
@@ -73,7 +73,7 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
         String note = elsewhere.isEmpty() ? "" : "; '" + term + "' is a term of "
                 + String.join(" and ", elsewhere.stream().map(scope::describe).toList())
                 + (inCondition ? ", and a condition tests only inputs" : ", and a conclusion sets only outputs");
-        sink.report(finding(at, element + ": '" + term + "' is not a term of " + described
+        sink.report(finding(at, element.get() + ": '" + term + "' is not a term of " + scope.describe(variable)
                 + " (its terms: " + Describe.termNames(terms.get()) + ")" + note));
     }
 }

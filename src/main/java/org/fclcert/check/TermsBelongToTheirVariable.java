@@ -1,6 +1,7 @@
 package org.fclcert.check;
 
 import java.util.List;
+import java.util.function.Supplier;
 import java.util.Optional;
 import org.fclcert.model.Condition;
 import org.fclcert.model.FunctionBlock;
@@ -37,13 +38,13 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
                     if (c instanceof Condition.TermSubcondition t) {
                         check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
-                                Describe.subcondition(t), t.location(), sink);
+                                () -> Describe.subcondition(t), t.location(), sink);
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
                     if (s.term().isPresent()) {
                         check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(), false,
-                                Describe.subconclusion(s), s.location(), sink);
+                                () -> Describe.subconclusion(s), s.location(), sink);
                     }
                 }
             }
@@ -51,7 +52,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
     }
 
     private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
-            String element, SourceLocation at, DiagnosticSink sink) {
+            Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
         if (terms.isEmpty() || terms.get().isEmpty()
                 || terms.get().stream().anyMatch(x -> Names.same(x.name(), term))) {
             return;
@@ -61,7 +62,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
             return;
         }
         String ownedBy = String.join(" and ", owners.stream().map(scope::describe).toList());
-        sink.report(finding(at, element + ": '" + term + "' is a term of " + ownedBy + ", not of "
+        sink.report(finding(at, element.get() + ": '" + term + "' is a term of " + ownedBy + ", not of "
                 + scope.describe(variable) + " (its terms: " + Describe.termNames(terms.get()) + ")"));
     }
 }
