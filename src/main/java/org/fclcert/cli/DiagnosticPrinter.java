@@ -2,15 +2,15 @@ package org.fclcert.cli;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.util.List;
+import java.util.stream.Collectors;
 import org.fclcert.model.Diagnostic;
 
 /** Diagnostics in the two output formats, and the one-line summary of a run. */
 final class DiagnosticPrinter {
-    static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+    private static final ObjectMapper JSON = new ObjectMapper();
 
     /** One diagnostic in the JSON output of {@code check}. */
     record JsonDiagnostic(String file, int line, int column, String severity, String code, String message) {
@@ -29,7 +29,15 @@ final class DiagnosticPrinter {
     }
 
     static void json(PrintWriter out, List<Diagnostic> diagnostics) {
-        out.println(toJson(diagnostics.stream().map(JsonDiagnostic::of).toList()));
+        out.println(jsonLines(diagnostics.stream().map(JsonDiagnostic::of).toList()));
+    }
+
+    /** A JSON array with one compact element per line: easy to read, diff and grep. */
+    static String jsonLines(List<?> elements) {
+        if (elements.isEmpty()) {
+            return "[]";
+        }
+        return elements.stream().map(e -> "  " + toJson(e)).collect(Collectors.joining(",\n", "[\n", "\n]"));
     }
 
     static String toJson(Object value) {

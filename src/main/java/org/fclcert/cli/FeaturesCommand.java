@@ -46,8 +46,6 @@ final class FeaturesCommand implements Callable<Integer> {
     record JsonFeature(String id, int line, int column, int table, String description) {
     }
 
-    record JsonReport(String level, List<JsonFeature> features) {
-    }
 
     @Override
     public Integer call() {
@@ -68,7 +66,7 @@ final class FeaturesCommand implements Callable<Integer> {
         DiagnosticPrinter.text(err, analysis.diagnostics()); // warnings only; stdout stays the report
         FeatureReport report = new FeatureDetector().detect(analysis.program().get());
         if (format == OutputFormat.json) {
-            out.println(DiagnosticPrinter.toJson(json(report)));
+            out.println(json(report));
         } else {
             text(out, report);
         }
@@ -83,12 +81,14 @@ final class FeaturesCommand implements Callable<Integer> {
         }
     }
 
-    static JsonReport json(FeatureReport report) {
+    /** {@code {"level": ..., "features": [...]}} with one feature use per line. */
+    static String json(FeatureReport report) {
         List<JsonFeature> features = report.uses().stream()
                 .map(u -> new JsonFeature(u.feature().id(), u.location().line(), u.location().column(),
                         u.feature().table(), u.feature().description()))
                 .toList();
-        return new JsonReport(report.level().word(), features);
+        return "{\"level\": " + DiagnosticPrinter.toJson(report.level().word()) + ", \"features\": "
+                + DiagnosticPrinter.jsonLines(features) + "}";
     }
 
     /** A table per level (Table 8, 9, 10), one row per feature with where the program uses it. */

@@ -15,7 +15,8 @@ import picocli.CommandLine.Spec;
 /** {@code fclcert fmt}: a valid program in fclcert's canonical layout. */
 @Command(name = "fmt", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "Print a valid FCL program in canonical layout (upper-case keywords, four-space indentation, "
-                + "one declaration per line, blocks in the order of 5.4). Comments are not kept. "
+                + "one declaration per line, blocks in the order of 5.4). Comments are not kept, so --write "
+                + "refuses a file with comments unless --drop-comments is given. "
                 + "A program with errors is left alone and its diagnostics are printed on stderr.",
         exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
@@ -25,6 +26,9 @@ final class FmtCommand implements Callable<Integer> {
 
     @Option(names = "--write", description = "rewrite FILE in place instead of printing the text")
     boolean write;
+
+    @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
+    boolean dropComments;
 
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
     String file;
@@ -42,25 +46,37 @@ final class FmtCommand implements Callable<Integer> {
                 return ExitCodes.ERRORS;
             }
             String canonical = new CanonicalWriter().write(analysis.program().get());
-            warnAboutLostComments(err, source, canonical);
+            int lostComments = occurrences(source, "(*") - occurrences(canonical, "(*");
             if (!write) {
                 out.print(canonical);
-            } else if (canonical.equals(source)) {
-                err.println("fclcert: " + file + " is already in canonical layout");
-            } else {
-                SourceFiles.write(file, canonical);
-                err.println("fclcert: rewrote " + file);
+                out.flush(); // the text first, then the note, as a terminal would show them
+                noteLostComments(err, lostComments);
+                return ExitCodes.OK;
             }
-            return ExitCodes.OK;
+            return rewrite(err, source, canonical, lostComments);
         } catch (FileProblem e) {
             err.println("fclcert: " + e.getMessage());
             return ExitCodes.USAGE;
         }
     }
 
-    /** The model has no comments, so say so rather than drop them silently. */
-    private void warnAboutLostComments(PrintWriter err, String source, String canonical) {
-        int lost = occurrences(source, "(*") - occurrences(canonical, "(*");
+    private int rewrite(PrintWriter err, String source, String canonical, int lostComments) throws FileProblem {
+        if (canonical.equals(source)) {
+            err.println("fclcert: " + file + " is already in canonical layout");
+            return ExitCodes.OK;
+        }
+        if (lostComments > 0 && !dropComments) {
+            // the model has no comments: rewriting would destroy them, so only on explicit request
+            err.println("fclcert: " + file + " not rewritten: it has " + DiagnosticPrinter.count(lostComments, "comment")
+                    + ", which fmt does not keep; add --drop-comments to rewrite it anyway");
+            return ExitCodes.USAGE;
+        }
+        SourceFiles.write(file, canonical);
+        err.println("fclcert: rewrote " + file);
+        return ExitCodes.OK;
+    }
+
+    private void noteLostComments(PrintWriter err, int lost) {
         if (lost > 0) {
             err.println("fclcert: note: fmt does not keep comments (" + file + " has "
                     + DiagnosticPrinter.count(lost, "comment") + ")");

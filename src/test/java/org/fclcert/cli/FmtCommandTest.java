@@ -93,16 +93,32 @@ class FmtCommandTest {
 
     @Test
     void writeRewritesTheFileOnceThenLeavesItAlone() {
-        Path file = Cli.write(dir, "sloppy.fcl", SLOPPY_VALVE);
+        String noComment = SLOPPY_VALVE.replace(" (* the valve of 5.3 *)", "");
+        Path file = Cli.write(dir, "sloppy.fcl", noComment);
         Cli first = Cli.run("fmt", "--write", file.toString());
         assertEquals(0, first.exitCode(), first.err());
         assertEquals("", first.out());
         assertEquals(CANONICAL_VALVE, Cli.read(file));
-        assertEquals("fclcert: rewrote " + file, first.errLines().get(first.errLines().size() - 1));
+        assertEquals(List.of("fclcert: rewrote " + file), first.errLines());
 
         Cli second = Cli.run("fmt", "--write", file.toString());
         assertEquals(0, second.exitCode());
         assertEquals(List.of("fclcert: " + file + " is already in canonical layout"), second.errLines());
+    }
+
+    @Test
+    void writeKeepsAFileWithCommentsUnlessTold() {
+        Path file = Cli.write(dir, "sloppy.fcl", SLOPPY_VALVE);
+        Cli refused = Cli.run("fmt", "--write", file.toString());
+        assertEquals(2, refused.exitCode());
+        assertEquals(SLOPPY_VALVE, Cli.read(file));
+        assertEquals(List.of("fclcert: " + file + " not rewritten: it has 1 comment, which fmt does not keep;"
+                + " add --drop-comments to rewrite it anyway"), refused.errLines());
+
+        Cli forced = Cli.run("fmt", "--write", "--drop-comments", file.toString());
+        assertEquals(0, forced.exitCode(), forced.err());
+        assertEquals(CANONICAL_VALVE, Cli.read(file));
+        assertEquals(List.of("fclcert: rewrote " + file), forced.errLines());
     }
 
     @Test
