@@ -140,11 +140,11 @@ conjunction
 
 // 5.4: x ::= ['NOT'] (subcondition | '(' condition ')'), so NOT NOT is not FCL.
 factor
-    : NOT? (subcondition | LPAREN condition RPAREN)
+    : negation=NOT? (subcondition | LPAREN condition RPAREN)
     ;
 
 subcondition
-    : variable=name (IS NOT? term=name)?
+    : variable=name (IS negation=NOT? term=name)?
     ;
 
 conclusion
@@ -152,7 +152,7 @@ conclusion
     ;
 
 subconclusion
-    : variable=name (IS term=name)? (WITH weight=operand)?
+    : variable=name (IS term=name)? (with=WITH weight=operand)?
     ;
 
 // ---- OPTIONS (5.2.5); the content is kept verbatim from the source text ----

@@ -414,14 +414,14 @@ final class ModelBuilder {
         Condition inner = ctx.subcondition() != null
                 ? subcondition(ctx.subcondition())
                 : new Condition.Parenthesized(condition(ctx.condition()), at(ctx.LPAREN().getSymbol()));
-        return ctx.NOT() != null ? new Condition.Not(inner, at(ctx.start)) : inner;
+        return ctx.negation != null ? new Condition.Not(inner, at(ctx.start)) : inner;
     }
 
     private Condition subcondition(SubconditionContext ctx) {
-        if (ctx.IS() == null) {
+        if (ctx.term == null) {
             return new Condition.VariableSubcondition(name(ctx.variable), at(ctx.start));
         }
-        return new Condition.TermSubcondition(name(ctx.variable), name(ctx.term), ctx.NOT() != null, at(ctx.start));
+        return new Condition.TermSubcondition(name(ctx.variable), name(ctx.term), ctx.negation != null, at(ctx.start));
     }
 
     private List<Subconclusion> conclusion(ConclusionContext ctx) {
@@ -431,8 +431,8 @@ final class ModelBuilder {
             result.add(subconclusion(s));
         }
         SubconclusionContext last = parts.get(parts.size() - 1);
-        if (parts.size() > 1 && last.WITH() != null) {
-            diagnostics.warning(last.WITH().getSymbol(), SyntaxCode.WITH_AFTER_LAST_SUBCONCLUSION, "WITH after the last"
+        if (parts.size() > 1 && last.with != null) {
+            diagnostics.warning(last.with, SyntaxCode.WITH_AFTER_LAST_SUBCONCLUSION, "WITH after the last"
                     + " of several subconclusions: 5.2.4 makes it that subconclusion's weighting factor, 5.4 the"
                     + " whole rule's; fclcert applies it to that subconclusion only");
         }

@@ -22,10 +22,8 @@ final class NumberSyntax {
         if (tokenType == FclLexer.BASED_INTEGER) {
             return basedProblem(text, unsigned);
         }
-        for (String group : unsigned.split("[.eE+-]")) {
-            if (!group.isEmpty() && !validDigits(group, 10)) {
-                return Optional.of(underscoreProblem(text));
-            }
+        if (!validDecimalGroups(unsigned)) {
+            return Optional.of(underscoreProblem(text));
         }
         if (!Double.isFinite(value(tokenType, text))) {
             return Optional.of("'" + text + "' is too large to be represented as a number");
@@ -72,6 +70,23 @@ final class NumberSyntax {
     private static String underscoreProblem(String text) {
         return "'" + text + "' is not a valid numeric literal: '_' may only stand between two digits"
                 + " (IEC 61131-3 B.1.2)";
+    }
+
+    /** Every digit group of a decimal literal (between '.', 'E' and the exponent sign) is digit {['_'] digit}. */
+    private static boolean validDecimalGroups(String unsigned) {
+        char previous = '.';   // as if a group had just started
+        for (int i = 0; i < unsigned.length(); i++) {
+            char c = unsigned.charAt(i);
+            boolean separator = c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+            if (c == '_' && (previous < '0' || previous > '9')) {
+                return false;   // '_' not after a digit: leading or doubled
+            }
+            if (separator && previous == '_') {
+                return false;   // '_' at the end of a group
+            }
+            previous = c;
+        }
+        return previous != '_';
     }
 
     /** digit {['_'] digit}: no leading, trailing or doubled underscore. */

@@ -46,7 +46,9 @@ public final class StrictReader implements FclReader {
     }
 
     private static Optional<Program> readProgram(String sourceName, String text, ReaderDiagnostics diagnostics) {
-        FclLexer lexer = new FclLexer(CharStreams.fromString(text, sourceName));
+        // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
+        String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
+        FclLexer lexer = new FclLexer(CharStreams.fromString(body, sourceName));
         lexer.removeErrorListeners();   // the lexer cannot fail: unknown characters are ANY tokens
         TokenPreScan.Result scan = TokenPreScan.scan(lexer, diagnostics);
         if (scan.tooDeep() || diagnostics.tooMany()) {
@@ -60,11 +62,12 @@ public final class StrictReader implements FclReader {
 
     private static Optional<Program> parseAndBuild(String sourceName, TokenPreScan.Result scan,
             ReaderDiagnostics diagnostics) {
-        Parsed parsed = parse(scan.tokens(), diagnostics);
+        ReservedNames reservedNames = new ReservedNames();
+        Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames);
+        reservedNames.report(diagnostics);
         if (parsed.tree() == null) {
             return Optional.empty();    // stopped after too many errors
         }
-        ReservedNames.check(parsed.tree(), diagnostics);
         if (!parsed.complete()) {
             return Optional.empty();    // the builder needs a tree without gaps
         }
@@ -111,10 +114,11 @@ public final class StrictReader implements FclReader {
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
-    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics) {
+    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics, ReservedNames reservedNames) {
         CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(tokens));
         FclParser parser = new FclParser(stream);
         parser.removeErrorListeners();
+        parser.addParseListener(reservedNames);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
         try {
@@ -122,6 +126,7 @@ public final class StrictReader implements FclReader {
         } catch (ParseCancellationException e) {
             stream.seek(0);
             parser.reset();
+            reservedNames.reset();
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);

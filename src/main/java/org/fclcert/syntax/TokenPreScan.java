@@ -90,7 +90,11 @@ final class TokenPreScan {
         switch (t.getType()) {
             case FclLexer.OPTIONS, FclLexer.OPTION -> inOptions = true;
             case FclLexer.RULEBLOCK -> inRuleBlock = true;
-            case FclLexer.END_RULEBLOCK, FclLexer.RULE, FclLexer.SEMI -> rulePart = RulePart.NONE;
+            case FclLexer.END_RULEBLOCK, FclLexer.RULE -> rulePart = RulePart.NONE;
+            case FclLexer.SEMI -> {
+                rulePart = RulePart.NONE;
+                depth = 0;   // no parenthesis spans a ';': an unclosed one is the parser's error, not nesting
+            }
             case FclLexer.IF -> rulePart = RulePart.CONDITION;
             case FclLexer.THEN -> rulePart = RulePart.CONCLUSION;
             default -> {
@@ -130,8 +134,9 @@ final class TokenPreScan {
 
     private static String describeCharacter(String c) {
         int cp = c.codePointAt(0);
-        String shown = Character.isISOControl(cp) || Character.isWhitespace(cp)
-                ? String.format("U+%04X", cp) : "'" + c + "'";
+        String code = String.format("U+%04X", cp);
+        String shown = Character.isISOControl(cp) || Character.isSpaceChar(cp) || Character.getType(cp) == Character.FORMAT
+                ? code : cp > 0x7E ? "'" + c + "' (" + code + ")" : "'" + c + "'";
         if (c.equals("+") || c.equals("-")) {
             return "unexpected character " + shown + ": a sign must be written directly before its number";
         }

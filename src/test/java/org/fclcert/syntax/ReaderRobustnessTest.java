@@ -161,6 +161,15 @@ class ReaderRobustnessTest {
     }
 
     @Test
+    void unclosedParenthesesInManyRulesDoNotAddUpToDeepNesting() {
+        // each rule lacks one ')': depth counting restarts at every ';', so this is not FCL-S008
+        String rules = "RULE 1 : IF (x IS a THEN y IS b;\n".repeat(Limits.MAX_NESTING_DEPTH + 5);
+        List<Diagnostic> d = readSafely(StrictReaderTest.minimal(rules)).diagnostics();
+        assertTrue(d.stream().noneMatch(x -> x.code().equals("FCL-S008")), d::toString);
+        assertEquals("FCL-S024", d.get(0).code());
+    }
+
+    @Test
     void hundredThousandNestedParenthesesGiveOneClearError() {
         assertTimeoutPreemptively(Duration.ofSeconds(30), () -> {
             ReadResult r = readSafely(nested(100_000));

@@ -248,6 +248,16 @@ class StrictReaderTest {
         }
     }
 
+    @Test
+    void windowsLineEndsAndAByteOrderMarkDoNotMoveLocations() {
+        String text = "\uFEFF" + FclTestPrograms.text("figure7_valve.fcl").replace("\n", "\r\n");
+        ReadResult r = reader.read("crlf.fcl", text);
+        assertEquals(List.of(), r.diagnostics());
+        FunctionBlock fb = r.program().orElseThrow().functionBlocks().get(0);
+        assertTrue(fb.location().sameAs(SourceLocation.of("crlf.fcl", 1, 1)));
+        assertTrue(fb.ruleBlocks().get(0).rules().get(1).location().sameAs(SourceLocation.of("crlf.fcl", 28, 5)));
+    }
+
     /** A one-rule program around the given rule. */
     static String minimal(String rule) {
         return """
