@@ -33,9 +33,55 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
         this.tokens = tokens;
     }
 
-    /** True once any parse error has been found (reported or suppressed). */
-    boolean foundErrors() {
+    /**
+     * True once the parser had to recover from an error (reported or suppressed): the tree may then
+     * have gaps. Keywords read as names are repairs, not recoveries: the tree stays whole.
+     */
+    boolean recovered() {
         return reported;
+    }
+
+    /**
+     * A keyword standing where a name is expected and followed by what follows a name ({@code TERM
+     * term := ...}, {@code VAR_INPUT options : REAL;}) was meant as a name: report it once, read it
+     * as an identifier, and go on as if it were one, so that the rest of the statement is still read.
+     */
+    @Override
+    public void sync(Parser recognizer) throws RecognitionException {
+        if (!inErrorRecoveryMode(recognizer) && keywordMeantAsName(recognizer)) {
+            return;
+        }
+        super.sync(recognizer);
+    }
+
+    @Override
+    public Token recoverInline(Parser recognizer) throws RecognitionException {
+        if (!inErrorRecoveryMode(recognizer) && keywordMeantAsName(recognizer)) {
+            Token name = recognizer.getCurrentToken();
+            reportMatch(recognizer);
+            recognizer.consume();
+            return name;
+        }
+        return super.recoverInline(recognizer);
+    }
+
+    private boolean keywordMeantAsName(Parser recognizer) {
+        Token t = recognizer.getCurrentToken();
+        if (!Keywords.isKeyword(t.getType()) || !(t instanceof org.antlr.v4.runtime.CommonToken token)
+                || recognizer.getContext() instanceof FclParser.WordContext
+                || recognizer.getContext() instanceof FclParser.TypeNameContext) {
+            return false;
+        }
+        IntervalSet expected = recognizer.getExpectedTokens();
+        int next = recognizer.getInputStream().LA(2);
+        if (expected.contains(t.getType()) || !expected.contains(FclLexer.IDENT) || !SyntaxMessages.followsName(next)) {
+            return false;
+        }
+        boolean recoveredBefore = reported;
+        report(recognizer, t, expected);
+        reported = recoveredBefore;
+        token.setType(FclLexer.IDENT);
+        return true;
     }
 
     @Override

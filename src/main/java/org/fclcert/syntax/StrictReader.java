@@ -132,7 +132,7 @@ public final class StrictReader implements FclReader {
             parser.setErrorHandler(strategy);
             try {
                 FclParser.ProgramContext tree = parser.program();
-                return new Parsed(tree, !strategy.foundErrors());
+                return new Parsed(tree, !strategy.recovered());
             } catch (FclErrorStrategy.StopReading stop) {
                 return new Parsed(null, false);
             }

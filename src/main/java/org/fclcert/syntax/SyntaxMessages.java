@@ -56,8 +56,8 @@ final class SyntaxMessages {
                     + " a rule starts with the keyword RULE, a space and its number: write 'RULE "
                     + offending.getText().substring(4) + "' (5.2.4)");
         }
-        if (Keywords.isKeyword(type) && !Keywords.isStructural(type) && expected.contains(FclLexer.IDENT)
-                && followsName(nextType(offending, tokens))) {
+        // a keyword followed by what follows a name (':', ':=', ...) was meant as a name
+        if (Keywords.isKeyword(type) && expected.contains(FclLexer.IDENT) && followsName(nextType(offending, tokens))) {
             return new Message(SyntaxCode.RESERVED_KEYWORD, Keywords.reservedMessage(offending, roleAt(ctx)));
         }
         return generic(ctx, offending, expected);
@@ -132,7 +132,7 @@ final class SyntaxMessages {
     }
 
     /** Tokens that stand after a name: if one follows the keyword, the keyword was meant as a name. */
-    private static boolean followsName(int type) {
+    static boolean followsName(int type) {
         return type == FclLexer.ASSIGN || type == FclLexer.COLON || type == FclLexer.COMMA || type == FclLexer.SEMI
                 || type == FclLexer.RPAREN || type == FclLexer.IS;
     }

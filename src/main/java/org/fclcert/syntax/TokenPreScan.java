@@ -22,7 +22,8 @@ import org.fclcert.model.Limits;
  *       ({@code RULE1:}, {@code color = brown}, {@code AND} between subconclusions), so that each gets
  *       one clear message and the rest of the program is still read.</li>
  * </ul>
- * Tokens inside OPTIONS ... END_OPTIONS are manufacturer-specific and passed on unchecked.
+ * Tokens inside OPTIONS ... END_OPTIONS are manufacturer-specific and passed on unchecked, except that
+ * parentheses are counted everywhere: the pre-scan cannot be sure the parser will read them as options.
  */
 final class TokenPreScan {
     private static final Pattern GLUED_RULE = Pattern.compile("RULE([0-9]+)", Pattern.CASE_INSENSITIVE);
@@ -63,6 +64,15 @@ final class TokenPreScan {
             checkComment(t);
             return;
         }
+        if (type == FclLexer.LPAREN) {
+            open(t);
+            return;
+        }
+        if (type == FclLexer.RPAREN) {
+            depth = Math.max(0, depth - 1);
+            out.add(t);
+            return;
+        }
         if (inOptions) {
             if (type == FclLexer.END_OPTIONS || type == FclLexer.END_OPTION || type == FclLexer.END_FUNCTION_BLOCK) {
                 inOptions = false;
@@ -77,11 +87,6 @@ final class TokenPreScan {
             case FclLexer.COLON -> colon(t);
             case FclLexer.EQUALS -> equalsSign(t);
             case FclLexer.AND, FclLexer.OR -> andOr(t);
-            case FclLexer.LPAREN -> open(t);
-            case FclLexer.RPAREN -> {
-                depth = Math.max(0, depth - 1);
-                out.add(t);
-            }
             default -> structure(t);
         }
     }

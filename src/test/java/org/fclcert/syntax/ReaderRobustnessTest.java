@@ -181,6 +181,9 @@ class ReaderRobustnessTest {
             assertEquals(13 + Limits.MAX_NESTING_DEPTH, d.location().column());
             // and unclosed ones as well
             assertEquals("FCL-S008", readSafely("(".repeat(100_000)).diagnostics().get(0).code());
+            // and after a misused OPTIONS keyword, which the pre-scan cannot tell from an OPTIONS block
+            String afterOptions = nested(100_000).replace("VAR_INPUT x", "VAR_INPUT options : REAL; x");
+            assertTrue(readSafely(afterOptions).diagnostics().stream().anyMatch(x -> x.code().equals("FCL-S008")));
         });
     }
 

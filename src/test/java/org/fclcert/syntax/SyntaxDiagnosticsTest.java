@@ -137,6 +137,13 @@ class SyntaxDiagnosticsTest {
                 only(minimal("RULE 1 : IF x IS nc THEN y IS b;")).message());
         assertEquals("'MIN' is a reserved keyword (Table 7) and cannot name a variable",
                 only(minimal("RULE 1 : IF x IS a THEN y IS b WITH min;")).message());
+        assertEquals("'OPTIONS' is a reserved keyword (Table 7) and cannot name a variable",
+                only(fb("VAR_INPUT options : REAL; END_VAR")).message());
+        assertEquals("'TERM' is a reserved keyword (Table 7) and cannot name a term",
+                only(fb("VAR_INPUT x : REAL; END_VAR\nFUZZIFY x TERM term := 1; END_FUZZIFY")).message());
+        // a structural keyword where a name is missing is reported as what is missing
+        assertEquals("expected a variable name or 'END_VAR' after ';' (5.2.1), found 'FUZZIFY'",
+                only(fb("VAR_INPUT x : REAL;\nFUZZIFY x TERM a := 1; END_FUZZIFY")).message());
         // the same words are fine as parts of identifiers, and identifiers may start with one '_'
         assertEquals(List.of(), codes(fb("VAR_INPUT max_speed, _range, cogs1, real_value : REAL; END_VAR")));
     }
