@@ -16,6 +16,14 @@ grammar Fcl;
 
 options { caseInsensitive = true; }
 
+@parser::members {
+    /**
+     * When set, receives each rule as soon as it is parsed, so that the reader can build its model
+     * and drop its subtree at once: a 100 000-rule block then never holds all rule trees in memory.
+     */
+    java.util.function.Consumer<FuzzyRuleContext> ruleParsed;
+}
+
 program
     : functionBlock* EOF
     ;
@@ -120,8 +128,10 @@ accumulationMethod
     : ACCU COLON word SEMI
     ;
 
+// 'built' holds the rule's model when the reader built it during the parse (see ruleParsed).
 fuzzyRule
-    : RULE ruleName COLON IF condition THEN conclusion SEMI
+    locals [org.fclcert.model.Rule built]
+    : RULE ruleName COLON IF condition THEN conclusion SEMI { if (ruleParsed != null) ruleParsed.accept($ctx); }
     ;
 
 ruleName

@@ -304,7 +304,8 @@ final class ModelBuilder {
         List<Rule> rules = new ArrayList<>();
         for (RuleBlockItemContext item : ctx.ruleBlockItem()) {
             if (item.fuzzyRule() != null) {
-                rules.add(rule(item.fuzzyRule()));
+                FuzzyRuleContext r = item.fuzzyRule();
+                rules.add(r.built != null ? r.built : rule(r));
             } else if (item.operatorDefinition() != null && item.operatorDefinition().op.getType() == FclLexer.AND) {
                 and = once(and, item.operatorDefinition(), "AND",
                         c -> algorithm(c, AndAlgorithm.class, SyntaxCode.OPERATOR_DEFINITION,
@@ -359,6 +360,16 @@ final class ModelBuilder {
                 highestItem = item;
             }
         }
+    }
+
+    /**
+     * Builds a rule while the parse is still running, then drops the rule's subtree (keeping the
+     * context itself, which still knows its first token). Only for a parse that cannot recover from
+     * errors, so that every rule handed here is complete.
+     */
+    void buildEarly(FuzzyRuleContext ctx) {
+        ctx.built = rule(ctx);
+        ctx.children = null;
     }
 
     private Rule rule(FuzzyRuleContext ctx) {

@@ -61,6 +61,28 @@ final class ReaderDiagnostics {
         return errorCount >= STOP_AFTER_ERRORS;
     }
 
+    /** The state to return to if what is reported after this point must be taken back. */
+    record Mark(int size, int errorCount, boolean errors, Map<String, Integer> warningCounts) {
+    }
+
+    Mark mark() {
+        return new Mark(all.size(), errorCount, errors, Map.copyOf(warningCounts));
+    }
+
+    /** Takes back everything reported since the mark (a parse attempt that is redone). */
+    void rollback(Mark mark) {
+        while (all.size() > mark.size()) {
+            Diagnostic d = all.remove(all.size() - 1);
+            if (d.isError()) {
+                errorPlaces.remove(d.location());
+            }
+        }
+        errorCount = mark.errorCount();
+        errors = mark.errors();
+        warningCounts.clear();
+        warningCounts.putAll(mark.warningCounts());
+    }
+
     /** Marks that an error already explains why the text ends early (an unterminated comment). */
     void explainEndOfText() {
         endOfTextExplained = true;

@@ -32,6 +32,9 @@ public final class StrictReader implements FclReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
+        if (sourceName == null) {
+            sourceName = "<input>";
+        }
         ReaderDiagnostics diagnostics = new ReaderDiagnostics(sourceName);
         try {
             Optional<Program> program = readProgram(sourceName, text, diagnostics);
@@ -63,7 +66,8 @@ public final class StrictReader implements FclReader {
     private static Optional<Program> parseAndBuild(String sourceName, TokenPreScan.Result scan,
             ReaderDiagnostics diagnostics) {
         ReservedNames reservedNames = new ReservedNames();
-        Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames);
+        ModelBuilder builder = new ModelBuilder(sourceName, diagnostics);
+        Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder);
         reservedNames.report(diagnostics);
         if (parsed.tree() == null) {
             return Optional.empty();    // stopped after too many errors
@@ -72,7 +76,7 @@ public final class StrictReader implements FclReader {
             return Optional.empty();    // the builder needs a tree without gaps
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
-        Program program = new ModelBuilder(sourceName, diagnostics).program(parsed.tree());
+        Program program = builder.program(parsed.tree());
         return diagnostics.hasErrors() ? Optional.empty() : Optional.of(program);
     }
 
@@ -114,16 +118,22 @@ public final class StrictReader implements FclReader {
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
-    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics, ReservedNames reservedNames) {
+    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
+            ModelBuilder builder) {
         CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(tokens));
         FclParser parser = new FclParser(stream);
         parser.removeErrorListeners();
         parser.addParseListener(reservedNames);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
+        // this pass stops at the first error, so every rule it completes is whole: build it at once
+        parser.ruleParsed = builder::buildEarly;
+        ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
             return new Parsed(parser.program(), true);
         } catch (ParseCancellationException e) {
+            diagnostics.rollback(mark);   // the second pass reports everything again
+            parser.ruleParsed = null;
             stream.seek(0);
             parser.reset();
             reservedNames.reset();
