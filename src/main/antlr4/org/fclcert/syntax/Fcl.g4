@@ -279,9 +279,10 @@ BAD_REAL
 fragment DIGITS   : [0-9] [0-9_]* ;
 fragment EXPONENT : 'E' [+-]? DIGITS ;
 
-// IEC 61131-3 B.1.1: letters, digits and single underscores. Lexed loosely; '__' and a trailing
-// '_' are reported by the reader.
-IDENT : [a-z_] [a-z0-9_]* ;
+// IEC 61131-3 B.1.1: letters, digits and single underscores, a leading underscore allowed. Anything
+// else made of these characters ('a__b', 'speed_', '_') is a BAD_IDENT, which the reader explains.
+IDENT     : ([a-z] | '_' [a-z0-9]) ('_'? [a-z0-9])* ;
+BAD_IDENT : [a-z_] [a-z0-9_]* ;
 
 // Comments do not nest (IEC 61131-3): the first '*)' ends the comment. An unterminated comment
 // runs to the end of the text and is reported by the reader.

@@ -25,7 +25,9 @@ final class NumberSyntax {
         if (!validDecimalGroups(unsigned)) {
             return Optional.of(underscoreProblem(text));
         }
-        if (!Double.isFinite(value(tokenType, text))) {
+        // only an exponent or some 300 digits can overflow a double
+        boolean mayOverflow = text.length() > 300 || text.indexOf('E') >= 0 || text.indexOf('e') >= 0;
+        if (mayOverflow && !Double.isFinite(value(tokenType, text))) {
             return Optional.of("'" + text + "' is too large to be represented as a number");
         }
         return Optional.empty();

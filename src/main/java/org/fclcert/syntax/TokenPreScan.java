@@ -82,7 +82,7 @@ final class TokenPreScan {
         }
         switch (type) {
             case FclLexer.ANY -> badCharacter(t);
-            case FclLexer.IDENT -> identifier(t);
+            case FclLexer.BAD_IDENT -> badIdentifier(t);
             case FclLexer.INTEGER, FclLexer.REAL_LITERAL, FclLexer.BASED_INTEGER, FclLexer.BAD_REAL -> number(t);
             case FclLexer.COLON -> colon(t);
             case FclLexer.EQUALS -> equalsSign(t);
@@ -148,7 +148,7 @@ final class TokenPreScan {
         return "unexpected character " + shown + ": it is not part of FCL";
     }
 
-    private void identifier(Token t) {
+    private void badIdentifier(Token t) {
         String text = t.getText();
         if (text.contains("__")) {
             diagnostics.error(t, SyntaxCode.BAD_IDENTIFIER, "'" + text + "' is not a valid identifier:"
@@ -157,6 +157,7 @@ final class TokenPreScan {
             diagnostics.error(t, SyntaxCode.BAD_IDENTIFIER, "'" + text + "' is not a valid identifier:"
                     + " an identifier cannot end with '_' (IEC 61131-3 B.1.1)");
         }
+        ((CommonToken) t).setType(FclLexer.IDENT);
         out.add(t);
     }
 
