@@ -120,6 +120,26 @@ class FeatureDetectorTest {
     }
 
     @Test
+    void variablePointsInFourPointTermsVariableSingletonsManyPointOutputsAndDeclaredPairs() {
+        FeatureReport report = detector.detect(valid("corners.fcl", Programs.text("features/corners.fcl")));
+        assertEquals(sorted(
+                "B-FB@1",
+                "E-IN-TERM-4@12", "E-TERM-VARIABLE-POINT@12",   // four points, one of them (bp, 1)
+                "B-IN-TERM@13",
+                "E-TERM-VARIABLE-POINT@16", "B-OUT-SINGLETON@17", "B-COGS@18", "B-DEFAULT-VALUE@19",
+                // five output points, two degrees of 0.5: not E-OUT-TERM-4
+                "E-RANGE@22", "O-MANY-POINTS@23", "O-DEGREES-0-1@23", "O-DEGREES-0-1@23", "E-COG@24",
+                "B-DEFAULT-VALUE@25",
+                "E-AND-BDIF@28", "E-OR-BSUM@29", "B-ACCU-MAX@30",
+                "B-SUBCONDITIONS@31", "B-SUBCONDITIONS@31", "B-ONE-SUBCONCLUSION@31",
+                "B-SUBCONDITIONS@32", "B-SUBCONDITIONS@32", "B-ONE-SUBCONCLUSION@32",
+                // second block declares only OR: MAX, so its AND is MIN (Basic)
+                "E-RULEBLOCKS@34", "E-OR-MAX@35", "B-ACCU-MAX@36",
+                "B-SUBCONDITIONS@37", "B-SUBCONDITIONS@37", "B-AND-MIN@37", "B-ONE-SUBCONCLUSION@37"), uses(report));
+        assertEquals(ConformanceLevel.OPEN, report.level());
+    }
+
+    @Test
     void usesAreSortedByLocation() {
         FeatureReport report = detector.detect(valid("extension.fcl", Programs.text("features/extension.fcl")));
         for (int i = 1; i < report.uses().size(); i++) {
