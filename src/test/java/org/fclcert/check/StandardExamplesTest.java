@@ -54,6 +54,27 @@ class StandardExamplesTest {
         assertEquals(List.of("FCL-W001@13:5", "FCL-W001@25:5", "FCL-W001@29:5"), summary(analysis));
     }
 
+    @Test
+    void ovenOfAnnexDAsPrintedIsRejectedByTheReaderAtColorEqualsBrownAndAtAndBetweenSubconclusions() {
+        Analysis analysis = Programs.analyzeResource("standard/oven_annex_d.fcl");
+        assertTrue(analysis.program().isEmpty());
+        List<String> found = summary(analysis);
+        // line 45: "    RULE1: IF humidity IS middle AND color = brown THEN dT1 IS zero", '=' at column 44;
+        // line 46: "        AND dT2 IS zero;", the AND at column 9
+        assertTrue(found.contains("FCL-S025@45:44"), found::toString);
+        assertTrue(found.contains("FCL-S028@46:9"), found::toString);
+    }
+
+    @Test
+    void ovenOfAnnexDWrittenInFclIsValidAndReadsTheColourClassesAsBareInputVariables() {
+        Analysis analysis = Programs.analyzeResource("standard/oven_annex_d_corrected.fcl");
+        assertEquals(List.of(), analysis.diagnostics());
+        FeatureReport report = new FeatureDetector().detect(analysis.program().orElseThrow());
+        List<String> conditionVariables = report.uses().stream()
+                .filter(u -> u.feature().id().equals("E-COND-VARIABLE")).map(u -> "line " + u.location().line()).toList();
+        assertEquals(List.of("line 39", "line 42", "line 43"), conditionVariables);
+    }
+
     private static int byPosition(String a, String b) {
         return Integer.compare(line(a), line(b));
     }
