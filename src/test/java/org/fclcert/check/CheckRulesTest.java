@@ -61,6 +61,11 @@ class CheckRulesTest {
     }
 
     @Test
+    void ruleNumbersAreComparedAsNumbers() {
+        assertEquals(List.of("FCL-C007@23"), codes(withRule("RULE 02 : IF temp IS hot THEN valve IS closed;")));
+    }
+
+    @Test
     void aVerticalStepOfEqualXIsAllowed() {
         assertEquals(List.of(), check(BASE.replace("TERM cold := (3, 1) (27, 0);", "TERM cold := (3, 1) (3, 0.5) (27, 0);")));
     }
