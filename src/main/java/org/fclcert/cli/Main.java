@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
             CheckCommand.class,
             FeaturesCommand.class,
             FmtCommand.class,
+            CorpusCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
