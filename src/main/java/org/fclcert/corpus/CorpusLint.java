@@ -133,6 +133,8 @@ public final class CorpusLint {
         }
 
         private void negative(Analysis analysis) {
+            // with a semantic (not a syntax) error the reader still gives a program, whose features can be checked
+            reader.read(c.path().toString(), c.programText()).program().ifPresent(this::features);
             List<Diagnostic> errors = errors(analysis);
             ExpectedError want = c.expectedError().orElseThrow();
             if (errors.size() != 1) {
