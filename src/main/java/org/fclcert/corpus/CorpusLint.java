@@ -173,7 +173,7 @@ public final class CorpusLint {
         }
 
         private int vectorsLine() {
-            List<String> lines = c.path().toFile().exists() ? readLines() : List.of();
+            List<String> lines = readLines();
             for (int i = 0; i < lines.size(); i++) {
                 if (lines.get(i).startsWith("vectors:")) {
                     return i + 1;
