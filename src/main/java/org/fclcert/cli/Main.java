@@ -11,6 +11,8 @@ import picocli.CommandLine.Command;
         description = "Conformance toolkit for IEC 61131-7 Fuzzy Control Language (FCL).",
         subcommands = {
             CommandLine.HelpCommand.class,
+            CertifyCommand.class,
+            ReportCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
