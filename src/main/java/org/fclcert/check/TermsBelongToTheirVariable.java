@@ -1,0 +1,65 @@
+package org.fclcert.check;
+
+import java.util.List;
+import java.util.Optional;
+import org.fclcert.model.Condition;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Term;
+
+/**
+ * FCL-C003: a term used after {@code IS} is not a term of some other variable (5.2.4: the terms of a
+ * subcondition or subconclusion belong to its own linguistic variable). Catches the common slip of
+ * naming the right term on the wrong variable, which FCL-C002 would only call undefined.
+ */
+public final class TermsBelongToTheirVariable implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C003";
+    }
+
+    @Override
+    public String asserts() {
+        return "a term named after 'variable IS' is not one of another variable's terms";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Condition c : Conditions.subconditions(rule.condition())) {
+                    if (c instanceof Condition.TermSubcondition t) {
+                        check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(),
+                                Describe.subcondition(t), t.location(), sink);
+                    }
+                }
+                for (Subconclusion s : rule.conclusion()) {
+                    if (s.term().isPresent()) {
+                        check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(),
+                                Describe.subconclusion(s), s.location(), sink);
+                    }
+                }
+            }
+        }
+    }
+
+    private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, String element,
+            SourceLocation at, DiagnosticSink sink) {
+        if (terms.isEmpty() || terms.get().isEmpty()
+                || terms.get().stream().anyMatch(x -> Names.same(x.name(), term))) {
+            return;
+        }
+        List<String> owners = scope.ownersOfTerm(term, variable);
+        if (owners.isEmpty()) {
+            return;
+        }
+        String ownedBy = String.join(" and ", owners.stream().map(scope::describe).toList());
+        sink.report(finding(at, element + ": '" + term + "' is a term of " + ownedBy + ", not of "
+                + scope.describe(variable) + " (its terms: " + Describe.termNames(terms.get()) + ")"));
+    }
+}

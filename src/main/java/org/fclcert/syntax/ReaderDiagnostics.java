@@ -1,0 +1,94 @@
+package org.fclcert.syntax;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.antlr.v4.runtime.Token;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.SourceLocation;
+
+/**
+ * Collects the reader's diagnostics for one text and, at the end, sorts them into source order and
+ * caps them so that one early mistake cannot bury the user in follow-up messages.
+ */
+final class ReaderDiagnostics {
+    /** Errors reported before the rest are summarised in one FCL-S099 error. */
+    static final int MAX_ERRORS = 25;
+    /** Warnings of one code reported before the rest are summarised in one warning. */
+    static final int MAX_WARNINGS_PER_CODE = 25;
+
+    private final String sourceName;
+    private final List<Diagnostic> all = new ArrayList<>();
+    private boolean errors;
+
+    ReaderDiagnostics(String sourceName) {
+        this.sourceName = sourceName;
+    }
+
+    SourceLocation at(Token token) {
+        return SourceLocation.of(sourceName, Math.max(1, token.getLine()), token.getCharPositionInLine() + 1);
+    }
+
+    SourceLocation at(int line, int column) {
+        return SourceLocation.of(sourceName, line, column);
+    }
+
+    void error(Token at, SyntaxCode code, String message) {
+        error(at(at), code, message);
+    }
+
+    void error(SourceLocation at, SyntaxCode code, String message) {
+        errors = true;
+        all.add(Diagnostic.error(at, code.code(), message));
+    }
+
+    void warning(Token at, SyntaxCode code, String message) {
+        all.add(Diagnostic.warning(at(at), code.code(), message));
+    }
+
+    boolean hasErrors() {
+        return errors;
+    }
+
+    /** The diagnostics in source order, errors capped at {@link #MAX_ERRORS}. */
+    List<Diagnostic> finish() {
+        List<Diagnostic> sorted = new ArrayList<>(all);
+        sorted.sort(Comparator.comparing(Diagnostic::location));
+        List<Diagnostic> kept = new ArrayList<>();
+        Map<String, Integer> warningsPerCode = new HashMap<>();
+        Map<String, Diagnostic> firstDroppedWarning = new HashMap<>();
+        int errorCount = 0;
+        Diagnostic firstDroppedError = null;
+        for (Diagnostic d : sorted) {
+            if (d.isError()) {
+                errorCount++;
+                if (errorCount <= MAX_ERRORS) {
+                    kept.add(d);
+                } else if (firstDroppedError == null) {
+                    firstDroppedError = d;
+                }
+            } else {
+                int n = warningsPerCode.merge(d.code(), 1, Integer::sum);
+                if (n <= MAX_WARNINGS_PER_CODE) {
+                    kept.add(d);
+                } else {
+                    firstDroppedWarning.putIfAbsent(d.code(), d);
+                }
+            }
+        }
+        for (Map.Entry<String, Diagnostic> e : firstDroppedWarning.entrySet()) {
+            int more = warningsPerCode.get(e.getKey()) - MAX_WARNINGS_PER_CODE;
+            kept.add(Diagnostic.warning(e.getValue().location(), e.getKey(),
+                    more + " more " + e.getKey() + " warning(s) like the ones above are not shown"));
+        }
+        if (firstDroppedError != null) {
+            int more = errorCount - MAX_ERRORS;
+            kept.add(Diagnostic.error(firstDroppedError.location(), SyntaxCode.TOO_MANY_ERRORS.code(),
+                    "too many syntax errors: " + more + " more not reported; fix the ones above first"));
+        }
+        kept.sort(Comparator.comparing(Diagnostic::location));
+        return kept;
+    }
+}
