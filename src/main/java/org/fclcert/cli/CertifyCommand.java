@@ -1,5 +1,6 @@
 package org.fclcert.cli;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -17,11 +18,11 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.CorpusFingerprint;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunCases;
 import org.fclcert.harness.RunHeader;
+import org.fclcert.harness.RunHeaders;
 import org.fclcert.harness.Runner;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
@@ -30,7 +31,6 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
-import org.fclcert.model.Toolkit;
 import org.fclcert.report.FailOn;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
@@ -104,14 +104,16 @@ final class CertifyCommand implements Callable<Integer> {
         CaseSelection selection = new CaseSelection(parseLevels(), parseFeatures(), cases);
         Duration requestTimeout = Durations.parse(timeout).orElseThrow(() -> new CannotRun(
                 "--timeout: '" + timeout + "' is not a duration (write e.g. 5s, 500ms or 2m)"));
-        List<RunCase> all = loadCorpus();
+        Corpus loaded = loadCorpus();
+        List<RunCase> all = RunCases.from(loaded.cases());
         List<RunCase> selected = selection.apply(all);
         if (selected.isEmpty()) {
             throw new CannotRun("no case of " + corpus + " matches the selection");
         }
         try (ImplementationUnderTest impl = open(requestTimeout)) {
             IutInfo info = hello(impl);
-            RunHeader header = header(info, all, selected);
+            RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
+                    List.of(levels, features, cases));
             Path dir = out != null ? out : Path.of("reports", OutDirs.forName(info.name()));
             Report report = run(impl, header, selected, dir, err);
             print(stdout, report, dir);
@@ -190,12 +192,12 @@ final class CertifyCommand implements Callable<Integer> {
         return Set.copyOf(features);
     }
 
-    private List<RunCase> loadCorpus() throws CannotRun {
+    private Corpus loadCorpus() throws CannotRun {
         if (!Files.isDirectory(corpus)) {
             throw new CannotRun("corpus directory " + corpus + " does not exist (use --corpus DIR)");
         }
         try {
-            return RunCases.from(Corpus.load(corpus).cases());
+            return Corpus.load(corpus);
         } catch (CorpusException e) {
             throw new CannotRun("the corpus cannot be used: " + e.getMessage());
         }
@@ -203,7 +205,12 @@ final class CertifyCommand implements Callable<Integer> {
 
     private ImplementationUnderTest open(Duration requestTimeout) throws CannotRun {
         try {
-            return Iuts.open(iut, IutOptions.defaults());
+            IutOptions options = IutOptions.defaults().withTimeout(requestTimeout);
+            if (classpath != null) {
+                options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
+                        .filter(s -> !s.isBlank()).map(Path::of).toList());
+            }
+            return Iuts.open(iut, options);
         } catch (IutException e) {
             throw new CannotRun("cannot start the implementation '" + iut + "': " + e.getMessage()
                     + tail(e.stderrTail()));
@@ -221,23 +228,6 @@ final class CertifyCommand implements Callable<Integer> {
 
     private static String tail(String stderrTail) {
         return stderrTail == null || stderrTail.isBlank() ? "" : "\n--- its stderr ---\n" + stderrTail.strip();
-    }
-
-    private RunHeader header(IutInfo info, List<RunCase> all, List<RunCase> selected) throws CannotRun {
-        String sha;
-        try {
-            sha = CorpusFingerprint.sha256(corpus);
-        } catch (IOException e) {
-            throw new CannotRun("cannot read the corpus files: " + e.getMessage());
-        }
-        int basic = (int) all.stream().filter(c -> c.level() == ConformanceLevel.BASIC && !c.interpretation()).count();
-        return new RunHeader(
-                new RunHeader.Iut(info.name(), info.version(), info.command(), iut, classpath, info.claims(),
-                        info.declaredLimits()),
-                new RunHeader.Toolkit(Toolkit.version()),
-                new RunHeader.CorpusInfo(corpus.toString(), all.size(), sha, basic),
-                new RunHeader.Selection(levels, features, cases, selected.stream().map(RunCase::plan).toList()),
-                Instant.now().toString());
     }
 
     /** The run cannot be done; the message says why. */
