@@ -37,8 +37,8 @@ public final class NoUnconcludedOutputs implements FunctionBlockRule {
         }
         for (Variable v : block.variables(VariableKind.OUTPUT)) {
             if (!concluded.contains(Names.key(v.name()))) {
-                sink.report(finding(v.location(), "output '" + v.name() + "' is never concluded by any rule, so it"
-                        + " only ever takes its default value"));
+                sink.report(finding(v.location(), "output '" + v.name() + "' is never concluded by any rule, so no rule"
+                        + " ever sets it"));
             }
         }
     }

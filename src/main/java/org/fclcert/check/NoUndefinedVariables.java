@@ -1,6 +1,7 @@
 package org.fclcert.check;
 
 import java.util.List;
+import java.util.function.Supplier;
 import org.fclcert.model.Condition;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
@@ -28,10 +29,10 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = new Scope(block);
         for (Fuzzification f : block.fuzzifications()) {
-            need(scope, f.variable(), f.location(), "FUZZIFY " + f.variable(), "VAR_INPUT", sink);
+            need(scope, f.variable(), f.location(), () -> "FUZZIFY " + f.variable(), "VAR_INPUT", sink);
         }
         for (Defuzzification d : block.defuzzifications()) {
-            need(scope, d.variable(), d.location(), "DEFUZZIFY " + d.variable(), "VAR_OUTPUT", sink);
+            need(scope, d.variable(), d.location(), () -> "DEFUZZIFY " + d.variable(), "VAR_OUTPUT", sink);
         }
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
@@ -40,7 +41,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
         }
         for (OperandUse use : OperandUse.all(block)) {
             if (use.operand() instanceof VariableRef ref) {
-                need(scope, ref.name(), ref.location(), use.where(), "VAR_INPUT", sink);
+                need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
             }
         }
     }
@@ -49,14 +50,14 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
         for (Condition c : Conditions.subconditions(rule.condition())) {
             String variable = c instanceof Condition.TermSubcondition t
                     ? t.variable() : ((Condition.VariableSubcondition) c).variable();
-            need(scope, variable, c.location(), Describe.subcondition(c), "VAR_INPUT", sink);
+            need(scope, variable, c.location(), () -> Describe.subcondition(c), "VAR_INPUT", sink);
         }
         for (Subconclusion s : rule.conclusion()) {
-            need(scope, s.variable(), s.location(), Describe.subconclusion(s), "VAR_OUTPUT", sink);
+            need(scope, s.variable(), s.location(), () -> Describe.subconclusion(s), "VAR_OUTPUT", sink);
         }
     }
 
-    private void need(Scope scope, String name, SourceLocation at, String element, String section,
+    private void need(Scope scope, String name, SourceLocation at, Supplier<String> element, String section,
             DiagnosticSink sink) {
         if (scope.declared(name)) {
             return;
@@ -64,7 +65,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
         List<String> declared = scope.block().variables().stream().map(Variable::name).toList();
         String known = declared.isEmpty() ? "it declares no variables"
                 : "its variables: " + Describe.names(declared);
-        sink.report(finding(at, element + ": '" + name + "' is not a declared variable of function block '"
+        sink.report(finding(at, element.get() + ": '" + name + "' is not a declared variable of function block '"
                 + scope.block().name() + "' (" + known + "); declare it in " + section + " (5.2.1)"));
     }
 }

@@ -77,14 +77,20 @@ final class Scope {
         return defuzzification(variable).map(Defuzzification::terms);
     }
 
-    /** The variables (other than {@code except}) whose FUZZIFY or DEFUZZIFY block defines a term of that name. */
-    List<String> ownersOfTerm(String term, String except) {
+    /**
+     * The variables other than {@code except} whose FUZZIFY blocks ({@code inConditions}) or DEFUZZIFY
+     * blocks (otherwise) define a term of that name, in block order.
+     */
+    List<String> ownersOfTerm(String term, String except, boolean inConditions) {
         List<String> owners = new ArrayList<>();
-        for (Fuzzification f : block.fuzzifications()) {
-            addOwner(owners, f.variable(), f.term(term).isPresent(), except);
-        }
-        for (Defuzzification d : block.defuzzifications()) {
-            addOwner(owners, d.variable(), d.term(term).isPresent(), except);
+        if (inConditions) {
+            for (Fuzzification f : block.fuzzifications()) {
+                addOwner(owners, f.variable(), f.term(term).isPresent(), except);
+            }
+        } else {
+            for (Defuzzification d : block.defuzzifications()) {
+                addOwner(owners, d.variable(), d.term(term).isPresent(), except);
+            }
         }
         return owners;
     }

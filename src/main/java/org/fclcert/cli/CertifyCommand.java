@@ -46,9 +46,9 @@ import picocli.CommandLine.Spec;
                 + "statement (report.json, report.md, report.html, junit.xml) and results.jsonl.",
             "Exit 0: the run completed and --fail-on holds; 1: it does not hold; 2: the run could not be done."})
 final class CertifyCommand implements Callable<Integer> {
-    static final int OK = 0;
-    static final int FAILED = 1;
-    static final int CANNOT_RUN = 2;
+    static final int OK = ExitCodes.OK;
+    static final int FAILED = ExitCodes.ERRORS;
+    static final int CANNOT_RUN = ExitCodes.USAGE;
 
     @Spec
     CommandSpec spec;

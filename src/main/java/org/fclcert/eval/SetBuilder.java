@@ -248,6 +248,10 @@ final class SetBuilder {
         if (np > 0 && px[np - 1] == u && py[np - 1] == y) {
             return;
         }
+        if (np > 1 && py[np - 1] == y && py[np - 2] == y) {
+            px[np - 1] = u; // a flat run needs only its two ends
+            return;
+        }
         if (np == px.length) {
             px = Arrays.copyOf(px, 2 * np);
             py = Arrays.copyOf(py, 2 * np);

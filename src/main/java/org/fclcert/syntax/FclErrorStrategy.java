@@ -61,7 +61,8 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
     private void report(Parser recognizer, Token offending, IntervalSet expected) {
         reported = true;
         int index = offending.getTokenIndex();
-        if (index >= 0 && index <= suppressThrough) {
+        if (index >= 0 && index <= suppressThrough
+                || offending.getType() == Token.EOF && diagnostics.endOfTextExplained()) {
             return;
         }
         SyntaxMessages.Message m = SyntaxMessages.describe(recognizer.getContext(), offending, expected, tokens);
@@ -69,7 +70,10 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
         suppressThrough = endOfStatement(index);
     }
 
-    /** The index of the ';' ending the statement at {@code index}, or of the last token before the next statement. */
+    /**
+     * The index of the ';' ending the statement at {@code index}, or of the keyword starting the next
+     * statement (an error found there is about the unfinished statement before it).
+     */
     private int endOfStatement(int index) {
         if (index < 0) {
             return -1;
@@ -80,7 +84,7 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
                 return i;
             }
             if (i > index && (Keywords.isStructural(type) || type == Token.EOF)) {
-                return i - 1;
+                return i;
             }
         }
         return tokens.size() - 1;

@@ -237,8 +237,14 @@ final class ModelBuilder {
             return;
         }
         DefuzzifyItemContext item = items.get(firstOutOfOrder);
-        diagnostics.error(item.start, SyntaxCode.DEFUZZIFY_BLOCK, item.start.getText().toUpperCase(Locale.ROOT)
-                + " is out of order: " + DEFUZZIFY_ORDER);
+        DefuzzifyItemContext before = items.stream().limit(firstOutOfOrder)
+                .max(java.util.Comparator.comparingInt(ModelBuilder::defuzzifyRank)).orElseThrow();
+        diagnostics.error(item.start, SyntaxCode.DEFUZZIFY_BLOCK, keyword(item) + " after " + keyword(before) + ": "
+                + DEFUZZIFY_ORDER);
+    }
+
+    private static String keyword(ParserRuleContext item) {
+        return item.start.getText().toUpperCase(Locale.ROOT);
     }
 
     private static int firstOutOfOrder(List<DefuzzifyItemContext> items) {
@@ -338,15 +344,20 @@ final class ModelBuilder {
 
     private void checkRuleBlockOrder(RuleBlockContext ctx) {
         int highest = 0;
+        RuleBlockItemContext highestItem = null;
         for (RuleBlockItemContext item : ctx.ruleBlockItem()) {
             int rank = item.operatorDefinition() != null ? 0
                     : item.activationMethod() != null ? 1 : item.accumulationMethod() != null ? 2 : 3;
             if (rank < highest) {
-                diagnostics.error(item.start, SyntaxCode.RULE_BLOCK, "'" + item.start.getText().toUpperCase(Locale.ROOT)
-                        + ":' is out of order: " + RULE_BLOCK_ORDER);
+                String before = highestItem.fuzzyRule() != null ? "a rule" : "'" + keyword(highestItem) + ":'";
+                diagnostics.error(item.start, SyntaxCode.RULE_BLOCK, "'" + keyword(item) + ":' after " + before + ": "
+                        + RULE_BLOCK_ORDER);
                 return;
             }
-            highest = rank;
+            if (rank > highest || highestItem == null) {
+                highest = rank;
+                highestItem = item;
+            }
         }
     }
 

@@ -21,7 +21,9 @@ final class ReaderDiagnostics {
 
     private final String sourceName;
     private final List<Diagnostic> all = new ArrayList<>();
+    private final java.util.Set<SourceLocation> errorPlaces = new java.util.TreeSet<>(SourceLocation::compareTo);
     private boolean errors;
+    private boolean endOfTextExplained;
 
     ReaderDiagnostics(String sourceName) {
         this.sourceName = sourceName;
@@ -39,9 +41,21 @@ final class ReaderDiagnostics {
         error(at(at), code, message);
     }
 
+    /** Reports an error, unless one is already reported at the same place (one message per place). */
     void error(SourceLocation at, SyntaxCode code, String message) {
         errors = true;
-        all.add(Diagnostic.error(at, code.code(), message));
+        if (errorPlaces.add(at)) {
+            all.add(Diagnostic.error(at, code.code(), message));
+        }
+    }
+
+    /** Marks that an error already explains why the text ends early (an unterminated comment). */
+    void explainEndOfText() {
+        endOfTextExplained = true;
+    }
+
+    boolean endOfTextExplained() {
+        return endOfTextExplained;
     }
 
     void warning(Token at, SyntaxCode code, String message) {

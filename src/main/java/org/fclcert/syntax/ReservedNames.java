@@ -20,8 +20,9 @@ final class ReservedNames {
         while (!stack.isEmpty()) {
             ParseTree node = stack.pop();
             if (node instanceof FclParser.NameContext name) {
+                // only a keyword the grammar took as a name; a token error recovery put here is reported already
                 Token token = name.getStart();
-                if (token != null && token.getType() != FclLexer.IDENT && Keywords.isKeyword(token.getType())) {
+                if (name.softKeyword() != null && token != null) {
                     diagnostics.error(token, SyntaxCode.RESERVED_KEYWORD,
                             Keywords.reservedMessage(token, Keywords.role(name)));
                 }

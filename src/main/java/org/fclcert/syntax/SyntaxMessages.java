@@ -30,6 +30,11 @@ final class SyntaxMessages {
 
     static Message describe(ParserRuleContext ctx, Token offending, IntervalSet expected, List<Token> tokens) {
         int type = offending.getType();
+        if (ctx instanceof FclParser.OptionBlockContext options) {
+            return new Message(SyntaxCode.OPTIONS_BLOCK, "the OPTIONS block that starts at line "
+                    + options.getStart().getLine() + " is not closed: expected END_OPTIONS before " + found(offending)
+                    + " (5.2.5)");
+        }
         if (type == Token.EOF) {
             return unexpectedEnd(ctx, expected);
         }
@@ -51,13 +56,20 @@ final class SyntaxMessages {
                     + " a rule starts with the keyword RULE, a space and its number: write 'RULE "
                     + offending.getText().substring(4) + "' (5.2.4)");
         }
-        if (Keywords.isKeyword(type) && !Keywords.isStructural(type) && expected.contains(FclLexer.IDENT)) {
+        if (Keywords.isKeyword(type) && !Keywords.isStructural(type) && expected.contains(FclLexer.IDENT)
+                && followsName(nextType(offending, tokens))) {
             return new Message(SyntaxCode.RESERVED_KEYWORD, Keywords.reservedMessage(offending, roleAt(ctx)));
         }
         return generic(ctx, offending, expected);
     }
 
     private static Message generic(ParserRuleContext ctx, Token offending, IntervalSet expected) {
+        if (ctx instanceof FclParser.ProgramContext) {
+            return new Message(SyntaxCode.OUTSIDE_FUNCTION_BLOCK, "expected FUNCTION_BLOCK"
+                    + (ctx.getChildCount() > 0 ? " or the end of the text after END_FUNCTION_BLOCK" : "")
+                    + ", found " + found(offending) + ": everything in FCL stands inside"
+                    + " FUNCTION_BLOCK ... END_FUNCTION_BLOCK (5.4)");
+        }
         Region region = region(ctx);
         String after = after(ctx);
         String text = "expected " + expectedPhrase(ctx, expected)
@@ -117,6 +129,17 @@ final class SyntaxMessages {
             return true;
         }
         return ctx instanceof FclParser.FuzzyRuleContext r && r.conclusion() != null;
+    }
+
+    /** Tokens that stand after a name: if one follows the keyword, the keyword was meant as a name. */
+    private static boolean followsName(int type) {
+        return type == FclLexer.ASSIGN || type == FclLexer.COLON || type == FclLexer.COMMA || type == FclLexer.SEMI
+                || type == FclLexer.RPAREN || type == FclLexer.IS;
+    }
+
+    private static int nextType(Token t, List<Token> tokens) {
+        int i = t.getTokenIndex();
+        return i >= 0 && i + 1 < tokens.size() ? tokens.get(i + 1).getType() : Token.INVALID_TYPE;
     }
 
     private static int previousType(Token t, List<Token> tokens) {
@@ -291,7 +314,7 @@ final class SyntaxMessages {
         }
         List<String> items = new ArrayList<>();
         if (name) {
-            items.add("a name");
+            items.add(roleAt(ctx) + " name");
         }
         if (expected.contains(FclLexer.INTEGER) || expected.contains(FclLexer.REAL_LITERAL)) {
             items.add("a number");

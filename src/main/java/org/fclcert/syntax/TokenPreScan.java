@@ -106,6 +106,7 @@ final class TokenPreScan {
         if (text.length() < 4 || !text.endsWith("*)")) {
             diagnostics.error(t, SyntaxCode.UNTERMINATED_COMMENT,
                     "this comment is never closed: '(*' needs a matching '*)'");
+            diagnostics.explainEndOfText();
         } else if (text.substring(2, text.length() - 2).contains("(*")) {
             diagnostics.warning(t, SyntaxCode.NESTED_COMMENT_OPENER,
                     "'(*' inside a comment: comments do not nest in FCL (IEC 61131-3), the first '*)' ends it");

@@ -70,4 +70,17 @@ class CheckerModelTest {
         FeatureReport features = new FeatureDetector().detect(tempValve(rules));
         assertEquals(100_000, features.uses().stream().filter(u -> u.feature().id().equals("E-PARENS")).count());
     }
+
+    @Test
+    void aHundredThousandRuleBlockIsCheckedAndDetected() {
+        List<Rule> rules = new ArrayList<>(validRules());
+        for (int i = 3; i <= 100_002; i++) {
+            rules.add(rule(Integer.toString(i), ModelFixtures.is("temp", i % 2 == 0 ? "hot" : "cold", i), "valve",
+                    i % 2 == 0 ? "closed" : "open", i));
+        }
+        assertEquals(List.of(), checker.check(tempValve(rules)));
+        FeatureReport features = new FeatureDetector().detect(tempValve(rules));
+        assertEquals(100_002, features.uses().stream().filter(u -> u.feature().id().equals("B-ONE-SUBCONCLUSION"))
+                .count());
+    }
 }
