@@ -74,8 +74,24 @@ final class SyntaxMessages {
         String after = after(ctx);
         String text = "expected " + expectedPhrase(ctx, expected)
                 + (after == null ? "" : " after " + after)
-                + " (" + region.clause() + "), found " + found(offending);
+                + " (" + region.clause() + "), found " + found(offending) + hint(ctx, offending);
         return new Message(region.code(), text);
+    }
+
+    /** A word about mistakes other FCL dialects make likely. */
+    private static String hint(ParserRuleContext ctx, Token offending) {
+        int type = offending.getType();
+        if ((type == FclLexer.ACCU || type == FclLexer.ACT) && within(ctx, FclParser.RULE_defuzzifyBlock)) {
+            return "; ACCU and ACT belong in a RULEBLOCK (5.2.4)";
+        }
+        boolean number = type == FclLexer.INTEGER || type == FclLexer.REAL_LITERAL || type == FclLexer.BASED_INTEGER;
+        if (number && ctx instanceof FclParser.LinguisticTermContext term
+                && term.membershipFunction() instanceof FclParser.SingletonFunctionContext s
+                && s.operand().name() != null) {
+            return "; named shapes such as '" + s.operand().getText() + "' are not FCL: a membership function is"
+                    + " a singleton value or points (x, degree) (5.2.2)";
+        }
+        return "";
     }
 
     private static Message unexpectedEnd(ParserRuleContext ctx, IntervalSet expected) {
@@ -323,9 +339,14 @@ final class SyntaxMessages {
         if (expected.contains(FclLexer.INTEGER) || expected.contains(FclLexer.REAL_LITERAL)) {
             items.add("a number");
         }
+        boolean inDefuzzify = within(ctx, FclParser.RULE_defuzzifyBlock);
         for (int type : expected.toList()) {
             if (type == FclLexer.IDENT || type == FclLexer.INTEGER || type == FclLexer.REAL_LITERAL
                     || type == FclLexer.BASED_INTEGER || type == Token.EPSILON || (name && softKeyword(type))) {
+                continue;
+            }
+            // spellings accepted only to be reported (the draft's END_FUZZIFY, 5.4's OPTION) are not advertised
+            if (type == FclLexer.OPTION || type == FclLexer.END_OPTION || type == FclLexer.END_FUZZIFY && inDefuzzify) {
                 continue;
             }
             items.add(type == Token.EOF ? "the end of the text" : "'" + Keywords.spelling(type) + "'");

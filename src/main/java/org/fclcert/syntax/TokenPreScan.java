@@ -145,6 +145,9 @@ final class TokenPreScan {
         if (c.equals("+") || c.equals("-")) {
             return "unexpected character " + shown + ": a sign must be written directly before its number";
         }
+        if (c.equals("/") || c.equals("#")) {
+            return "unexpected character " + shown + ": it is not part of FCL; comments are written (* ... *)";
+        }
         return "unexpected character " + shown + ": it is not part of FCL";
     }
 

@@ -120,6 +120,35 @@ class SyntaxDiagnosticsTest {
     }
 
     @Test
+    void otherDialectsMistakesGetAHint() {
+        assertEquals("expected ';' after the term's membership function (5.2.2), found '0'; named shapes such as"
+                + " 'Triangle' are not FCL: a membership function is a singleton value or points (x, degree) (5.2.2)",
+                only(fb("VAR_INPUT x : REAL; END_VAR\nFUZZIFY x TERM a := Triangle 0 1 2; END_FUZZIFY")).message());
+        assertEquals("expected 'END_DEFUZZIFY', 'TERM', 'RANGE', 'METHOD' or 'DEFAULT' after ';' (5.2.3), found 'ACCU';"
+                + " ACCU and ACT belong in a RULEBLOCK (5.2.4)",
+                only(fb("VAR_OUTPUT y : REAL; END_VAR\nDEFUZZIFY y TERM a := 1; ACCU : MAX; END_DEFUZZIFY")).message());
+        assertEquals("unexpected character '/': it is not part of FCL; comments are written (* ... *)",
+                diagnostics(fb("VAR_INPUT x : REAL; // input\nEND_VAR")).get(0).message());
+    }
+
+    @Test
+    void commentsMayStandWhereverWhiteSpaceMay() {
+        String text = "(*a*)FUNCTION_BLOCK(*b*)f(*c*)VAR_INPUT(*d*)x(*e*):(*f*)REAL(*g*);(*h*)END_VAR\n"
+                + "VAR_OUTPUT y : REAL; END_VAR\n"
+                + "FUZZIFY x TERM(*i*)a(*j*):=(*k*)((*l*)0(*m*),(*n*)0(*o*))(*p*)(1,1)(*q*);END_FUZZIFY\n"
+                + "DEFUZZIFY y TERM b := 1; METHOD(*r*):(*s*)CoGS; DEFAULT := 0; END_DEFUZZIFY\n"
+                + "RULEBLOCK r AND : MIN; ACCU : MAX;\n"
+                + "RULE(*t*)1(*u*):(*v*)IF(*w*)x(*x*)IS(*y*)a(*z*)THEN(**)y(*1*)IS(*2*)b(*3*);\n"
+                + "END_RULEBLOCK END_FUNCTION_BLOCK(*end*)";
+        assertEquals(List.of(), codes(text));
+    }
+
+    @Test
+    void isNotInAConclusionIsAnError() {
+        assertEquals("FCL-S027@7:30", codes(minimal("RULE 1 : IF x IS a THEN y IS NOT b;")).get(0));
+    }
+
+    @Test
     void reservedKeywordsCannotNameAnything() {
         assertEquals("'MAX' is a reserved keyword (Table 7) and cannot name a term",
                 only(fb("VAR_INPUT x : REAL; END_VAR\nFUZZIFY x TERM max := 1; END_FUZZIFY")).message());
