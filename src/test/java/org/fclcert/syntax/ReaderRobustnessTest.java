@@ -153,6 +153,16 @@ class ReaderRobustnessTest {
     }
 
     @Test
+    void deepNestingIsReadEvenFromAThreadWithASmallStack() throws InterruptedException {
+        ReadResult[] result = new ReadResult[1];
+        Thread small = new Thread(null, () -> result[0] = reader.read("s.fcl", nested(Limits.MAX_NESTING_DEPTH)),
+                "small-stack", 256 * 1024);
+        small.start();
+        small.join();
+        assertEquals(List.of(), result[0].diagnostics());
+    }
+
+    @Test
     void nestingAtTheLimitWithAnErrorInsideIsReported() {
         String text = StrictReaderTest.minimal("RULE 1 : IF " + "(".repeat(Limits.MAX_NESTING_DEPTH) + "x IS"
                 + ")".repeat(Limits.MAX_NESTING_DEPTH) + " THEN y IS b;");
