@@ -2,10 +2,13 @@
  * The strict FCL grammar: IEC 61131-7 5.4 production rules plus the IEC 61131-3 pieces they rely on
  * (identifiers, numeric literals, comments, variable declarations).
  *
- * The grammar is deliberately a little more permissive than the standard in three ways, so that the
- * reader can give precise messages instead of generic parse errors (the ModelBuilder reports them):
+ * The grammar is deliberately a little more permissive than the standard in a few ways, so that the
+ * reader can give precise messages instead of generic parse errors (the reader reports them all):
  *  - names may be spelled like some keywords (MAX, RANGE, REAL, ...); using a keyword as a name is
  *    then reported as "reserved keyword" while parsing continues;
+ *  - a DEFUZZIFY block may end with END_FUZZIFY (the 1996 draft's spelling), OPTIONS may be spelled
+ *    OPTION / END_OPTION (5.4's spelling), RANGE may have ':=' (5.2.3's prose), a rule may be named by
+ *    an identifier (5.2.4's prose): an error or a warning says which;
  *  - function block items, DEFUZZIFY items and RULEBLOCK items may come in any order; the builder
  *    reports any order other than the one 5.4 fixes (or the draft's DEFUZZIFY order, with a warning);
  *  - algorithm, method and type names are any word; the builder names the allowed ones (Tables 1-5).
