@@ -89,7 +89,7 @@ public final class StrictReader implements FclReader {
         Thread worker = new Thread(null, () -> {
             try {
                 outcome[0] = task.get();
-            } catch (RuntimeException | StackOverflowError e) {
+            } catch (Throwable e) {   // handed to the caller's thread, never printed by this one
                 outcome[0] = e;
             }
         }, "fclcert-reader", DEEP_STACK_BYTES);
@@ -109,8 +109,8 @@ public final class StrictReader implements FclReader {
         if (outcome[0] instanceof RuntimeException e) {
             throw e;
         }
-        if (outcome[0] instanceof StackOverflowError e) {
-            throw e;
+        if (outcome[0] instanceof Error e) {
+            throw e;   // a StackOverflowError becomes FCL-S999 in read(); an OutOfMemoryError stays one
         }
         @SuppressWarnings("unchecked")
         Optional<Program> program = (Optional<Program>) outcome[0];
