@@ -21,6 +21,8 @@ import picocli.CommandLine.Command;
             FeaturesCommand.class,
             FmtCommand.class,
             CorpusCommand.class,
+            CertifyCommand.class,
+            ReportCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
