@@ -15,6 +15,10 @@ public final class ExitCodes {
     static final String HEADING = "%nExit codes:%n";
     static final String OK_LINE = "0:no errors (warnings allowed)";
     static final String ERRORS_LINE = "1:a program has errors";
+    // The top-level --help speaks for every command, including certify and corpus lint.
+    static final String SUCCESS_LINE = "0:success (warnings allowed)";
+    static final String ANY_FAILURE_LINE = "1:what the command checks does not hold (program errors, corpus findings, "
+            + "certify --fail-on)";
     static final String USAGE_LINE = "2:usage problem, or a file that cannot be read or written";
     static final String INTERNAL_LINE = "3:internal error in fclcert (a bug; please report it)";
 

@@ -14,7 +14,7 @@ import picocli.CommandLine.Command;
         versionProvider = VersionProvider.class,
         description = "Conformance toolkit for IEC 61131-7 Fuzzy Control Language (FCL).",
         exitCodeListHeading = ExitCodes.HEADING,
-        exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE},
+        exitCodeList = {ExitCodes.SUCCESS_LINE, ExitCodes.ANY_FAILURE_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE},
         subcommands = {
             CommandLine.HelpCommand.class,
             CheckCommand.class,

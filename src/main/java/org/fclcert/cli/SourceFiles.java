@@ -28,6 +28,7 @@ final class SourceFiles {
     /**
      * The file's text as UTF-8; bytes that are not UTF-8 (say a Latin-1 comment) become U+FFFD
      * rather than failing, since FCL itself is plain ASCII and the reader reports any stray character.
+     * A leading byte order mark, as some Windows editors write, is not part of the text.
      */
     static String read(String path) throws FileProblem {
         Path p = Path.of(path);
@@ -39,7 +40,7 @@ final class SourceFiles {
             return StandardCharsets.UTF_8.newDecoder()
                     .onMalformedInput(CodingErrorAction.REPLACE)
                     .onUnmappableCharacter(CodingErrorAction.REPLACE)
-                    .decode(ByteBuffer.wrap(bytes)).toString();
+                    .decode(ByteBuffer.wrap(bytes)).toString().replaceFirst("^\uFEFF", "");
         } catch (NoSuchFileException e) {
             throw new FileProblem(path, "no such file");
         } catch (AccessDeniedException e) {

@@ -135,6 +135,15 @@ class CheckCommandTest {
     }
 
     @Test
+    void aByteOrderMarkIsNotPartOfTheProgram() {
+        Path file = Cli.write(dir, "bom.fcl", "\uFEFF" + UNDEFINED_TERM);
+        Cli r = Cli.run("check", file.toString());
+        assertEquals(1, r.exitCode());
+        assertEquals(1, r.outLines().size(), r.out());
+        assertTrue(r.outLines().get(0).startsWith(file + ":29:54: error FCL-C002: "), r.out());
+    }
+
+    @Test
     void noFileIsAUsageError() {
         Cli r = Cli.run("check");
         assertEquals(2, r.exitCode());

@@ -36,7 +36,7 @@ class ReadmeTest {
         List<Shown> shown = shownCommands(Files.readString(Path.of("README.md"), StandardCharsets.UTF_8));
         assertFalse(shown.isEmpty(), "README.md shows no ./fclcert command");
         return shown.stream().map(s -> DynamicTest.dynamicTest("fclcert " + String.join(" ", s.args()), () -> {
-            Cli r = Cli.run(s.args().toArray(String[]::new));
+            Cli r = runLeavingFilesAlone(s.args());
             List<String> actual = new ArrayList<>(r.outLines());
             actual.addAll(r.errLines());
             assertEquals(String.join("\n", s.output()), String.join("\n", actual),
@@ -45,6 +45,24 @@ class ReadmeTest {
                 assertEquals(s.exitCode(), r.exitCode(), "README.md shows another exit code");
             }
         }));
+    }
+
+    /** Runs the command; files it names are restored afterwards, and a shown command must not change them. */
+    private static Cli runLeavingFilesAlone(List<String> args) throws IOException {
+        java.util.Map<Path, byte[]> before = new java.util.LinkedHashMap<>();
+        for (String a : args) {
+            Path p = Path.of(a);
+            if (Files.isRegularFile(p)) {
+                before.put(p, Files.readAllBytes(p));
+            }
+        }
+        Cli r = Cli.run(args.toArray(String[]::new));
+        for (var e : before.entrySet()) {
+            boolean changed = !java.util.Arrays.equals(e.getValue(), Files.readAllBytes(e.getKey()));
+            Files.write(e.getKey(), e.getValue());
+            assertFalse(changed, "a command shown in README.md changed " + e.getKey() + " (restored)");
+        }
+        return r;
     }
 
     @Test
