@@ -21,6 +21,7 @@ import picocli.CommandLine.Command;
             FeaturesCommand.class,
             FmtCommand.class,
             CorpusCommand.class,
+            EvalCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
