@@ -36,6 +36,8 @@ public final class FunctionBlockInstance {
     private final double[] singletonDegree;
     private final double[] singletonValue;
     private final SetBuilder set = new SetBuilder();
+    /** Shapes with points from variables, re-read at each evaluation. */
+    private final int[] variableShapes;
 
     FunctionBlockInstance(BlockPlan plan) {
         this.plan = plan;
@@ -49,6 +51,8 @@ public final class FunctionBlockInstance {
             curX[s] = shape.constant ? shape.sortedX : new double[shape.n];
             curY[s] = shape.constant ? shape.sortedY : new double[shape.n];
         }
+        this.variableShapes = java.util.stream.IntStream.range(0, shapes)
+                .filter(s -> !plan.shapes[s].constant).toArray();
         this.stack = new double[plan.maxStack];
         this.bare = new double[Math.max(1, plan.maxBareTargets)];
         int rules = 0;
@@ -161,11 +165,8 @@ public final class FunctionBlockInstance {
     }
 
     private void resolveVariableShapes() {
-        Shape[] shapes = plan.shapes;
-        for (int s = 0; s < shapes.length; s++) {
-            if (!shapes[s].constant) {
-                shapes[s].resolve(values, curX[s], curY[s]);
-            }
+        for (int s : variableShapes) {
+            plan.shapes[s].resolve(values, curX[s], curY[s]);
         }
     }
 
