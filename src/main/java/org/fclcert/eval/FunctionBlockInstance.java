@@ -30,7 +30,6 @@ public final class FunctionBlockInstance {
     private final double[][] curY;
     private final double[] stack;
     private final double[] bare;
-    private final double[] ruleDegree;
     private final double[] contributionDegree;
     private final double[] contributionWeight;
     private final double[] singletonDegree;
@@ -55,15 +54,10 @@ public final class FunctionBlockInstance {
                 .filter(s -> !plan.shapes[s].constant).toArray();
         this.stack = new double[plan.maxStack];
         this.bare = new double[Math.max(1, plan.maxBareTargets)];
-        int rules = 0;
         int terms = 0;
-        for (RuleBlockPlan rb : plan.ruleBlocks) {
-            rules = Math.max(rules, rb.conditions().length);
-        }
         for (OutputPlan o : plan.outputs) {
             terms = Math.max(terms, o.termShapes().length);
         }
-        this.ruleDegree = new double[rules];
         this.contributionDegree = new double[plan.contributionCount];
         this.contributionWeight = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
@@ -196,7 +190,6 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
-            ruleDegree[r] = d;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
