@@ -279,6 +279,10 @@ public final class FunctionBlockInstance {
     private void defuzzify(OutputPlan o, Trace trace) throws EvaluationException {
         double result = o.singletons() ? singletons(o, trace) : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
+        if (Double.isNaN(result) && !nothingFired(o)) {
+            throw new EvaluationException(EvaluationException.NO_RESULT,
+                    "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
+        }
         if (Double.isNaN(result)) {
             outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
             result = o.noChange() ? values[o.slot()] : o.defaultValue();
@@ -291,6 +295,24 @@ public final class FunctionBlockInstance {
         if (trace != null) {
             trace.add(new Trace.Result(o.variable(), stored, outcome));
         }
+    }
+
+    /**
+     * Whether the accumulated set just computed is empty for the output's method (point 6): every
+     * singleton at degree 0, or a point set without area (CoG, CoA) or without positive degree
+     * (LM, RM). A NaN result from a non-empty set is an overflow, not a reason for DEFAULT.
+     */
+    private boolean nothingFired(OutputPlan o) {
+        if (o.singletons()) {
+            for (int t = 0; t < o.termShapes().length; t++) {
+                if (singletonDegree[t] != 0) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        boolean byArea = o.method() == DefuzzificationMethod.COG || o.method() == DefuzzificationMethod.COA;
+        return byArea ? Defuzzifier.area(set.px, set.py, set.np) == 0 : Defuzzifier.supremum(set.py, set.np) == 0;
     }
 
     /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */

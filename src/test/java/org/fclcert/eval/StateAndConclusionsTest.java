@@ -303,4 +303,26 @@ class StateAndConclusionsTest {
         assertEquals("FCL-V003", assertThrows(EvaluationException.class, () -> fb.set("valve", 1)).code());
         assertEquals(Map.of("valve", 0.0), fb.outputs());
     }
+
+    /*
+     * Overflow is an error, never a silent DEFAULT. RANGE -1e308..1e308 is 2e308 wide, which is
+     * infinite in double arithmetic: the area of the fired term T = 1 everywhere is infinite and
+     * CoG = inf/inf = NaN although a rule fired -> FCL-V005. Singletons at 1.5e308 with degree 1
+     * twice: the CoGS numerator overflows to infinity -> FCL-V005.
+     */
+    @Test
+    void overflowIsAnErrorNotADefault() throws EvaluationException {
+        FunctionBlockInstance wide = Fcl.block("fb").input("p").output("y")
+                .fuzzify("p", Fcl.term("deg", IDENTITY))
+                .defuzzify(Fcl.defuzzify("y", DefuzzificationMethod.COG).range(-1e308, 1e308)
+                        .term("t", pts(0, 1, 1, 1)))
+                .rules(Fcl.ruleBlock("r").rule(is("p", "deg"), then("y", "t")))
+                .instance();
+        wide.set("p", 1);
+        assertEquals("FCL-V005", assertThrows(EvaluationException.class, wide::evaluate).code());
+        FunctionBlockInstance huge = typed(DataType.LREAL, 1.5e308, 1.5e308);
+        huge.set("p", 1);
+        huge.set("q", 1);
+        assertEquals("FCL-V005", assertThrows(EvaluationException.class, huge::evaluate).code());
+    }
 }
