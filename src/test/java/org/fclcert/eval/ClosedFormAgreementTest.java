@@ -36,7 +36,8 @@ import org.junit.jupiter.api.Test;
 /**
  * Property test: on randomly generated programs (fixed seed) using every AND/OR pair, NOT,
  * parentheses, bare-variable subconditions, both activations, all three accumulations, constant and
- * variable weights, RANGE and no RANGE, and every defuzzification method, the closed-form evaluator
+ * variable weights, term points given by input variables (possibly out of sequence), RANGE and no
+ * RANGE, and every defuzzification method, the closed-form evaluator
  * agrees with {@link NumericOracle}: a dense midpoint rule with 10^6 samples over the
  * defuzzification interval. Agreement is |closed − numeric| ≤ 1e-6 · W, W the width of the
  * interval (the scale of every result; results near 0 make a purely relative bound meaningless).
@@ -78,7 +79,7 @@ class ClosedFormAgreementTest {
         Generator g = new Generator(rnd);
         FunctionBlock fb = g.block();
         Map<String, Double> in = Map.of("x1", uniform(rnd, -1, 11), "x2", uniform(rnd, -1, 11),
-                "w", uniform(rnd, -0.2, 1.2));
+                "w", uniform(rnd, -0.2, 1.2), "v1", uniform(rnd, -1, 11), "v2", uniform(rnd, 0, 100));
         NumericOracle oracle = new NumericOracle(fb, in);
         Defuzzification y = fb.defuzzification("y").orElseThrow();
         double lo = g.lo;
@@ -170,8 +171,9 @@ class ClosedFormAgreementTest {
         }
 
         FunctionBlock block() {
-            Fcl.Block b = Fcl.block("random").input("x1").input("x2").input("w").output("y").output("z")
-                    .fuzzify("x1", inputTerm("a"), inputTerm("b"), inputTerm("c"))
+            Fcl.Block b = Fcl.block("random").input("x1").input("x2").input("w").input("v1").input("v2")
+                    .output("y").output("z")
+                    .fuzzify("x1", variablePoint(inputTerm("a"), "v1"), inputTerm("b"), inputTerm("c"))
                     .fuzzify("x2", inputTerm("a"), inputTerm("b"), inputTerm("c"));
             b.defuzzify(pointOutput());
             Fcl.Out z = Fcl.defuzzify("z", DefuzzificationMethod.COGS).defaultValue(DEFAULT);
@@ -196,6 +198,19 @@ class ClosedFormAgreementTest {
                 xy[2 * i + 1] = degree();
             }
             return Fcl.term(name, Fcl.pts(xy));
+        }
+
+        /**
+         * The term with one point's x replaced by an input variable (5.2.2 on-line adaptation):
+         * at run time the points may be out of sequence.
+         */
+        private Term variablePoint(Term t, String variable) {
+            List<org.fclcert.model.Point> pts = ((MembershipFunction.Points) t.function()).points();
+            int k = rnd.nextInt(pts.size());
+            List<org.fclcert.model.Point> changed = new ArrayList<>(pts);
+            changed.set(k, new org.fclcert.model.Point(Fcl.var(variable), pts.get(k).degree(), Fcl.AT));
+            notes.add(t.name() + " point " + k + " at " + variable);
+            return Fcl.term(t.name(), new MembershipFunction.Points(changed));
         }
 
         private double degree() {
@@ -239,7 +254,9 @@ class ClosedFormAgreementTest {
                 }
                 min = Math.min(min, xy[0]);
                 max = Math.max(max, xy[xy.length - 2]);
-                y.term("t" + t, Fcl.pts(xy));
+                Term term = Fcl.term("t" + t, Fcl.pts(xy));
+                // with a RANGE the interval does not depend on the points, so a point may move
+                y.term(term.name(), (range && t == 0 ? variablePoint(term, "v2") : term).function());
             }
             if (range) {
                 lo = Math.rint(uniform(rnd, -10, 30));

@@ -27,8 +27,8 @@ import org.fclcert.model.VariableRef;
  * An independent, deliberately naive evaluator for checking the closed-form one: it walks the model
  * directly (no compilation), evaluates membership functions from the model's points, and
  * defuzzifies by a dense midpoint rule. It supports what the random programs use: one rule block
- * level of inputs (no bare-variable conclusions feeding later blocks), constant points with
- * strictly ascending x.
+ * level of inputs (no bare-variable conclusions feeding later blocks), points with distinct x
+ * (constants or input variables, sorted here).
  *
  * <p>NSUM is evaluated as the plain sum: its normalisation divides the whole set by one constant,
  * which CoG, CoA, LM and RM (and CoGS) do not see.
@@ -68,10 +68,15 @@ final class NumericOracle {
         return o instanceof Literal l ? l.value() : inputs.get(((VariableRef) o).name());
     }
 
+    /** The term's points with their current values, sorted by x (List.sort is stable). */
     private double[][] points(Term t) {
-        List<Point> pts = ((MembershipFunction.Points) t.function()).points();
-        double[] x = pts.stream().mapToDouble(p -> value(p.x())).toArray();
-        double[] y = pts.stream().mapToDouble(p -> value(p.degree())).toArray();
+        List<double[]> pts = new ArrayList<>();
+        for (Point p : ((MembershipFunction.Points) t.function()).points()) {
+            pts.add(new double[] {value(p.x()), value(p.degree())});
+        }
+        pts.sort((a, b) -> Double.compare(a[0], b[0]));
+        double[] x = pts.stream().mapToDouble(p -> p[0]).toArray();
+        double[] y = pts.stream().mapToDouble(p -> p[1]).toArray();
         return new double[][] {x, y};
     }
 
