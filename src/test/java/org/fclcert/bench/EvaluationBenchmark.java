@@ -71,7 +71,7 @@ public class EvaluationBenchmark {
     }
 
     @Setup
-    public void setUp() {
+    public void setUp() throws EvaluationException {
         valve = Fcl.block("Fuzzy_FB").input("temp").input("pressure").output("valve")
                 .fuzzify("temp", Fcl.term("cold", pts(3, 1, 27, 0)), Fcl.term("hot", pts(3, 0, 27, 1)))
                 .fuzzify("pressure", Fcl.term("low", pts(55, 1, 95, 0)), Fcl.term("high", pts(55, 0, 95, 1)))
@@ -95,6 +95,21 @@ public class EvaluationBenchmark {
                         .rule(is("x", "mid"), then("y", "medium"))
                         .rule(is("x", "high"), then("y", "large")))
                 .instance();
+        // the measured code computes exact results: 9500/127 (5.3 at temp 5, pressure 60) and, at
+        // x = 5 where only "mid" fires, the CoG of the symmetric triangle "medium", 50
+        expect(9500.0 / 127, valve, "valve", new String[] {"temp", "pressure"}, 5, 60);
+        expect(50.0, cog, "y", new String[] {"x"}, 5);
+    }
+
+    private static void expect(double expected, FunctionBlockInstance fb, String output, String[] inputs,
+            double... values) throws EvaluationException {
+        for (int k = 0; k < inputs.length; k++) {
+            fb.set(inputs[k], values[k]);
+        }
+        fb.evaluate();
+        if (Math.abs(fb.get(output) - expected) > 1e-12 * Math.abs(expected)) {
+            throw new IllegalStateException(output + " = " + fb.get(output) + ", expected " + expected);
+        }
     }
 
     @Benchmark
