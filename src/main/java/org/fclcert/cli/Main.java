@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
             CorpusCommand.class,
             CertifyCommand.class,
             ReportCommand.class,
+            EvalCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec

@@ -30,12 +30,13 @@ public final class FunctionBlockInstance {
     private final double[][] curY;
     private final double[] stack;
     private final double[] bare;
-    private final double[] ruleDegree;
     private final double[] contributionDegree;
     private final double[] contributionWeight;
     private final double[] singletonDegree;
     private final double[] singletonValue;
     private final SetBuilder set = new SetBuilder();
+    /** Shapes with points from variables, re-read at each evaluation. */
+    private final int[] variableShapes;
 
     FunctionBlockInstance(BlockPlan plan) {
         this.plan = plan;
@@ -49,17 +50,14 @@ public final class FunctionBlockInstance {
             curX[s] = shape.constant ? shape.sortedX : new double[shape.n];
             curY[s] = shape.constant ? shape.sortedY : new double[shape.n];
         }
+        this.variableShapes = java.util.stream.IntStream.range(0, shapes)
+                .filter(s -> !plan.shapes[s].constant).toArray();
         this.stack = new double[plan.maxStack];
         this.bare = new double[Math.max(1, plan.maxBareTargets)];
-        int rules = 0;
         int terms = 0;
-        for (RuleBlockPlan rb : plan.ruleBlocks) {
-            rules = Math.max(rules, rb.conditions().length);
-        }
         for (OutputPlan o : plan.outputs) {
             terms = Math.max(terms, o.termShapes().length);
         }
-        this.ruleDegree = new double[rules];
         this.contributionDegree = new double[plan.contributionCount];
         this.contributionWeight = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
@@ -161,11 +159,8 @@ public final class FunctionBlockInstance {
     }
 
     private void resolveVariableShapes() {
-        Shape[] shapes = plan.shapes;
-        for (int s = 0; s < shapes.length; s++) {
-            if (!shapes[s].constant) {
-                shapes[s].resolve(values, curX[s], curY[s]);
-            }
+        for (int s : variableShapes) {
+            plan.shapes[s].resolve(values, curX[s], curY[s]);
         }
     }
 
@@ -195,7 +190,6 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
-            ruleDegree[r] = d;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
@@ -285,6 +279,10 @@ public final class FunctionBlockInstance {
     private void defuzzify(OutputPlan o, Trace trace) throws EvaluationException {
         double result = o.singletons() ? singletons(o, trace) : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
+        if (Double.isNaN(result) && !nothingFired(o)) {
+            throw new EvaluationException(EvaluationException.NO_RESULT,
+                    "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
+        }
         if (Double.isNaN(result)) {
             outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
             result = o.noChange() ? values[o.slot()] : o.defaultValue();
@@ -297,6 +295,24 @@ public final class FunctionBlockInstance {
         if (trace != null) {
             trace.add(new Trace.Result(o.variable(), stored, outcome));
         }
+    }
+
+    /**
+     * Whether the accumulated set just computed is empty for the output's method (point 6): every
+     * singleton at degree 0, or a point set without area (CoG, CoA) or without positive degree
+     * (LM, RM). A NaN result from a non-empty set is an overflow, not a reason for DEFAULT.
+     */
+    private boolean nothingFired(OutputPlan o) {
+        if (o.singletons()) {
+            for (int t = 0; t < o.termShapes().length; t++) {
+                if (singletonDegree[t] != 0) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        boolean byArea = o.method() == DefuzzificationMethod.COG || o.method() == DefuzzificationMethod.COA;
+        return byArea ? Defuzzifier.area(set.px, set.py, set.np) == 0 : Defuzzifier.supremum(set.py, set.np) == 0;
     }
 
     /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */

@@ -29,30 +29,6 @@ final class Pwl {
         return interpolate(x[i - 1], y[i - 1], x[i], y[i], u);
     }
 
-    /** The limit of the degree as the argument approaches {@code u} from below. */
-    static double leftLimit(double[] x, double[] y, int n, double u) {
-        if (u <= x[0]) {
-            return y[0];
-        }
-        if (u > x[n - 1]) {
-            return y[n - 1];
-        }
-        int i = lowerBound(x, n, u);
-        return x[i] == u ? y[i] : interpolate(x[i - 1], y[i - 1], x[i], y[i], u);
-    }
-
-    /** The limit of the degree as the argument approaches {@code u} from above. */
-    static double rightLimit(double[] x, double[] y, int n, double u) {
-        if (u >= x[n - 1]) {
-            return y[n - 1];
-        }
-        if (u < x[0]) {
-            return y[0];
-        }
-        int i = upperBound(x, n, u) - 1;
-        return x[i] == u ? y[i] : interpolate(x[i], y[i], x[i + 1], y[i + 1], u);
-    }
-
     /**
      * The value at {@code u} of the segment from (x0, y0) to (x1, y1), x0 &lt; u &lt; x1. The form
      * with one division is exact for the common 0/1 degrees; a flat segment returns its degree
@@ -81,21 +57,6 @@ final class Pwl {
         while (lo < hi) {
             int mid = (lo + hi) >>> 1;
             if (x[mid] < u) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
-    }
-
-    /** First index whose x is &gt; u (n when none). */
-    static int upperBound(double[] x, int n, double u) {
-        int lo = 0;
-        int hi = n;
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (x[mid] <= u) {
                 lo = mid + 1;
             } else {
                 hi = mid;

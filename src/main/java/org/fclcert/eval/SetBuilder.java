@@ -98,7 +98,7 @@ final class SetBuilder {
                 clipCrossings(x, y, n, kLevel[j], lo, hi);
             }
         }
-        Arrays.sort(bx, 0, nb);
+        sort(bx, nb);
         int m = 1;
         for (int i = 1; i < nb; i++) {
             if (bx[i] != bx[m - 1]) {
@@ -106,6 +106,23 @@ final class SetBuilder {
             }
         }
         nb = m;
+    }
+
+    /** Insertion sort for the usual handful of breakpoints; Arrays.sort beyond that. */
+    private static void sort(double[] a, int n) {
+        if (n > 32) {
+            Arrays.sort(a, 0, n);
+            return;
+        }
+        for (int i = 1; i < n; i++) {
+            double v = a[i];
+            int j = i - 1;
+            while (j >= 0 && a[j] > v) {
+                a[j + 1] = a[j];
+                j--;
+            }
+            a[j + 1] = v;
+        }
     }
 
     private void clipCrossings(double[] x, double[] y, int n, double level, double lo, double hi) {

@@ -276,4 +276,42 @@ class InferenceTest {
             assertEquals(c[2], fb.get("y"), 0.0);
         }
     }
+
+    /*
+     * Output terms from input variables (5.2.2 on-line adaptation, also for DEFUZZIFY terms).
+     * Singletons a := sp and b := 10 at degrees 0.5 each: CoGS = (sp + 10)/2: sp=4 -> 7, sp=-2 -> 4.
+     * Points T := (l, 0) (50, 1) (h, 0) with RANGE 0..100 at degree 1:
+     *   l=70, h=30 (out of sequence) -> sorted (30,0)(50,1)(70,0): CoG 50;
+     *   l=20, h=50 -> (20,0)(50,1)(50,0): a triangle with a vertical right edge at 50:
+     *   CoG = (20+50+50)/3 = 40; LM = RM = 50 (the degree exactly at 50 is max(1, 0) = 1).
+     */
+    @Test
+    void outputTermsFromInputVariables() throws EvaluationException {
+        FunctionBlockInstance singles = Fcl.block("fb").input("p").input("q").input("sp").output("y")
+                .fuzzify("p", Fcl.term("deg", IDENTITY)).fuzzify("q", Fcl.term("deg", IDENTITY))
+                .defuzzify(Fcl.defuzzify("y", DefuzzificationMethod.COGS).term("a", single(var("sp")))
+                        .term("b", single(10)))
+                .rules(Fcl.ruleBlock("r").rule(is("p", "deg"), then("y", "a")).rule(is("q", "deg"), then("y", "b")))
+                .instance();
+        singles.set("sp", 4);
+        assertEquals(7.0, run(singles, 0.5, 0.5), 1e-12);
+        singles.set("sp", -2);
+        assertEquals(4.0, run(singles, 0.5, 0.5), 1e-12);
+
+        for (DefuzzificationMethod m : new DefuzzificationMethod[] {DefuzzificationMethod.COG,
+            DefuzzificationMethod.LM, DefuzzificationMethod.RM}) {
+            MembershipFunction t = Fcl.ptsOf(var("l"), num(0), num(50), num(1), var("h"), num(0));
+            FunctionBlockInstance fb = Fcl.block("fb").input("p").input("q").input("l").input("h").output("y")
+                    .fuzzify("p", Fcl.term("deg", IDENTITY)).fuzzify("q", Fcl.term("deg", IDENTITY))
+                    .defuzzify(Fcl.defuzzify("y", m).range(0, 100).term("t", t).term("u", pts(0, 0, 1, 1, 2, 0)))
+                    .rules(Fcl.ruleBlock("r").rule(is("p", "deg"), then("y", "t")).rule(is("q", "deg"), then("y", "u")))
+                    .instance();
+            fb.set("l", 70);
+            fb.set("h", 30);
+            assertEquals(50.0, run(fb, 1, 0), 1e-12, m.keyword());
+            fb.set("l", 20);
+            fb.set("h", 50);
+            assertEquals(m == DefuzzificationMethod.COG ? 40.0 : 50.0, run(fb, 1, 0), 1e-12, m.keyword());
+        }
+    }
 }

@@ -27,8 +27,8 @@ import org.fclcert.model.VariableRef;
  * An independent, deliberately naive evaluator for checking the closed-form one: it walks the model
  * directly (no compilation), evaluates membership functions from the model's points, and
  * defuzzifies by a dense midpoint rule. It supports what the random programs use: one rule block
- * level of inputs (no bare-variable conclusions feeding later blocks), constant points with
- * strictly ascending x.
+ * level of inputs (no bare-variable conclusions feeding later blocks), points with distinct x
+ * (constants or input variables, sorted here).
  *
  * <p>NSUM is evaluated as the plain sum: its normalisation divides the whole set by one constant,
  * which CoG, CoA, LM and RM (and CoGS) do not see.
@@ -68,10 +68,15 @@ final class NumericOracle {
         return o instanceof Literal l ? l.value() : inputs.get(((VariableRef) o).name());
     }
 
+    /** The term's points with their current values, sorted by x (List.sort is stable). */
     private double[][] points(Term t) {
-        List<Point> pts = ((MembershipFunction.Points) t.function()).points();
-        double[] x = pts.stream().mapToDouble(p -> value(p.x())).toArray();
-        double[] y = pts.stream().mapToDouble(p -> value(p.degree())).toArray();
+        List<double[]> pts = new ArrayList<>();
+        for (Point p : ((MembershipFunction.Points) t.function()).points()) {
+            pts.add(new double[] {value(p.x()), value(p.degree())});
+        }
+        pts.sort((a, b) -> Double.compare(a[0], b[0]));
+        double[] x = pts.stream().mapToDouble(p -> p[0]).toArray();
+        double[] y = pts.stream().mapToDouble(p -> p[1]).toArray();
         return new double[][] {x, y};
     }
 
@@ -149,26 +154,55 @@ final class NumericOracle {
     }
 
     /**
-     * As {@link #accumulated} for a u that only grows between calls: each activation keeps a cursor
-     * on the first of its points at or right of u, so a sample costs O(1) per activation.
+     * As {@link #accumulated}, for arguments that only grow between calls: each activation keeps a
+     * cursor on the first of its points at or right of u, so a sample costs O(1) per activation.
      */
-    private static double sweepAccumulated(List<Activation> acts, AccumulationMethod accu, double u, int[] cursor) {
-        double acc = 0;
-        for (int k = 0; k < cursor.length; k++) {
-            Activation a = acts.get(k);
-            double[] x = a.x();
-            double[] y = a.y();
-            int i = cursor[k];
-            while (i < x.length && x[i] < u) {
-                i++;
+    private static final class Sweep {
+        private final double[][] x;
+        private final double[][] y;
+        private final double[] degree;
+        private final double[] weight;
+        private final boolean[] prod;
+        private final int[] cursor;
+        private final boolean max;
+        private final boolean bounded;
+
+        Sweep(List<Activation> acts, AccumulationMethod accu) {
+            int k = acts.size();
+            x = new double[k][];
+            y = new double[k][];
+            degree = new double[k];
+            weight = new double[k];
+            prod = new boolean[k];
+            cursor = new int[k];
+            for (int i = 0; i < k; i++) {
+                x[i] = acts.get(i).x();
+                y[i] = acts.get(i).y();
+                degree[i] = acts.get(i).degree();
+                weight[i] = acts.get(i).weight();
+                prod[i] = acts.get(i).prod();
             }
-            cursor[k] = i;
-            double mu = i == 0 ? y[0] : i == x.length ? y[x.length - 1]
-                    : y[i - 1] + (u - x[i - 1]) / (x[i] - x[i - 1]) * (y[i] - y[i - 1]);
-            double c = a.weight() * (a.prod() ? a.degree() * mu : Math.min(a.degree(), mu));
-            acc = accu == AccumulationMethod.MAX ? Math.max(acc, c) : acc + c;
+            max = accu == AccumulationMethod.MAX;
+            bounded = accu == AccumulationMethod.BSUM;
         }
-        return accu == AccumulationMethod.BSUM ? Math.min(1, acc) : acc;
+
+        double at(double u) {
+            double acc = 0;
+            for (int k = 0; k < cursor.length; k++) {
+                double[] xk = x[k];
+                double[] yk = y[k];
+                int i = cursor[k];
+                while (i < xk.length && xk[i] < u) {
+                    i++;
+                }
+                cursor[k] = i;
+                double mu = i == 0 ? yk[0] : i == xk.length ? yk[xk.length - 1]
+                        : yk[i - 1] + (u - xk[i - 1]) / (xk[i] - xk[i - 1]) * (yk[i] - yk[i - 1]);
+                double c = weight[k] * (prod[k] ? degree[k] * mu : Math.min(degree[k], mu));
+                acc = max ? Math.max(acc, c) : acc + c;
+            }
+            return bounded ? Math.min(1, acc) : acc;
+        }
     }
 
     /** Dense midpoint-rule results over [lo, hi]: {CoG, CoA, LM, RM}; NaN where the set is empty. */
@@ -179,10 +213,10 @@ final class NumericOracle {
         double[] mu = new double[samples];
         double area = 0;
         double moment = 0;
-        int[] cursor = new int[acts.size()];
+        Sweep sweep = new Sweep(acts, accu);
         for (int i = 0; i < samples; i++) {
             double u = lo + (i + 0.5) * h;
-            mu[i] = sweepAccumulated(acts, accu, u, cursor);
+            mu[i] = sweep.at(u);
             area += mu[i];
             moment += u * mu[i];
         }

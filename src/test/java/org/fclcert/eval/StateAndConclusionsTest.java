@@ -77,6 +77,41 @@ class StateAndConclusionsTest {
     }
 
     /*
+     * One loaded program serves instances on several threads at once: each thread steps its own
+     * instance through the valve's operating points and must get the single-threaded results
+     * (9500/127 at 5/60, 500/109 at 5/90, -8500/113 at 20/100).
+     */
+    @Test
+    void oneLoadedProgramServesInstancesOnManyThreads() throws Exception {
+        LoadedProgram program = Evaluator.load(ValveExampleTest.valve().program());
+        double[][] points = {{5, 60, 9500.0 / 127}, {5, 90, 500.0 / 109}, {20, 100, -8500.0 / 113}};
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(4);
+        try {
+            List<java.util.concurrent.Future<Double>> worst = new java.util.ArrayList<>();
+            for (int t = 0; t < 4; t++) {
+                int offset = t;
+                worst.add(pool.submit(() -> {
+                    FunctionBlockInstance fb = program.newInstance();
+                    double maxError = 0;
+                    for (int i = 0; i < 20_000; i++) {
+                        double[] p = points[(i + offset) % points.length];
+                        fb.set("temp", p[0]);
+                        fb.set("pressure", p[1]);
+                        fb.evaluate();
+                        maxError = Math.max(maxError, Math.abs(fb.get("valve") - p[2]));
+                    }
+                    return maxError;
+                }));
+            }
+            for (java.util.concurrent.Future<Double> f : worst) {
+                assertEquals(0.0, f.get(), 1e-12);
+            }
+        } finally {
+            pool.shutdown();
+        }
+    }
+
+    /*
      * DEFAULT applies when rules fire only with degree 0: p=0, q=0 gives both rules degree 0 -> the
      * DEFAULT constant -3 (not 0/0, not the previous value).
      */
@@ -267,5 +302,27 @@ class StateAndConclusionsTest {
         assertEquals("FCL-V001", assertThrows(EvaluationException.class, () -> fb.get("tmp")).code());
         assertEquals("FCL-V003", assertThrows(EvaluationException.class, () -> fb.set("valve", 1)).code());
         assertEquals(Map.of("valve", 0.0), fb.outputs());
+    }
+
+    /*
+     * Overflow is an error, never a silent DEFAULT. RANGE -1e308..1e308 is 2e308 wide, which is
+     * infinite in double arithmetic: the area of the fired term T = 1 everywhere is infinite and
+     * CoG = inf/inf = NaN although a rule fired -> FCL-V005. Singletons at 1.5e308 with degree 1
+     * twice: the CoGS numerator overflows to infinity -> FCL-V005.
+     */
+    @Test
+    void overflowIsAnErrorNotADefault() throws EvaluationException {
+        FunctionBlockInstance wide = Fcl.block("fb").input("p").output("y")
+                .fuzzify("p", Fcl.term("deg", IDENTITY))
+                .defuzzify(Fcl.defuzzify("y", DefuzzificationMethod.COG).range(-1e308, 1e308)
+                        .term("t", pts(0, 1, 1, 1)))
+                .rules(Fcl.ruleBlock("r").rule(is("p", "deg"), then("y", "t")))
+                .instance();
+        wide.set("p", 1);
+        assertEquals("FCL-V005", assertThrows(EvaluationException.class, wide::evaluate).code());
+        FunctionBlockInstance huge = typed(DataType.LREAL, 1.5e308, 1.5e308);
+        huge.set("p", 1);
+        huge.set("q", 1);
+        assertEquals("FCL-V005", assertThrows(EvaluationException.class, huge::evaluate).code());
     }
 }

@@ -1,0 +1,250 @@
+package org.fclcert.cli;
+
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import org.fclcert.check.Analysis;
+import org.fclcert.cli.SourceFiles.FileProblem;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.Trace;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Names;
+import org.fclcert.model.Program;
+import org.fclcert.model.Variable;
+import org.fclcert.syntax.StrictReader;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert eval}: runs a checked program on the reference evaluator. */
+@Command(name = "eval", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        description = "Evaluate a valid FCL program with fclcert's reference evaluator (exact, closed-form "
+                + "defuzzification; readings in docs/semantics.md). Prints one name=value line per output. "
+                + "With --csv, evaluates one row per step on one function block instance, so DEFAULT NC and "
+                + "unset inputs carry over, and writes CSV: input columns, then output columns.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = {"0:evaluated", "1:the program has errors, or an input or evaluation error",
+            ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
+final class EvalCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    String file;
+
+    @Option(names = "--block", paramLabel = "NAME", description = "function block to evaluate (default: the first)")
+    String block;
+
+    @Option(names = "--in", paramLabel = "NAME=VALUE",
+            description = "an input value (repeatable); with --csv, values before the first row")
+    List<String> inputs = new ArrayList<>();
+
+    @Option(names = "--trace", description = "also print every stage: term degrees, rule degrees, activations, "
+            + "accumulated sets, results (not with --csv)")
+    boolean trace;
+
+    @Option(names = "--csv", paramLabel = "FILE",
+            description = "input rows: a header of input names, then one row of numbers per step; "
+                    + "an empty cell keeps the input's previous value")
+    String csv;
+
+    @Option(names = "--out", paramLabel = "FILE", description = "write the result here instead of stdout")
+    String outFile;
+
+    @Option(names = "--format", defaultValue = "text", paramLabel = "FORMAT",
+            description = "text or json (default: ${DEFAULT-VALUE}); with --csv, text means CSV")
+    OutputFormat format;
+
+    /** A problem with the inputs or the evaluation: reported in one sentence, exit code 1. */
+    static final class InputProblem extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        InputProblem(String message) {
+            super(message);
+        }
+    }
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        if (trace && csv != null) {
+            err.println("fclcert: --trace cannot be combined with --csv (trace one step with --in instead)");
+            return ExitCodes.USAGE;
+        }
+        for (String in : inputs) {
+            if (in.indexOf('=') <= 0) {
+                err.println("fclcert: --in " + in + ": expected NAME=VALUE, e.g. --in temp=5");
+                return ExitCodes.USAGE;
+            }
+        }
+        try {
+            Optional<Program> program = checkedProgram(err);
+            if (program.isEmpty()) {
+                return ExitCodes.ERRORS;
+            }
+            String result = csv == null ? single(program.get()) : steps(program.get());
+            if (outFile == null) {
+                spec.commandLine().getOut().print(result);
+            } else {
+                SourceFiles.write(outFile, result);
+            }
+            return ExitCodes.OK;
+        } catch (FileProblem e) {
+            err.println("fclcert: " + e.getMessage());
+            return ExitCodes.USAGE;
+        } catch (EvaluationException e) {
+            err.println("fclcert: " + e.code() + ": " + e.getMessage());
+            return ExitCodes.ERRORS;
+        } catch (InputProblem e) {
+            err.println("fclcert: " + e.getMessage());
+            return ExitCodes.ERRORS;
+        }
+    }
+
+    /** Reads and checks FILE; diagnostics go to stderr, and a program with errors is not evaluated. */
+    private Optional<Program> checkedProgram(PrintWriter err) throws FileProblem {
+        Analysis analysis = Analysis.analyze(new StrictReader(), file, SourceFiles.read(file));
+        DiagnosticPrinter.text(err, analysis.diagnostics());
+        if (analysis.program().isEmpty()) {
+            err.println("fclcert: " + file + " has errors; not evaluated");
+        }
+        return analysis.program();
+    }
+
+    private FunctionBlock declaration(Program program) {
+        return block == null ? program.functionBlocks().get(0)
+                : program.functionBlock(block).orElse(program.functionBlocks().get(0));
+    }
+
+    private Run start(Program program) throws EvaluationException, InputProblem {
+        var loaded = Evaluator.load(program);
+        FunctionBlockInstance fb = block == null ? loaded.newInstance() : loaded.newInstance(block);
+        Run run = new Run(fb, declaration(program));
+        for (String in : inputs) {
+            int eq = in.indexOf('=');
+            run.set(in.substring(0, eq).trim(), in.substring(eq + 1).trim(), "--in " + in);
+        }
+        return run;
+    }
+
+    private String single(Program program) throws EvaluationException, InputProblem {
+        Run run = start(program);
+        Trace t = trace ? new Trace() : null;
+        run.evaluate(t, "");
+        Map<String, Double> outputs = run.fb.outputs();
+        if (format == OutputFormat.json) {
+            Map<String, Object> json = new LinkedHashMap<>();
+            json.put("block", run.fb.functionBlockName());
+            json.put("inputs", run.inputValues());
+            json.put("outputs", outputs);
+            if (t != null) {
+                json.put("trace", TracePrinter.json(t));
+            }
+            return DiagnosticPrinter.toJson(json) + "\n";
+        }
+        StringBuilder sb = new StringBuilder();
+        outputs.forEach((name, value) -> sb.append(name).append('=').append(Double.toString(value)).append('\n'));
+        if (t != null) {
+            sb.append(TracePrinter.text(t));
+        }
+        return sb.toString();
+    }
+
+    private String steps(Program program) throws EvaluationException, InputProblem, FileProblem {
+        Run run = start(program);
+        List<String> lines = SourceFiles.read(csv).lines().toList();
+        CsvTable table = CsvTable.parse(csv, lines);
+        List<Map<String, Object>> json = new ArrayList<>();
+        StringBuilder sb = new StringBuilder(header(run.fb));
+        for (CsvTable.Row row : table.rows()) {
+            String where = csv + ":" + row.line();
+            for (int c = 0; c < table.columns().size(); c++) {
+                if (!row.cells().get(c).isEmpty()) {
+                    run.set(table.columns().get(c), row.cells().get(c), where);
+                }
+            }
+            run.evaluate(null, where + ": ");
+            Map<String, Object> step = new LinkedHashMap<>();
+            step.put("inputs", run.inputValues());
+            step.put("outputs", run.fb.outputs());
+            json.add(step);
+            sb.append(csvRow(run));
+        }
+        return format == OutputFormat.json ? DiagnosticPrinter.jsonLines(json) + "\n" : sb.toString();
+    }
+
+    private static String header(FunctionBlockInstance fb) {
+        List<String> names = new ArrayList<>(fb.inputNames());
+        names.addAll(fb.outputNames());
+        return String.join(",", names) + "\n";
+    }
+
+    private static String csvRow(Run run) {
+        List<String> cells = new ArrayList<>();
+        run.inputValues().values().forEach(v -> cells.add(Double.toString(v)));
+        run.fb.outputs().values().forEach(v -> cells.add(Double.toString(v)));
+        return String.join(",", cells) + "\n";
+    }
+
+    /** One instance and which of its inputs have a value (declared initial value or given). */
+    private static final class Run {
+        final FunctionBlockInstance fb;
+        private final Map<String, Boolean> hasValue = new LinkedHashMap<>();
+
+        Run(FunctionBlockInstance fb, FunctionBlock declaration) {
+            this.fb = fb;
+            for (String input : fb.inputNames()) {
+                hasValue.put(Names.key(input), declaration.variable(input).flatMap(Variable::initialValue).isPresent());
+            }
+        }
+
+        void set(String name, String text, String where) throws EvaluationException, InputProblem {
+            double value;
+            try {
+                value = Double.parseDouble(text);
+            } catch (NumberFormatException e) {
+                throw new InputProblem(where + ": '" + text + "' is not a number");
+            }
+            try {
+                fb.set(name, value);
+            } catch (EvaluationException e) {
+                throw new EvaluationException(e.code(), where + ": " + e.getMessage());
+            }
+            hasValue.put(Names.key(name), true);
+        }
+
+        void evaluate(Trace trace, String where) throws EvaluationException, InputProblem {
+            for (String input : fb.inputNames()) {
+                if (!hasValue.get(Names.key(input))) {
+                    throw new InputProblem(where + "input '" + input + "' has no value: give it one (--in "
+                            + input + "=VALUE or a CSV column) or declare an initial value");
+                }
+            }
+            try {
+                fb.evaluate(trace);
+            } catch (EvaluationException e) {
+                throw new EvaluationException(e.code(), where + e.getMessage());
+            }
+        }
+
+        Map<String, Double> inputValues() {
+            Map<String, Double> values = new LinkedHashMap<>();
+            for (String input : fb.inputNames()) {
+                try {
+                    values.put(input, fb.get(input));
+                } catch (EvaluationException e) {
+                    throw new IllegalStateException(e);
+                }
+            }
+            return values;
+        }
+    }
+}
