@@ -16,6 +16,7 @@ import picocli.CommandLine.Parameters;
         name = "corpus",
         description = "Work with the conformance corpus (conformance/).",
         mixinStandardHelpOptions = true,
+        versionProvider = VersionProvider.class,
         subcommands = {CorpusCommand.Lint.class})
 public final class CorpusCommand implements Runnable {
     @CommandLine.Spec
@@ -34,7 +35,8 @@ public final class CorpusCommand implements Runnable {
                         + "(against the feature detector), expected errors of negative cases, expected outputs "
                         + "(against the reference evaluator), and coverage of Tables 8, 9 and 10.",
                 "Exit status: 0 clean, 1 findings, 2 usage error."},
-            mixinStandardHelpOptions = true)
+            mixinStandardHelpOptions = true,
+            versionProvider = VersionProvider.class)
     static final class Lint implements Callable<Integer> {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
