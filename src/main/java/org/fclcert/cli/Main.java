@@ -1,5 +1,9 @@
 package org.fclcert.cli;
 
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -9,8 +13,16 @@ import picocli.CommandLine.Command;
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
         description = "Conformance toolkit for IEC 61131-7 Fuzzy Control Language (FCL).",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE},
         subcommands = {
             CommandLine.HelpCommand.class,
+            CheckCommand.class,
+            FeaturesCommand.class,
+            FmtCommand.class,
+            CorpusCommand.class,
+            CertifyCommand.class,
+            ReportCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
@@ -20,9 +32,50 @@ public final class Main implements Runnable {
         System.exit(run(args));
     }
 
-    /** Runs the command line and returns its exit code (tests call this instead of {@link #main}). */
+    /** Runs the command line on the process's stdout and stderr and returns its exit code. */
     public static int run(String... args) {
-        return new CommandLine(new Main()).execute(args);
+        return run(stream(System.out), stream(System.err), args);
+    }
+
+    /** Runs the command line with the given output streams (tests capture them) and returns its exit code. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        try {
+            return execute(commandLine(out, err), err, args);
+        } finally {
+            out.flush();
+            err.flush();
+        }
+    }
+
+    /** The configured command line (tests add commands to it to exercise the error handling). */
+    static CommandLine commandLine(PrintWriter out, PrintWriter err) {
+        CommandLine cli = new CommandLine(new Main());
+        cli.setOut(out);
+        cli.setErr(err);
+        cli.setExecutionExceptionHandler((e, command, parsed) -> {
+            // a bug must still not greet the user with a stack trace
+            err.println("fclcert: internal error: " + describe(e));
+            return ExitCodes.INTERNAL;
+        });
+        return cli;
+    }
+
+    /** Executes; an Error (stack overflow, out of memory) bypasses picocli's handler, so it is caught here. */
+    static int execute(CommandLine cli, PrintWriter err, String... args) {
+        try {
+            return cli.execute(args);
+        } catch (Error e) {
+            err.println("fclcert: internal error: " + describe(e));
+            return ExitCodes.INTERNAL;
+        }
+    }
+
+    private static String describe(Throwable e) {
+        return e.getMessage() != null ? e.getMessage() : e.getClass().getName();
+    }
+
+    private static PrintWriter stream(PrintStream s) {
+        return new PrintWriter(new OutputStreamWriter(s, StandardCharsets.UTF_8), true);
     }
 
     @Override

@@ -78,7 +78,7 @@ public enum Feature {
     E_RULEBLOCKS("E-RULEBLOCKS", ConformanceLevel.EXTENSION, "ruleblock",
             "several rule blocks"),
     E_COND_VARIABLE("E-COND-VARIABLE", ConformanceLevel.EXTENSION, "condition",
-            "input variables used directly as subconditions"),
+            "input (or local) variables used directly as subconditions"),
     E_SUBCONCLUSIONS("E-SUBCONCLUSIONS", ConformanceLevel.EXTENSION, "conclusion",
             "several subconclusions or output variables per rule, bare variable conclusions"),
     E_WITH_CONST("E-WITH-CONST", ConformanceLevel.EXTENSION, "weighting factor",

@@ -1,0 +1,59 @@
+package org.fclcert.check;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Program;
+
+/**
+ * Runs the semantic checks on a program the reader accepted. Usage: {@code new Checker().check(program)}.
+ * Every rule runs (one mistake is reported by the one rule that owns it, and rules skip what another
+ * rule owns, so errors do not cascade); the result is sorted by source position, then code.
+ */
+public final class Checker {
+    /** Orders diagnostics by file, line, column, then code. */
+    public static final Comparator<Diagnostic> BY_POSITION =
+            Comparator.comparing(Diagnostic::location).thenComparing(Diagnostic::code);
+
+    private final List<CheckRule> rules;
+
+    /** A checker running all of fclcert's rules ({@link #standardRules()}). */
+    public Checker() {
+        this(standardRules());
+    }
+
+    public Checker(List<CheckRule> rules) {
+        this.rules = List.copyOf(rules);
+    }
+
+    /** Every check rule, in code order: FCL-C001 to FCL-C031, then the warnings FCL-W001 to FCL-W004. */
+    public static List<CheckRule> standardRules() {
+        return List.of(
+                new NoUndefinedVariables(), new NoUndefinedTerms(), new TermsBelongToTheirVariable(),
+                new UniqueVariableNames(), new UniqueTermNames(), new UniqueRuleBlockNames(), new UniqueRuleNames(),
+                new FuzzifyOnlyInputs(), new DefuzzifyOnlyOutputs(), new PointsAscending(),
+                new DegreesWithinUnitInterval(), new WeightsWithinUnitInterval(), new ParameterVariablesAreInputs(),
+                new AndOrPaired(), new OperatorDeclaredWhenUsed(), new MethodDeclared(), new DefaultDeclared(),
+                new AccumulationDeclared(), new CogsOnlyOnSingletons(), new CoaNotOnSingletons(),
+                new OutputTermsOfOneKind(), new OneAccumulationPerOutput(), new RangeAscending(),
+                new ConclusionsOnOutputs(), new BoundedOutputSets(), new NestingWithinLimit(),
+                new SubconditionsOnInputs(), new OneFuzzificationPerVariable(), new AtLeastTwoPoints(),
+                new InitialValueFitsType(), new SubconclusionsOnDefuzzifiedOutputs(),
+                new NoUnusedTerms(), new NoEmptyRuleBlocks(), new NoUnconcludedOutputs(), new NoZeroWeights());
+    }
+
+    public List<CheckRule> rules() {
+        return rules;
+    }
+
+    /** All findings of all rules, sorted by position. */
+    public List<Diagnostic> check(Program program) {
+        List<Diagnostic> found = new ArrayList<>();
+        for (CheckRule rule : rules) {
+            rule.check(program, found::add);
+        }
+        found.sort(BY_POSITION);
+        return List.copyOf(found);
+    }
+}

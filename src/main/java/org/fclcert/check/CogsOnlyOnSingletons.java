@@ -1,0 +1,37 @@
+package org.fclcert.check;
+
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Term;
+
+/** FCL-C019: METHOD CoGS (centre of gravity for singletons, Table 1) is used only on singleton terms. */
+public final class CogsOnlyOnSingletons implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C019";
+    }
+
+    @Override
+    public String asserts() {
+        return "an output defuzzified with CoGS has only singleton terms";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        for (Defuzzification d : block.defuzzifications()) {
+            if (d.method().isEmpty() || d.method().get().value() != DefuzzificationMethod.COGS) {
+                continue;
+            }
+            d.terms().stream().filter(t -> t.function() instanceof MembershipFunction.Points).findFirst()
+                    .ifPresent(t -> report(d, t, sink));
+        }
+    }
+
+    private void report(Defuzzification d, Term t, DiagnosticSink sink) {
+        sink.report(finding(d.method().get().location(), "DEFUZZIFY " + d.variable() + ": METHOD CoGS needs singleton"
+                + " terms, but term '" + t.name() + "' (line " + t.location().line() + ") is given by points;"
+                + " use CoG for point terms (5.2.3, Table 1)"));
+    }
+}

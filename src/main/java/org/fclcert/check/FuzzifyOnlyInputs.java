@@ -1,0 +1,29 @@
+package org.fclcert.check;
+
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Fuzzification;
+import org.fclcert.model.VariableKind;
+
+/** FCL-C008: FUZZIFY names a VAR_INPUT variable (5.2.2). Undeclared names are FCL-C001's. */
+public final class FuzzifyOnlyInputs implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C008";
+    }
+
+    @Override
+    public String asserts() {
+        return "every FUZZIFY block is for a VAR_INPUT variable";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (Fuzzification f : block.fuzzifications()) {
+            scope.variable(f.variable()).filter(v -> v.kind() != VariableKind.INPUT).ifPresent(v ->
+                    sink.report(finding(f.location(), "FUZZIFY " + f.variable() + ": " + Describe.variable(v)
+                            + " is declared in " + v.kind().keyword()
+                            + "; only VAR_INPUT variables are fuzzified (5.2.2)")));
+        }
+    }
+}

@@ -1,0 +1,49 @@
+package org.fclcert.check;
+
+import org.fclcert.model.DataType;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Literal;
+import org.fclcert.model.Variable;
+
+/**
+ * FCL-C030: a variable's initial value is representable in its declared type (IEC 61131-3 data
+ * types, 5.2.1): a whole number within range for the integer types, a finite value within range
+ * for REAL and LREAL. A real literal with a whole value (e.g. {@code 2.0} for INT) is accepted.
+ */
+public final class InitialValueFitsType implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C030";
+    }
+
+    @Override
+    public String asserts() {
+        return "every initial value can be represented in its variable's data type";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        for (Variable v : block.variables()) {
+            if (v.initialValue().isEmpty()) {
+                continue;
+            }
+            Literal init = v.initialValue().get();
+            String problem = problem(init.value(), v.type());
+            if (problem != null) {
+                sink.report(finding(init.location(), "initial value " + Describe.number(init.value()) + " of "
+                        + Describe.variable(v) + " " + problem + " (5.2.1)"));
+            }
+        }
+    }
+
+    private static String problem(double value, DataType type) {
+        if (!Double.isFinite(value) || value < type.min() || value > type.max()) {
+            return "is outside the range of " + type + " (" + Describe.number(type.min()) + " .. "
+                    + Describe.number(type.max()) + ")";
+        }
+        if (type.isInteger() && value != Math.rint(value)) {
+            return "is not a whole number, but " + type + " holds only integers";
+        }
+        return null;
+    }
+}

@@ -1,0 +1,37 @@
+package org.fclcert.check;
+
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Limits;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+
+/**
+ * FCL-C026: parentheses in a condition are nested at most {@link Limits#MAX_NESTING_DEPTH} deep.
+ * Table 11 lets every system state its own nesting limit; this is fclcert's. Reported once per rule,
+ * at the first parenthesis beyond the limit.
+ */
+public final class NestingWithinLimit implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C026";
+    }
+
+    @Override
+    public String asserts() {
+        return "no condition nests parentheses deeper than " + Limits.MAX_NESTING_DEPTH;
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                Conditions.nodes(rule.condition()).stream()
+                        .filter(n -> n.parenthesisDepth() > Limits.MAX_NESTING_DEPTH).findFirst()
+                        .ifPresent(n -> sink.report(finding(n.condition().location(), "rule " + rule.name()
+                                + " of rule block '" + rb.name() + "' nests parentheses deeper than fclcert's limit of "
+                                + Limits.MAX_NESTING_DEPTH + " (Table 11 lets each system state its nesting depth);"
+                                + " simplify the condition")));
+            }
+        }
+    }
+}

@@ -1,0 +1,45 @@
+package org.fclcert.check;
+
+import java.util.HashSet;
+import java.util.Set;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
+
+/**
+ * FCL-W003 (warning): every output (VAR_OUTPUT) is concluded by some rule, with {@code IS} or as a
+ * bare variable; otherwise it only ever holds its default or initial value.
+ */
+public final class NoUnconcludedOutputs implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-W003";
+    }
+
+    @Override
+    public String asserts() {
+        return "every output is concluded by some rule";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Set<String> concluded = new HashSet<>();
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Subconclusion s : rule.conclusion()) {
+                    concluded.add(Names.key(s.variable()));
+                }
+            }
+        }
+        for (Variable v : block.variables(VariableKind.OUTPUT)) {
+            if (!concluded.contains(Names.key(v.name()))) {
+                sink.report(finding(v.location(), "output '" + v.name() + "' is never concluded by any rule, so no rule"
+                        + " ever sets it"));
+            }
+        }
+    }
+}

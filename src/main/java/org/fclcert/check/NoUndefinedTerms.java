@@ -1,0 +1,79 @@
+package org.fclcert.check;
+
+import java.util.List;
+import java.util.function.Supplier;
+import java.util.Optional;
+import org.fclcert.model.Condition;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Term;
+
+/**
+ * FCL-C002: the term after {@code IS} is defined with TERM for that variable (5.2.4). Also reports
+ * {@code IS} on a variable whose FUZZIFY or DEFUZZIFY block defines no terms at all.
+ *
+ * <p>Division of labour: a term that another variable of the same role defines (another input's
+ * term in a condition, another output's term in a conclusion) is FCL-C003's, a mix-up of variables.
+ * A term only a variable of the other role defines (an input's term in a conclusion, as in rule 2 of
+ * Annex C, Figure C.16) is undefined for this use and reported here, naming where it is defined.
+ * {@code IS} on a variable with no such block at all is FCL-C027's (conditions) or FCL-C031's
+ * (conclusions).
+ */
+public final class NoUndefinedTerms implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C002";
+    }
+
+    @Override
+    public String asserts() {
+        return "the term of every 'variable IS term' is defined for that variable";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Condition c : Conditions.subconditions(rule.condition())) {
+                    if (c instanceof Condition.TermSubcondition t) {
+                        check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
+                                () -> Describe.subcondition(t), t.location(), sink);
+                    }
+                }
+                for (Subconclusion s : rule.conclusion()) {
+                    if (s.term().isPresent()) {
+                        check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(), false,
+                                () -> Describe.subconclusion(s), s.location(), sink);
+                    }
+                }
+            }
+        }
+    }
+
+    private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
+            Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
+        if (terms.isEmpty()) {
+            return;
+        }
+        if (terms.get().isEmpty()) {
+            sink.report(finding(at, element.get() + ": " + scope.describe(variable) + " has no terms; define '" + term
+                    + "' with TERM in its block (5.2.2, 5.2.3)"));
+            return;
+        }
+        boolean defined = terms.get().stream().anyMatch(x -> Names.same(x.name(), term));
+        if (defined || !scope.ownersOfTerm(term, variable, inCondition).isEmpty()) {
+            return;
+        }
+        List<String> elsewhere = scope.ownersOfTerm(term, variable, !inCondition);
+        String note = elsewhere.isEmpty() ? "" : "; '" + term + "' is a term of "
+                + String.join(" and ", elsewhere.stream().map(scope::describe).toList())
+                + (inCondition ? ", and a condition tests only inputs" : ", and a conclusion sets only outputs");
+        sink.report(finding(at, element.get() + ": '" + term + "' is not a term of " + scope.describe(variable)
+                + " (its terms: " + Describe.termNames(terms.get()) + ")" + note));
+    }
+}

@@ -1,0 +1,71 @@
+package org.fclcert.check;
+
+import java.util.List;
+import java.util.function.Supplier;
+import org.fclcert.model.Condition;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableRef;
+
+/** FCL-C001: every name used as a variable is declared in the function block (5.2.1). */
+public final class NoUndefinedVariables implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C001";
+    }
+
+    @Override
+    public String asserts() {
+        return "every variable named in FUZZIFY, DEFUZZIFY, rules, points, singletons and WITH is declared";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (Fuzzification f : block.fuzzifications()) {
+            need(scope, f.variable(), f.location(), () -> "FUZZIFY " + f.variable(), "VAR_INPUT", sink);
+        }
+        for (Defuzzification d : block.defuzzifications()) {
+            need(scope, d.variable(), d.location(), () -> "DEFUZZIFY " + d.variable(), "VAR_OUTPUT", sink);
+        }
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                checkRule(scope, rule, sink);
+            }
+        }
+        for (OperandUse use : OperandUse.all(block)) {
+            if (use.operand() instanceof VariableRef ref) {
+                need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
+            }
+        }
+    }
+
+    private void checkRule(Scope scope, Rule rule, DiagnosticSink sink) {
+        for (Condition c : Conditions.subconditions(rule.condition())) {
+            String variable = c instanceof Condition.TermSubcondition t
+                    ? t.variable() : ((Condition.VariableSubcondition) c).variable();
+            need(scope, variable, c.location(), () -> Describe.subcondition(c), "VAR_INPUT", sink);
+        }
+        for (Subconclusion s : rule.conclusion()) {
+            need(scope, s.variable(), s.location(), () -> Describe.subconclusion(s), "VAR_OUTPUT", sink);
+        }
+    }
+
+    private void need(Scope scope, String name, SourceLocation at, Supplier<String> element, String section,
+            DiagnosticSink sink) {
+        if (scope.declared(name)) {
+            return;
+        }
+        List<String> declared = scope.block().variables().stream().map(Variable::name).toList();
+        String known = declared.isEmpty() ? "it declares no variables"
+                : "its variables: " + Describe.names(declared);
+        sink.report(finding(at, element.get() + ": '" + name + "' is not a declared variable of function block '"
+                + scope.block().name() + "' (" + known + "); declare it in " + section + " (5.2.1)"));
+    }
+}

@@ -1,0 +1,77 @@
+package org.fclcert.check;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.fclcert.model.Condition;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Term;
+import org.fclcert.model.VariableKind;
+
+/**
+ * FCL-W001 (warning): every term of a FUZZIFY block is named by some subcondition and every term of
+ * a DEFUZZIFY block by some subconclusion. An unused term is legal but usually a leftover or a typo
+ * elsewhere (Annex C itself defines terms no rule uses). Only the first FUZZIFY block of an input and
+ * the first DEFUZZIFY block of an output are considered: other blocks are errors of their own.
+ */
+public final class NoUnusedTerms implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-W001";
+    }
+
+    @Override
+    public String asserts() {
+        return "every defined term is used by some rule";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Set<String> inCondition = new HashSet<>();
+        Set<String> inConclusion = new HashSet<>();
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Condition c : Conditions.subconditions(rule.condition())) {
+                    if (c instanceof Condition.TermSubcondition t) {
+                        inCondition.add(key(t.variable(), t.term()));
+                    }
+                }
+                for (Subconclusion s : rule.conclusion()) {
+                    s.term().ifPresent(t -> inConclusion.add(key(s.variable(), t)));
+                }
+            }
+        }
+        // only blocks rules can reach: the first FUZZIFY of an input, the first DEFUZZIFY of an output
+        // (the terms of a misplaced or repeated block are already covered by that block's error)
+        Scope scope = new Scope(block);
+        for (Fuzzification f : block.fuzzifications()) {
+            if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
+                report(f.variable(), f.terms(), inCondition, "subcondition", sink);
+            }
+        }
+        for (Defuzzification d : block.defuzzifications()) {
+            if (scope.is(d.variable(), VariableKind.OUTPUT) && scope.defuzzification(d.variable()).get() == d) {
+                report(d.variable(), d.terms(), inConclusion, "subconclusion", sink);
+            }
+        }
+    }
+
+    private void report(String variable, List<Term> terms, Set<String> used, String by, DiagnosticSink sink) {
+        for (Term t : terms) {
+            if (!used.contains(key(variable, t.name()))) {
+                sink.report(finding(t.location(), "term '" + t.name() + "' of '" + variable + "' is never used: no "
+                        + by + " names '" + variable + " IS " + t.name() + "'"));
+            }
+        }
+    }
+
+    private static String key(String variable, String term) {
+        return Names.key(variable) + "\u0000" + Names.key(term);
+    }
+}

@@ -1,0 +1,27 @@
+package org.fclcert.check;
+
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Literal;
+
+/** FCL-W004 (warning): no subconclusion has the constant weighting factor 0, which disables it. */
+public final class NoZeroWeights implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-W004";
+    }
+
+    @Override
+    public String asserts() {
+        return "no constant weighting factor is 0";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        for (OperandUse use : OperandUse.all(block)) {
+            if (use.role() == OperandUse.Role.WEIGHT && use.operand() instanceof Literal w && w.value() == 0) {
+                sink.report(finding(w.location(), "WITH 0: " + use.where()
+                        + " is 0, so the subconclusion never has any effect; remove it or use a positive factor"));
+            }
+        }
+    }
+}

@@ -1,0 +1,34 @@
+package org.fclcert.check;
+
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.VariableKind;
+import org.fclcert.model.VariableRef;
+
+/**
+ * FCL-C013: a variable used as a point's x or degree, a singleton value or a weighting factor is
+ * declared in VAR_INPUT: these are parameters set from outside the function block (5.2.2, 5.2.4).
+ */
+public final class ParameterVariablesAreInputs implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C013";
+    }
+
+    @Override
+    public String asserts() {
+        return "variables used as points, degrees, singletons or WITH factors are VAR_INPUT variables";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (OperandUse use : OperandUse.all(block)) {
+            if (use.operand() instanceof VariableRef ref) {
+                scope.variable(ref.name()).filter(v -> v.kind() != VariableKind.INPUT).ifPresent(v ->
+                        sink.report(finding(ref.location(), use.where() + " is " + Describe.variable(v)
+                                + ", declared in " + v.kind().keyword() + "; a variable used as "
+                                + use.role().words() + " must be declared in VAR_INPUT (5.2.2, 5.2.4)")));
+            }
+        }
+    }
+}

@@ -1,0 +1,108 @@
+package org.fclcert.check;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Names;
+import org.fclcert.model.Term;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
+
+/**
+ * Name lookup in one function block, case-insensitive. Where a name is declared twice (itself an
+ * error, reported by its own rule), the first declaration is the one that counts, so that one
+ * mistake does not cascade into a diagnostic at every use.
+ */
+final class Scope {
+    private final Map<String, Variable> variables = new HashMap<>();
+    private final Map<String, Fuzzification> fuzzifications = new HashMap<>();
+    private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
+    private final FunctionBlock block;
+
+    Scope(FunctionBlock block) {
+        this.block = block;
+        block.variables().forEach(v -> variables.putIfAbsent(Names.key(v.name()), v));
+        block.fuzzifications().forEach(f -> fuzzifications.putIfAbsent(Names.key(f.variable()), f));
+        block.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(Names.key(d.variable()), d));
+    }
+
+    FunctionBlock block() {
+        return block;
+    }
+
+    Optional<Variable> variable(String name) {
+        return Optional.ofNullable(variables.get(Names.key(name)));
+    }
+
+    boolean declared(String name) {
+        return variables.containsKey(Names.key(name));
+    }
+
+    boolean is(String name, VariableKind kind) {
+        return variable(name).map(v -> v.kind() == kind).orElse(false);
+    }
+
+    Optional<Fuzzification> fuzzification(String variable) {
+        return Optional.ofNullable(fuzzifications.get(Names.key(variable)));
+    }
+
+    Optional<Defuzzification> defuzzification(String variable) {
+        return Optional.ofNullable(defuzzifications.get(Names.key(variable)));
+    }
+
+    /**
+     * The terms an {@code IS} subcondition on this variable may name: present only when the
+     * variable is a declared input with a FUZZIFY block (otherwise another rule reports the use).
+     */
+    Optional<List<Term>> conditionTerms(String variable) {
+        if (!is(variable, VariableKind.INPUT)) {
+            return Optional.empty();
+        }
+        return fuzzification(variable).map(Fuzzification::terms);
+    }
+
+    /**
+     * The terms an {@code IS} subconclusion on this variable may name: present only when the
+     * variable is a declared output with a DEFUZZIFY block.
+     */
+    Optional<List<Term>> conclusionTerms(String variable) {
+        if (!is(variable, VariableKind.OUTPUT)) {
+            return Optional.empty();
+        }
+        return defuzzification(variable).map(Defuzzification::terms);
+    }
+
+    /**
+     * The variables other than {@code except} whose FUZZIFY blocks ({@code inConditions}) or DEFUZZIFY
+     * blocks (otherwise) define a term of that name, in block order.
+     */
+    List<String> ownersOfTerm(String term, String except, boolean inConditions) {
+        List<String> owners = new ArrayList<>();
+        if (inConditions) {
+            for (Fuzzification f : block.fuzzifications()) {
+                addOwner(owners, f.variable(), f.term(term).isPresent(), except);
+            }
+        } else {
+            for (Defuzzification d : block.defuzzifications()) {
+                addOwner(owners, d.variable(), d.term(term).isPresent(), except);
+            }
+        }
+        return owners;
+    }
+
+    private static void addOwner(List<String> owners, String variable, boolean has, String except) {
+        if (has && !Names.same(variable, except) && owners.stream().noneMatch(o -> Names.same(o, variable))) {
+            owners.add(variable);
+        }
+    }
+
+    /** "input 'temp'", "output 'valve'", "local variable 'x'" or "'x'" when undeclared. */
+    String describe(String variable) {
+        return variable(variable).map(Describe::variable).orElse("'" + variable + "'");
+    }
+}

@@ -1,0 +1,60 @@
+package org.fclcert.check;
+
+import org.fclcert.model.Condition;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
+
+/**
+ * FCL-C027: a subcondition reads a variable that can be read in a condition (5.2.4). {@code v IS t}
+ * needs a VAR_INPUT variable with a FUZZIFY block (its terms); a bare variable {@code v} needs a
+ * VAR_INPUT variable or a local variable (VAR, written by an earlier rule block), never a VAR_OUTPUT.
+ * Undeclared names are FCL-C001's.
+ */
+public final class SubconditionsOnInputs implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C027";
+    }
+
+    @Override
+    public String asserts() {
+        return "'v IS t' names a fuzzified input, and a bare-variable subcondition an input or local variable";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Condition c : Conditions.subconditions(rule.condition())) {
+                    check(scope, c, sink);
+                }
+            }
+        }
+    }
+
+    private void check(Scope scope, Condition c, DiagnosticSink sink) {
+        if (c instanceof Condition.TermSubcondition t) {
+            scope.variable(t.variable()).ifPresent(v -> checkTerm(scope, t, v, sink));
+        } else if (c instanceof Condition.VariableSubcondition bare) {
+            scope.variable(bare.variable()).filter(v -> v.kind() == VariableKind.OUTPUT).ifPresent(v ->
+                    sink.report(finding(c.location(), bare.variable() + ": " + Describe.variable(v)
+                            + " cannot be read as a degree of membership in a condition; a bare variable in a"
+                            + " condition must be an input (VAR_INPUT) or a local variable (VAR) (5.2.4)")));
+        }
+    }
+
+    private void checkTerm(Scope scope, Condition.TermSubcondition t, Variable v, DiagnosticSink sink) {
+        String element = Describe.subcondition(t) + ": ";
+        if (v.kind() != VariableKind.INPUT) {
+            sink.report(finding(t.location(), element + Describe.variable(v) + " is not an input; 'IS' in a condition"
+                    + " needs an input (VAR_INPUT) with a FUZZIFY block (5.2.2, 5.2.4)"));
+        } else if (scope.fuzzification(v.name()).isEmpty()) {
+            sink.report(finding(t.location(), element + Describe.variable(v) + " has no FUZZIFY block, so it has no"
+                    + " terms; add 'FUZZIFY " + v.name() + "' with its terms (5.2.2)"));
+        }
+    }
+}

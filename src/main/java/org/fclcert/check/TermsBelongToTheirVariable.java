@@ -1,0 +1,68 @@
+package org.fclcert.check;
+
+import java.util.List;
+import java.util.function.Supplier;
+import java.util.Optional;
+import org.fclcert.model.Condition;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Term;
+
+/**
+ * FCL-C003: a term used after {@code IS} is not a term of another variable of the same role (5.2.4:
+ * the term of a subcondition or subconclusion belongs to its own linguistic variable). Catches the
+ * slip of naming a real term on the wrong variable: another input's term in a condition, another
+ * output's term in a conclusion. A term defined only for the other role is FCL-C002's (see
+ * {@link NoUndefinedTerms}).
+ */
+public final class TermsBelongToTheirVariable implements FunctionBlockRule {
+    @Override
+    public String code() {
+        return "FCL-C003";
+    }
+
+    @Override
+    public String asserts() {
+        return "a term named after 'variable IS' is not a term of another input (condition) or output (conclusion)";
+    }
+
+    @Override
+    public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
+        for (RuleBlock rb : block.ruleBlocks()) {
+            for (Rule rule : rb.rules()) {
+                for (Condition c : Conditions.subconditions(rule.condition())) {
+                    if (c instanceof Condition.TermSubcondition t) {
+                        check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
+                                () -> Describe.subcondition(t), t.location(), sink);
+                    }
+                }
+                for (Subconclusion s : rule.conclusion()) {
+                    if (s.term().isPresent()) {
+                        check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(), false,
+                                () -> Describe.subconclusion(s), s.location(), sink);
+                    }
+                }
+            }
+        }
+    }
+
+    private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
+            Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
+        if (terms.isEmpty() || terms.get().isEmpty()
+                || terms.get().stream().anyMatch(x -> Names.same(x.name(), term))) {
+            return;
+        }
+        List<String> owners = scope.ownersOfTerm(term, variable, inCondition);
+        if (owners.isEmpty()) {
+            return;
+        }
+        String ownedBy = String.join(" and ", owners.stream().map(scope::describe).toList());
+        sink.report(finding(at, element.get() + ": '" + term + "' is a term of " + ownedBy + ", not of "
+                + scope.describe(variable) + " (its terms: " + Describe.termNames(terms.get()) + ")"));
+    }
+}

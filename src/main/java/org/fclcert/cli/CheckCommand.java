@@ -1,0 +1,64 @@
+package org.fclcert.cli;
+
+import java.io.PrintWriter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.fclcert.check.Analysis;
+import org.fclcert.cli.SourceFiles.FileProblem;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.syntax.StrictReader;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert check}: reads and checks programs against IEC 61131-7 and lists every diagnostic. */
+@Command(name = "check", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        description = "Check FCL programs against IEC 61131-7: syntax (5.4) and the semantic rules. "
+                + "Prints one line per diagnostic (path:line:col: severity CODE: message) and a summary on stderr.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
+final class CheckCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--format", defaultValue = "text", paramLabel = "FORMAT",
+            description = "text or json (default: ${DEFAULT-VALUE})")
+    OutputFormat format;
+
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "FCL source files")
+    List<String> files;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        List<Diagnostic> all = new ArrayList<>();
+        int checked = 0;
+        boolean unreadable = false;
+        for (String file : files) {
+            try {
+                List<Diagnostic> found = Analysis.analyze(new StrictReader(), file, SourceFiles.read(file)).diagnostics();
+                if (format == OutputFormat.text) {
+                    DiagnosticPrinter.text(out, found);
+                }
+                all.addAll(found);
+                checked++;
+            } catch (FileProblem e) {
+                err.println("fclcert: " + e.getMessage());
+                unreadable = true;
+            }
+        }
+        if (format == OutputFormat.json) {
+            DiagnosticPrinter.json(out, all);
+        }
+        err.println("fclcert: " + DiagnosticPrinter.summary(checked, all));
+        // an unreadable file means the question was not fully answered, which outranks found errors
+        if (unreadable) {
+            return ExitCodes.USAGE;
+        }
+        return all.stream().anyMatch(Diagnostic::isError) ? ExitCodes.ERRORS : ExitCodes.OK;
+    }
+}

@@ -1,0 +1,93 @@
+package org.fclcert.cli;
+
+import java.io.PrintWriter;
+import java.util.concurrent.Callable;
+import org.fclcert.check.Analysis;
+import org.fclcert.cli.SourceFiles.FileProblem;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.write.CanonicalWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert fmt}: a valid program in fclcert's canonical layout. */
+@Command(name = "fmt", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        description = "Print a valid FCL program in canonical layout (upper-case keywords, four-space indentation, "
+                + "one declaration per line, blocks in the order of 5.4). Comments are not kept, so --write "
+                + "refuses a file with comments unless --drop-comments is given. "
+                + "A program with errors is left alone and its diagnostics are printed on stderr.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
+final class FmtCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--write", description = "rewrite FILE in place instead of printing the text")
+    boolean write;
+
+    @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
+    boolean dropComments;
+
+    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    String file;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            String source = SourceFiles.read(file);
+            Analysis analysis = Analysis.analyze(new StrictReader(), file, source);
+            DiagnosticPrinter.text(err, analysis.diagnostics());
+            if (analysis.program().isEmpty()) {
+                err.println("fclcert: " + file + " has errors; not formatted");
+                return ExitCodes.ERRORS;
+            }
+            String canonical = new CanonicalWriter().write(analysis.program().get());
+            int lostComments = occurrences(source, "(*") - occurrences(canonical, "(*");
+            if (!write) {
+                out.print(canonical);
+                out.flush(); // the text first, then the note, as a terminal would show them
+                noteLostComments(err, lostComments);
+                return ExitCodes.OK;
+            }
+            return rewrite(err, source, canonical, lostComments);
+        } catch (FileProblem e) {
+            err.println("fclcert: " + e.getMessage());
+            return ExitCodes.USAGE;
+        }
+    }
+
+    private int rewrite(PrintWriter err, String source, String canonical, int lostComments) throws FileProblem {
+        if (canonical.equals(source)) {
+            err.println("fclcert: " + file + " is already in canonical layout");
+            return ExitCodes.OK;
+        }
+        if (lostComments > 0 && !dropComments) {
+            // the model has no comments: rewriting would destroy them, so only on explicit request
+            err.println("fclcert: " + file + " not rewritten: it has " + DiagnosticPrinter.count(lostComments, "comment")
+                    + ", which fmt does not keep; add --drop-comments to rewrite it anyway");
+            return ExitCodes.USAGE;
+        }
+        SourceFiles.write(file, canonical);
+        err.println("fclcert: rewrote " + file);
+        return ExitCodes.OK;
+    }
+
+    private void noteLostComments(PrintWriter err, int lost) {
+        if (lost > 0) {
+            err.println("fclcert: note: fmt does not keep comments (" + file + " has "
+                    + DiagnosticPrinter.count(lost, "comment") + ")");
+        }
+    }
+
+    private static int occurrences(String text, String what) {
+        int n = 0;
+        for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + what.length())) {
+            n++;
+        }
+        return n;
+    }
+}

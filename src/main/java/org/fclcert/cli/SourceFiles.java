@@ -1,0 +1,59 @@
+package org.fclcert.cli;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+
+/** Reading and writing program files for the commands, with I/O failures turned into one plain sentence. */
+final class SourceFiles {
+    private SourceFiles() {
+    }
+
+    /** A file's reason for not being readable or writable, as a short phrase. */
+    static final class FileProblem extends Exception {
+        FileProblem(String path, String reason) {
+            super("cannot read " + path + ": " + reason);
+        }
+
+        FileProblem(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * The file's text as UTF-8; bytes that are not UTF-8 (say a Latin-1 comment) become U+FFFD
+     * rather than failing, since FCL itself is plain ASCII and the reader reports any stray character.
+     */
+    static String read(String path) throws FileProblem {
+        Path p = Path.of(path);
+        if (Files.isDirectory(p)) {
+            throw new FileProblem(path, "it is a directory");
+        }
+        try {
+            byte[] bytes = Files.readAllBytes(p);
+            return StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPLACE)
+                    .onUnmappableCharacter(CodingErrorAction.REPLACE)
+                    .decode(ByteBuffer.wrap(bytes)).toString();
+        } catch (NoSuchFileException e) {
+            throw new FileProblem(path, "no such file");
+        } catch (AccessDeniedException e) {
+            throw new FileProblem(path, "permission denied");
+        } catch (IOException e) {
+            throw new FileProblem(path, String.valueOf(e.getMessage()));
+        }
+    }
+
+    static void write(String path, String text) throws FileProblem {
+        try {
+            Files.writeString(Path.of(path), text, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new FileProblem("cannot write " + path + ": " + e.getMessage());
+        }
+    }
+}

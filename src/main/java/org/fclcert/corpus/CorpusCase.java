@@ -1,0 +1,73 @@
+package org.fclcert.corpus;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import org.fclcert.model.ConformanceLevel;
+import org.fclcert.model.Feature;
+
+/**
+ * One conformance case: a self-contained FCL file whose leading {@code (*--- ... ---*)} comment holds
+ * YAML metadata.
+ *
+ * @param id            stable id ({@code B-COGS-001}); never renamed or reused
+ * @param title         one line saying what the case does
+ * @param level         the conformance level of the program (the highest level of its features)
+ * @param features      every feature the program uses, in the order the file lists them
+ * @param tests         the features this case is evidence for (a subset of {@code features})
+ * @param tolerance     how outputs are compared
+ * @param flags         {@code stateful}, {@code interpretation:<point of docs/semantics.md>}
+ * @param derivation    the hand derivation of the expected numbers, when given
+ * @param block         the function block to instantiate, when the file has several (else the first)
+ * @param vectors       ordered steps on one instance (positive cases; empty for negative ones)
+ * @param expectReject  true for a negative case: a conforming implementation must reject the program
+ * @param expectedError the single error of a negative case
+ * @param programText   the file with the metadata comment replaced by as many line breaks as it spanned,
+ *                      so every line of the program keeps the line number it has in the file (implementations
+ *                      report lines, and negative cases cite them)
+ * @param path          the case file
+ */
+public record CorpusCase(
+        String id,
+        String title,
+        ConformanceLevel level,
+        List<Feature> features,
+        List<Feature> tests,
+        Tolerance tolerance,
+        List<String> flags,
+        Optional<String> derivation,
+        Optional<String> block,
+        List<Vector> vectors,
+        boolean expectReject,
+        Optional<ExpectedError> expectedError,
+        String programText,
+        Path path) {
+
+    /** The flag that marks a case whose steps depend on the state left by earlier steps. */
+    public static final String STATEFUL = "stateful";
+
+    /** Prefix of the flag naming the {@code docs/semantics.md} point a case depends on. */
+    public static final String INTERPRETATION = "interpretation:";
+
+    public CorpusCase {
+        Objects.requireNonNull(id, "id");
+        features = List.copyOf(features);
+        tests = List.copyOf(tests);
+        flags = List.copyOf(flags);
+        vectors = List.copyOf(vectors);
+    }
+
+    /** True when the steps must run in order on one instance (never replayed in reverse). */
+    public boolean stateful() {
+        return flags.contains(STATEFUL);
+    }
+
+    /** The semantics point this case's expectations depend on, when it is flagged {@code interpretation:N}. */
+    public Optional<String> interpretation() {
+        return flags.stream()
+                .filter(f -> f.startsWith(INTERPRETATION))
+                .map(f -> f.substring(INTERPRETATION.length()))
+                .findFirst();
+    }
+}

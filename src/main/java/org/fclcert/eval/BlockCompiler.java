@@ -1,0 +1,264 @@
+package org.fclcert.eval;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fclcert.eval.BlockPlan.OutputPlan;
+import org.fclcert.eval.BlockPlan.RuleBlockPlan;
+import org.fclcert.eval.BlockPlan.SubconclusionPlan;
+import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.ActivationMethod;
+import org.fclcert.model.AndAlgorithm;
+import org.fclcert.model.DefaultValue;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Fuzzification;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Literal;
+import org.fclcert.model.Located;
+import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Names;
+import org.fclcert.model.Operand;
+import org.fclcert.model.OrAlgorithm;
+import org.fclcert.model.Point;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Subconclusion;
+import org.fclcert.model.Term;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
+import org.fclcert.model.VariableRef;
+
+/**
+ * Compiles one checked function block into a {@link BlockPlan}. A program that the checks would
+ * reject (unknown names, no METHOD, mixed output terms) is refused with IllegalArgumentException;
+ * settings whose absence the checks report but which have an evident default (AND/OR pair, ACT MIN,
+ * ACCU MAX, DEFAULT 0) get that default.
+ */
+final class BlockCompiler {
+    private final FunctionBlock fb;
+    private final Map<String, Integer> slots = new HashMap<>();
+    private final List<Shape> shapes = new ArrayList<>();
+    private final Map<String, Integer> termIndex = new HashMap<>();
+    /** Per output variable key: its contributions (id, term index within the output, PROD?). */
+    private final Map<String, List<int[]>> contributions = new HashMap<>();
+    private final Map<String, AccumulationMethod> outputAccumulation = new HashMap<>();
+    private int contributionCount;
+
+    private BlockCompiler(FunctionBlock fb) {
+        this.fb = fb;
+    }
+
+    static BlockPlan compile(FunctionBlock fb) {
+        return new BlockCompiler(fb).build();
+    }
+
+    private BlockPlan build() {
+        BlockPlan.Builder b = new BlockPlan.Builder();
+        b.name = fb.name();
+        variables(b);
+        inputTerms(b);
+        b.ruleBlocks = fb.ruleBlocks().stream().map(this::ruleBlock).toArray(RuleBlockPlan[]::new);
+        b.outputs = fb.defuzzifications().stream().map(this::output).toArray(OutputPlan[]::new);
+        b.shapes = shapes.toArray(Shape[]::new);
+        b.contributionCount = contributionCount;
+        return new BlockPlan(b);
+    }
+
+    private void variables(BlockPlan.Builder b) {
+        List<Variable> vars = fb.variables();
+        int n = vars.size();
+        b.variableNames = new String[n];
+        b.types = new org.fclcert.model.DataType[n];
+        b.isInput = new boolean[n];
+        b.initialValues = new double[n];
+        b.slotByName = new HashMap<>();
+        b.inputNames = new ArrayList<>();
+        b.outputNames = new ArrayList<>();
+        List<Integer> outputSlots = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            Variable v = vars.get(i);
+            b.variableNames[i] = v.name();
+            b.types[i] = v.type();
+            b.isInput[i] = v.kind() == VariableKind.INPUT;
+            double init = v.initialValue().map(Literal::value).orElse(0.0);
+            b.initialValues[i] = v.type().isInteger() ? Conversions.roundHalfAwayFromZero(init) : init;
+            slots.put(Names.key(v.name()), i);
+            b.slotByName.put(v.name(), i);
+            b.slotByName.put(Names.key(v.name()), i);
+            if (v.kind() == VariableKind.INPUT) {
+                b.inputNames.add(v.name());
+            } else if (v.kind() == VariableKind.OUTPUT) {
+                b.outputNames.add(v.name());
+                outputSlots.add(i);
+            }
+        }
+        b.outputSlots = outputSlots.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private void inputTerms(BlockPlan.Builder b) {
+        List<Integer> varSlot = new ArrayList<>();
+        List<Integer> shape = new ArrayList<>();
+        List<String> varName = new ArrayList<>();
+        List<String> name = new ArrayList<>();
+        for (Fuzzification f : fb.fuzzifications()) {
+            int slot = slot(f.variable());
+            for (Term t : f.terms()) {
+                termIndex.put(Names.key(f.variable()) + '\0' + Names.key(t.name()), varSlot.size());
+                varSlot.add(slot);
+                shape.add(addShape(t));
+                varName.add(fb.variables().get(slot).name());
+                name.add(t.name());
+            }
+        }
+        b.termVariableSlot = varSlot.stream().mapToInt(Integer::intValue).toArray();
+        b.termShape = shape.stream().mapToInt(Integer::intValue).toArray();
+        b.termVariableName = varName.toArray(String[]::new);
+        b.termName = name.toArray(String[]::new);
+    }
+
+    private int addShape(Term t) {
+        MembershipFunction f = t.function();
+        Shape s;
+        if (f instanceof MembershipFunction.Singleton single) {
+            s = new Shape(true, new double[] {constant(single.value())}, new int[] {slotOrNone(single.value())},
+                    new double[] {1.0}, new int[] {-1});
+        } else {
+            List<Point> pts = ((MembershipFunction.Points) f).points();
+            int n = pts.size();
+            if (n == 0) {
+                throw new IllegalArgumentException("term " + t.name() + " has no points");
+            }
+            double[] xc = new double[n];
+            int[] xs = new int[n];
+            double[] yc = new double[n];
+            int[] ys = new int[n];
+            for (int i = 0; i < n; i++) {
+                xc[i] = constant(pts.get(i).x());
+                xs[i] = slotOrNone(pts.get(i).x());
+                yc[i] = constant(pts.get(i).degree());
+                ys[i] = slotOrNone(pts.get(i).degree());
+            }
+            s = new Shape(false, xc, xs, yc, ys);
+        }
+        shapes.add(s);
+        return shapes.size() - 1;
+    }
+
+    private RuleBlockPlan ruleBlock(RuleBlock rb) {
+        AndAlgorithm and = rb.and().map(Located::value)
+                .orElse(rb.or().map(o -> o.value().pair()).orElse(AndAlgorithm.MIN));
+        OrAlgorithm or = rb.or().map(Located::value).orElse(and.pair());
+        ActivationMethod act = rb.activation().map(Located::value).orElse(ActivationMethod.MIN);
+        AccumulationMethod accu = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
+        int n = rb.rules().size();
+        String[] names = new String[n];
+        ConditionCode[] conditions = new ConditionCode[n];
+        SubconclusionPlan[][] conclusions = new SubconclusionPlan[n][];
+        Map<String, Integer> bareTargets = new LinkedHashMap<>();
+        for (int r = 0; r < n; r++) {
+            Rule rule = rb.rules().get(r);
+            names[r] = rule.name();
+            conditions[r] = ConditionCode.compile(rule.condition(), this::termIndexOf, this::slot);
+            conclusions[r] = rule.conclusion().stream()
+                    .map(s -> subconclusion(s, act, accu, bareTargets)).toArray(SubconclusionPlan[]::new);
+        }
+        int[] bareSlots = bareTargets.keySet().stream().mapToInt(this::slot).toArray();
+        return new RuleBlockPlan(rb.name(), and, or, act, accu, names, conditions, conclusions, bareSlots);
+    }
+
+    private SubconclusionPlan subconclusion(Subconclusion s, ActivationMethod act, AccumulationMethod accu,
+            Map<String, Integer> bareTargets) {
+        double wConst = s.weight().map(BlockCompiler::constant).orElse(1.0);
+        int wSlot = s.weight().map(this::slotOrNone).orElse(-1);
+        String variable = fb.variables().get(slot(s.variable())).name();
+        if (s.term().isEmpty()) {
+            int target = bareTargets.computeIfAbsent(Names.key(s.variable()), k -> bareTargets.size());
+            return new SubconclusionPlan(variable, null, -1, target, wConst, wSlot);
+        }
+        String key = Names.key(s.variable());
+        Defuzzification d = fb.defuzzification(s.variable()).orElseThrow(
+                () -> new IllegalArgumentException("no DEFUZZIFY for " + s.variable()));
+        int termInOutput = termPosition(d, s.term().get());
+        int id = contributionCount++;
+        contributions.computeIfAbsent(key, k -> new ArrayList<>())
+                .add(new int[] {id, termInOutput, act == ActivationMethod.PROD ? 1 : 0});
+        outputAccumulation.putIfAbsent(key, accu);
+        return new SubconclusionPlan(variable, d.terms().get(termInOutput).name(), id, -1, wConst, wSlot);
+    }
+
+    private OutputPlan output(Defuzzification d) {
+        String key = Names.key(d.variable());
+        int slot = slot(d.variable());
+        boolean singletons = !d.terms().isEmpty()
+                && d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton);
+        boolean points = d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Points);
+        if (!singletons && !points) {
+            throw new IllegalArgumentException("output " + d.variable() + " mixes singleton and point terms");
+        }
+        DefuzzificationMethod method = d.method().map(Located::value)
+                .orElseThrow(() -> new IllegalArgumentException("output " + d.variable() + " has no METHOD"));
+        if (singletons && method == DefuzzificationMethod.COA) {
+            throw new IllegalArgumentException("CoA is not applicable to the singletons of " + d.variable());
+        }
+        if (!singletons && method == DefuzzificationMethod.COGS) {
+            throw new IllegalArgumentException("CoGS needs singleton terms on " + d.variable());
+        }
+        int[] termShapes = d.terms().stream().mapToInt(this::addShape).toArray();
+        int maxPoints = d.terms().stream().mapToInt(BlockCompiler::pointCount).sum();
+        List<int[]> cs = contributions.getOrDefault(key, List.of());
+        boolean[] prod = new boolean[cs.size()];
+        for (int i = 0; i < prod.length; i++) {
+            prod[i] = cs.get(i)[2] == 1;
+        }
+        boolean nc = d.defaultValue().map(v -> v instanceof DefaultValue.NoChange).orElse(false);
+        double def = d.defaultValue().filter(v -> v instanceof DefaultValue.Constant)
+                .map(v -> ((DefaultValue.Constant) v).value().value()).orElse(0.0);
+        return new OutputPlan(fb.variables().get(slot).name(), slot, method, singletons,
+                d.range().isPresent(), d.range().map(r -> r.min().value()).orElse(0.0),
+                d.range().map(r -> r.max().value()).orElse(0.0), termShapes,
+                d.terms().stream().map(Term::name).toArray(String[]::new), nc, def,
+                outputAccumulation.getOrDefault(key, AccumulationMethod.MAX),
+                cs.stream().mapToInt(c -> c[0]).toArray(), cs.stream().mapToInt(c -> c[1]).toArray(), prod,
+                maxPoints);
+    }
+
+    private static int pointCount(Term t) {
+        return t.function() instanceof MembershipFunction.Points p ? p.points().size() : 1;
+    }
+
+    private static int termPosition(Defuzzification d, String term) {
+        for (int i = 0; i < d.terms().size(); i++) {
+            if (Names.same(d.terms().get(i).name(), term)) {
+                return i;
+            }
+        }
+        throw new IllegalArgumentException("output " + d.variable() + " has no term " + term);
+    }
+
+    private int termIndexOf(String variable, String term) {
+        Integer i = termIndex.get(Names.key(variable) + '\0' + Names.key(term));
+        if (i == null) {
+            throw new IllegalArgumentException("no term " + term + " of input " + variable);
+        }
+        return i;
+    }
+
+    private int slot(String variable) {
+        Integer s = slots.get(Names.key(variable));
+        if (s == null) {
+            throw new IllegalArgumentException("undeclared variable " + variable);
+        }
+        return s;
+    }
+
+    private int slotOrNone(Operand o) {
+        return o instanceof VariableRef v ? slot(v.name()) : -1;
+    }
+
+    private static double constant(Operand o) {
+        return o instanceof Literal l ? l.value() : 0.0;
+    }
+}

@@ -1,0 +1,135 @@
+package org.fclcert.eval;
+
+import java.util.List;
+import java.util.Map;
+import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.ActivationMethod;
+import org.fclcert.model.AndAlgorithm;
+import org.fclcert.model.DataType;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.OrAlgorithm;
+
+/**
+ * One function block compiled to arrays and indices (immutable; shared by all its instances).
+ * Variables live in slots (their declaration index); input terms have degree indices; each
+ * {@code IS} subconclusion is a numbered contribution to its output's accumulation.
+ */
+final class BlockPlan {
+    final String name;
+    final String[] variableNames;
+    final DataType[] types;
+    final boolean[] isInput;
+    final double[] initialValues;
+    /** Declared name and upper-case key of each variable, to its slot. */
+    final Map<String, Integer> slotByName;
+    final List<String> inputNames;
+    final List<String> outputNames;
+    final int[] outputSlots;
+
+    final Shape[] shapes;
+    /** Per input term (degree index): the variable slot, its shape, and names for the trace. */
+    final int[] termVariableSlot;
+    final int[] termShape;
+    final String[] termVariableName;
+    final String[] termName;
+
+    final RuleBlockPlan[] ruleBlocks;
+    final OutputPlan[] outputs;
+    /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
+    final int contributionCount;
+    final int maxStack;
+    final int maxBareTargets;
+
+    BlockPlan(Builder b) {
+        name = b.name;
+        variableNames = b.variableNames;
+        types = b.types;
+        isInput = b.isInput;
+        initialValues = b.initialValues;
+        slotByName = Map.copyOf(b.slotByName);
+        inputNames = List.copyOf(b.inputNames);
+        outputNames = List.copyOf(b.outputNames);
+        outputSlots = b.outputSlots;
+        shapes = b.shapes;
+        termVariableSlot = b.termVariableSlot;
+        termShape = b.termShape;
+        termVariableName = b.termVariableName;
+        termName = b.termName;
+        ruleBlocks = b.ruleBlocks;
+        outputs = b.outputs;
+        contributionCount = b.contributionCount;
+        int stack = 1;
+        int bare = 0;
+        for (RuleBlockPlan rb : ruleBlocks) {
+            for (ConditionCode c : rb.conditions) {
+                stack = Math.max(stack, c.maxStack);
+            }
+            bare = Math.max(bare, rb.bareTargetSlots.length);
+        }
+        maxStack = stack;
+        maxBareTargets = bare;
+    }
+
+    /** Mutable holder the compiler fills. */
+    static final class Builder {
+        String name;
+        String[] variableNames;
+        DataType[] types;
+        boolean[] isInput;
+        double[] initialValues;
+        Map<String, Integer> slotByName;
+        List<String> inputNames;
+        List<String> outputNames;
+        int[] outputSlots;
+        Shape[] shapes;
+        int[] termVariableSlot;
+        int[] termShape;
+        String[] termVariableName;
+        String[] termName;
+        RuleBlockPlan[] ruleBlocks;
+        OutputPlan[] outputs;
+        int contributionCount;
+    }
+
+    /** One rule block: operators, methods, and per rule its condition and subconclusions. */
+    record RuleBlockPlan(
+            String name,
+            AndAlgorithm and,
+            OrAlgorithm or,
+            ActivationMethod activation,
+            AccumulationMethod accumulation,
+            String[] ruleNames,
+            ConditionCode[] conditions,
+            SubconclusionPlan[][] conclusions,
+            int[] bareTargetSlots) {
+    }
+
+    /**
+     * One subconclusion. {@code contribution} &gt;= 0 for {@code v IS t} (index into the
+     * contribution arrays); otherwise {@code bareTarget} indexes the block's bare-variable targets.
+     * The weight is {@code weightConst} or, when {@code weightSlot} &gt;= 0, an input variable.
+     */
+    record SubconclusionPlan(
+            String variable, String term, int contribution, int bareTarget, double weightConst, int weightSlot) {
+    }
+
+    /** One defuzzified output variable. */
+    record OutputPlan(
+            String variable,
+            int slot,
+            DefuzzificationMethod method,
+            boolean singletons,
+            boolean hasRange,
+            double rangeMin,
+            double rangeMax,
+            int[] termShapes,
+            String[] termNames,
+            boolean noChange,
+            double defaultValue,
+            AccumulationMethod accumulation,
+            int[] contributions,
+            int[] contributionTerm,
+            boolean[] contributionProd,
+            int maxPoints) {
+    }
+}

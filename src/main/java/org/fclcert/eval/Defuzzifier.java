@@ -1,0 +1,137 @@
+package org.fclcert.eval;
+
+/**
+ * Defuzzification (Tables 1 and 2) of a piece-wise linear set given by its vertices, in closed form:
+ * every piece between two vertices is linear, so areas and moments are exact trapezoid formulas and
+ * the halving point of CoA is the root of a quadratic. A piece of zero width is a jump.
+ * All methods return NaN when the set has no area (CoG, CoA) or no positive degree (LM, RM).
+ */
+final class Defuzzifier {
+    private Defuzzifier() {
+    }
+
+    static double area(double[] px, double[] py, int np) {
+        double area = 0;
+        for (int j = 0; j + 1 < np; j++) {
+            area += (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+        }
+        return area;
+    }
+
+    /** Centre of gravity: ∫u·μ / ∫μ. */
+    static double centreOfGravity(double[] px, double[] py, int np) {
+        double area = 0;
+        double moment = 0;
+        for (int j = 0; j + 1 < np; j++) {
+            double h = px[j + 1] - px[j];
+            double y0 = py[j];
+            double y1 = py[j + 1];
+            area += h * (y0 + y1) * 0.5;
+            moment += h * (px[j] * (2 * y0 + y1) + px[j + 1] * (y0 + 2 * y1)) / 6.0;
+        }
+        return area > 0 ? moment / area : Double.NaN;
+    }
+
+    /**
+     * Centre of area: the u' with equal area on both sides. When a whole interval of u' halves the
+     * area (a gap of zero degree at the halfway point), its midpoint. The halfway point is searched
+     * once from the left and once from the right; both agree unless there is such a gap.
+     */
+    static double centreOfArea(double[] px, double[] py, int np) {
+        double total = area(px, py, np);
+        if (!(total > 0)) {
+            return Double.NaN;
+        }
+        double half = total * 0.5;
+        double tol = total * 1e-12;
+        return (fromLeft(px, py, np, half, tol) + fromRight(px, py, np, half, tol)) * 0.5;
+    }
+
+    private static double fromLeft(double[] px, double[] py, int np, double half, double tol) {
+        double cum = 0;
+        for (int j = 0; j + 1 < np; j++) {
+            double a = (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+            if (Math.abs(cum + a - half) <= tol) {
+                return px[j + 1];
+            }
+            if (cum + a > half) {
+                return px[j] + solve(py[j], py[j + 1], px[j + 1] - px[j], half - cum);
+            }
+            cum += a;
+        }
+        return px[np - 1];
+    }
+
+    private static double fromRight(double[] px, double[] py, int np, double half, double tol) {
+        double cum = 0;
+        for (int j = np - 2; j >= 0; j--) {
+            double a = (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+            if (Math.abs(cum + a - half) <= tol) {
+                return px[j];
+            }
+            if (cum + a > half) {
+                return px[j + 1] - solve(py[j + 1], py[j], px[j + 1] - px[j], half - cum);
+            }
+            cum += a;
+        }
+        return px[0];
+    }
+
+    /**
+     * The distance t into a linear piece of width h, starting at degree y0 and ending at y1, whose
+     * area up to t is target: y0·t + (y1−y0)/h·t²/2 = target, in the form without cancellation.
+     */
+    static double solve(double y0, double y1, double h, double target) {
+        if (target <= 0) {
+            return 0;
+        }
+        double s = (y1 - y0) / h;
+        double disc = Math.max(0, y0 * y0 + 2 * s * target);
+        double den = y0 + Math.sqrt(disc);
+        double t = den > 0 ? 2 * target / den : h;
+        return Math.min(h, Math.max(0, t));
+    }
+
+    /**
+     * Degrees within this relative distance of the supremum count as reaching it: a plateau that is
+     * flat in exact arithmetic (a clip level meeting a sum of segments, say) may carry vertices
+     * that differ in the last bits.
+     */
+    static final double TIE = 1e-12;
+
+    /** Leftmost maximum: the smallest u whose degree is the supremum. */
+    static double leftmostMaximum(double[] px, double[] py, int np) {
+        double sup = supremum(py, np);
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        for (int j = 0; j < np; j++) {
+            if (py[j] >= sup * (1 - TIE)) {
+                return px[j];
+            }
+        }
+        return Double.NaN;
+    }
+
+    /** Rightmost maximum: the largest u whose degree is the supremum. */
+    static double rightmostMaximum(double[] px, double[] py, int np) {
+        double sup = supremum(py, np);
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        for (int j = np - 1; j >= 0; j--) {
+            if (py[j] >= sup * (1 - TIE)) {
+                return px[j];
+            }
+        }
+        return Double.NaN;
+    }
+
+    static double supremum(double[] py, int np) {
+        double sup = 0;
+        for (int j = 0; j < np; j++) {
+            sup = Math.max(sup, py[j]);
+        }
+        return sup;
+    }
+}

@@ -1,0 +1,405 @@
+package org.fclcert.eval;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.fclcert.eval.BlockPlan.OutputPlan;
+import org.fclcert.eval.BlockPlan.RuleBlockPlan;
+import org.fclcert.eval.BlockPlan.SubconclusionPlan;
+import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.AndAlgorithm;
+import org.fclcert.model.DataType;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Names;
+import org.fclcert.model.OrAlgorithm;
+
+/**
+ * One instance of a fuzzy function block (IEC 61131-3 instance semantics): it keeps its variable
+ * values between evaluations, so unset inputs keep their last value and DEFAULT NC keeps the last
+ * output. Not thread-safe; create one instance per thread. {@link #evaluate()} does no name lookup
+ * and allocates nothing once its scratch arrays have grown to the program's needs.
+ */
+public final class FunctionBlockInstance {
+    private final BlockPlan plan;
+    private final double[] values;
+    private final double[] termDegrees;
+    private final double[][] curX;
+    private final double[][] curY;
+    private final double[] stack;
+    private final double[] bare;
+    private final double[] ruleDegree;
+    private final double[] contributionDegree;
+    private final double[] contributionWeight;
+    private final double[] singletonDegree;
+    private final double[] singletonValue;
+    private final SetBuilder set = new SetBuilder();
+
+    FunctionBlockInstance(BlockPlan plan) {
+        this.plan = plan;
+        this.values = plan.initialValues.clone();
+        this.termDegrees = new double[plan.termShape.length];
+        int shapes = plan.shapes.length;
+        this.curX = new double[shapes][];
+        this.curY = new double[shapes][];
+        for (int s = 0; s < shapes; s++) {
+            Shape shape = plan.shapes[s];
+            curX[s] = shape.constant ? shape.sortedX : new double[shape.n];
+            curY[s] = shape.constant ? shape.sortedY : new double[shape.n];
+        }
+        this.stack = new double[plan.maxStack];
+        this.bare = new double[Math.max(1, plan.maxBareTargets)];
+        int rules = 0;
+        int terms = 0;
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            rules = Math.max(rules, rb.conditions().length);
+        }
+        for (OutputPlan o : plan.outputs) {
+            terms = Math.max(terms, o.termShapes().length);
+        }
+        this.ruleDegree = new double[rules];
+        this.contributionDegree = new double[plan.contributionCount];
+        this.contributionWeight = new double[plan.contributionCount];
+        this.singletonDegree = new double[terms];
+        this.singletonValue = new double[terms];
+    }
+
+    /** The function block's name as declared. */
+    public String functionBlockName() {
+        return plan.name;
+    }
+
+    /** VAR_INPUT names in declaration order. */
+    public List<String> inputNames() {
+        return plan.inputNames;
+    }
+
+    /** VAR_OUTPUT names in declaration order. */
+    public List<String> outputNames() {
+        return plan.outputNames;
+    }
+
+    /**
+     * Sets an input (case-insensitive name). Integer-typed inputs take the value rounded half away
+     * from zero.
+     */
+    public void set(String name, double value) throws EvaluationException {
+        int slot = slot(name);
+        if (!plan.isInput[slot]) {
+            throw new EvaluationException(EvaluationException.NOT_AN_INPUT,
+                    "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
+        }
+        if (!Double.isFinite(value)) {
+            throw new EvaluationException(EvaluationException.NOT_FINITE,
+                    "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
+        }
+        store(slot, value);
+    }
+
+    /** The current value of any variable (input, output or local), by case-insensitive name. */
+    public double get(String name) throws EvaluationException {
+        return values[slot(name)];
+    }
+
+    /** VAR_OUTPUT values in declaration order, names as declared. */
+    public Map<String, Double> outputs() {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (int i = 0; i < plan.outputSlots.length; i++) {
+            out.put(plan.outputNames.get(i), values[plan.outputSlots[i]]);
+        }
+        return Collections.unmodifiableMap(out);
+    }
+
+    /** Back to the state of a fresh instance: every variable at its declared initial value, else 0. */
+    public void reset() {
+        System.arraycopy(plan.initialValues, 0, values, 0, values.length);
+    }
+
+    public void evaluate() throws EvaluationException {
+        evaluate(null);
+    }
+
+    /** One evaluation: fuzzification, the rule blocks in textual order, then defuzzification. */
+    public void evaluate(Trace trace) throws EvaluationException {
+        if (trace != null) {
+            trace.clear();
+        }
+        resolveVariableShapes();
+        fuzzify(trace);
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            runRuleBlock(rb, trace);
+        }
+        for (OutputPlan o : plan.outputs) {
+            defuzzify(o, trace);
+        }
+    }
+
+    private int slot(String name) throws EvaluationException {
+        Integer slot = plan.slotByName.get(name);
+        if (slot == null) {
+            slot = plan.slotByName.get(Names.key(name));
+        }
+        if (slot == null) {
+            throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+                    "function block '" + plan.name + "' has no variable '" + name + "'");
+        }
+        return slot;
+    }
+
+    /** Writes a value, converting to the variable's integer type (8.: half away from zero). */
+    private double store(int slot, double value) throws EvaluationException {
+        DataType type = plan.types[slot];
+        double v = type.isInteger() ? Conversions.roundHalfAwayFromZero(value) : value;
+        if (v < type.min() || v > type.max()) {
+            throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value + " of '"
+                    + plan.variableNames[slot] + "' does not fit its data type " + type);
+        }
+        values[slot] = v;
+        return v;
+    }
+
+    private void resolveVariableShapes() {
+        Shape[] shapes = plan.shapes;
+        for (int s = 0; s < shapes.length; s++) {
+            if (!shapes[s].constant) {
+                shapes[s].resolve(values, curX[s], curY[s]);
+            }
+        }
+    }
+
+    /** 5.2.2: the degree of every term of every fuzzified input. */
+    private void fuzzify(Trace trace) {
+        int[] termShape = plan.termShape;
+        for (int t = 0; t < termShape.length; t++) {
+            int s = termShape[t];
+            double u = values[plan.termVariableSlot[t]];
+            Shape shape = plan.shapes[s];
+            termDegrees[t] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0) : Pwl.degree(curX[s], curY[s], shape.n, u);
+            if (trace != null) {
+                trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
+            }
+        }
+    }
+
+    /**
+     * Aggregation and activation of one rule block. Every condition reads the values as they were
+     * when the block started: bare-variable conclusions are collected and written at the end.
+     */
+    private void runRuleBlock(RuleBlockPlan rb, Trace trace) throws EvaluationException {
+        int targets = rb.bareTargetSlots().length;
+        for (int j = 0; j < targets; j++) {
+            bare[j] = 0;
+        }
+        ConditionCode[] conditions = rb.conditions();
+        for (int r = 0; r < conditions.length; r++) {
+            double d = aggregate(conditions[r], rb.and(), rb.or());
+            ruleDegree[r] = d;
+            if (trace != null) {
+                trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
+            }
+            for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
+                if (sc.contribution() >= 0) {
+                    contributionDegree[sc.contribution()] = d;
+                    contributionWeight[sc.contribution()] = w;
+                } else {
+                    bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w * d);
+                }
+                if (trace != null) {
+                    trace.add(new Trace.Activation(rb.name(), rb.ruleNames()[r], sc.variable(),
+                            Optional.ofNullable(sc.term()), w, w * d));
+                }
+            }
+        }
+        for (int j = 0; j < targets; j++) {
+            double v = rb.accumulation() == AccumulationMethod.NSUM ? bare[j] / Math.max(1.0, bare[j]) : bare[j];
+            int slot = rb.bareTargetSlots()[j];
+            double stored = store(slot, v);
+            if (trace != null) {
+                trace.add(new Trace.Result(plan.variableNames[slot], stored, Trace.Outcome.ASSIGNED));
+            }
+        }
+    }
+
+    /** Table 5 applied to two degrees; NSUM sums here and normalises once all are summed. */
+    private static double accumulate(AccumulationMethod accu, double a, double b) {
+        return switch (accu) {
+            case MAX -> Math.max(a, b);
+            case BSUM -> Math.min(1.0, a + b);
+            case NSUM -> a + b;
+        };
+    }
+
+    /** Runs a condition's postfix code (Table 3 operators; NOT = 1 − a). */
+    private double aggregate(ConditionCode code, AndAlgorithm and, OrAlgorithm or) {
+        int[] ops = code.ops;
+        int[] args = code.args;
+        double[] st = stack;
+        int sp = 0;
+        for (int i = 0; i < ops.length; i++) {
+            switch (ops[i]) {
+                case ConditionCode.TERM -> st[sp++] = termDegrees[args[i]];
+                case ConditionCode.TERM_NOT -> st[sp++] = 1.0 - termDegrees[args[i]];
+                case ConditionCode.VARIABLE -> st[sp++] = clamp01(values[args[i]]);
+                case ConditionCode.NOT -> st[sp - 1] = 1.0 - st[sp - 1];
+                case ConditionCode.AND -> sp = fold(st, sp, args[i], true, and, or);
+                default -> sp = fold(st, sp, args[i], false, and, or);
+            }
+        }
+        return st[0];
+    }
+
+    private static int fold(double[] st, int sp, int n, boolean isAnd, AndAlgorithm and, OrAlgorithm or) {
+        int base = sp - n;
+        double acc = st[base];
+        for (int j = base + 1; j < sp; j++) {
+            acc = isAnd ? and(and, acc, st[j]) : or(or, acc, st[j]);
+        }
+        st[base] = acc;
+        return base + 1;
+    }
+
+    static double and(AndAlgorithm a, double x, double y) {
+        return switch (a) {
+            case MIN -> Math.min(x, y);
+            case PROD -> x * y;
+            case BDIF -> Math.max(0.0, x + y - 1.0);
+        };
+    }
+
+    static double or(OrAlgorithm o, double x, double y) {
+        return switch (o) {
+            case MAX -> Math.max(x, y);
+            case ASUM -> x + y - x * y;
+            case BSUM -> Math.min(1.0, x + y);
+        };
+    }
+
+    private static double clamp01(double v) {
+        return Math.max(0.0, Math.min(1.0, v));
+    }
+
+    /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
+    private void defuzzify(OutputPlan o, Trace trace) throws EvaluationException {
+        double result = o.singletons() ? singletons(o, trace) : pointSet(o, trace);
+        Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
+        if (Double.isNaN(result)) {
+            outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
+            result = o.noChange() ? values[o.slot()] : o.defaultValue();
+        }
+        if (!Double.isFinite(result)) {
+            throw new EvaluationException(EvaluationException.NO_RESULT,
+                    "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
+        }
+        double stored = store(o.slot(), result);
+        if (trace != null) {
+            trace.add(new Trace.Result(o.variable(), stored, outcome));
+        }
+    }
+
+    /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */
+    private double singletons(OutputPlan o, Trace trace) {
+        int terms = o.termShapes().length;
+        for (int t = 0; t < terms; t++) {
+            singletonDegree[t] = 0;
+            singletonValue[t] = curX[o.termShapes()[t]][0];
+        }
+        int[] cs = o.contributions();
+        for (int i = 0; i < cs.length; i++) {
+            int t = o.contributionTerm()[i];
+            double a = contributionWeight[cs[i]] * contributionDegree[cs[i]];
+            singletonDegree[t] = accumulate(o.accumulation(), singletonDegree[t], a);
+        }
+        if (o.accumulation() == AccumulationMethod.NSUM) {
+            double max = 1.0;
+            for (int t = 0; t < terms; t++) {
+                max = Math.max(max, singletonDegree[t]);
+            }
+            for (int t = 0; t < terms; t++) {
+                singletonDegree[t] /= max;
+            }
+        }
+        if (trace != null) {
+            List<Trace.Breakpoint> pts = new ArrayList<>();
+            for (int t = 0; t < terms; t++) {
+                pts.add(new Trace.Breakpoint(singletonValue[t], singletonDegree[t]));
+            }
+            trace.add(new Trace.AccumulatedSet(o.variable(), true, pts));
+        }
+        return switch (o.method()) {
+            case LM -> extremeSingleton(terms, true);
+            case RM -> extremeSingleton(terms, false);
+            default -> centreOfGravityForSingletons(terms);
+        };
+    }
+
+    private double centreOfGravityForSingletons(int terms) {
+        double num = 0;
+        double den = 0;
+        for (int t = 0; t < terms; t++) {
+            num += singletonValue[t] * singletonDegree[t];
+            den += singletonDegree[t];
+        }
+        return den > 0 ? num / den : Double.NaN;
+    }
+
+    private double extremeSingleton(int terms, boolean leftmost) {
+        double sup = 0;
+        for (int t = 0; t < terms; t++) {
+            sup = Math.max(sup, singletonDegree[t]);
+        }
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        double best = leftmost ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
+        for (int t = 0; t < terms; t++) {
+            if (singletonDegree[t] >= sup * (1 - Defuzzifier.TIE)) {
+                best = leftmost ? Math.min(best, singletonValue[t]) : Math.max(best, singletonValue[t]);
+            }
+        }
+        return best;
+    }
+
+    /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
+    private double pointSet(OutputPlan o, Trace trace) {
+        set.clear();
+        int[] cs = o.contributions();
+        for (int i = 0; i < cs.length; i++) {
+            double d = contributionDegree[cs[i]];
+            double w = contributionWeight[cs[i]];
+            if (d * w > 0) {
+                set.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
+            }
+        }
+        double lo = o.rangeMin();
+        double hi = o.rangeMax();
+        if (!o.hasRange()) {
+            lo = Double.POSITIVE_INFINITY;
+            hi = Double.NEGATIVE_INFINITY;
+            for (int s : o.termShapes()) {
+                lo = Math.min(lo, curX[s][0]);
+                hi = Math.max(hi, curX[s][plan.shapes[s].n - 1]);
+            }
+        }
+        set.build(o.accumulation(), lo, hi, curX, curY, plan.shapes);
+        if (trace != null) {
+            List<Trace.Breakpoint> pts = new ArrayList<>();
+            for (int j = 0; j < set.np; j++) {
+                pts.add(new Trace.Breakpoint(set.px[j], set.py[j]));
+            }
+            trace.add(new Trace.AccumulatedSet(o.variable(), false, pts));
+        }
+        return defuzzifySet(o.method());
+    }
+
+    private double defuzzifySet(DefuzzificationMethod method) {
+        return switch (method) {
+            case COA -> Defuzzifier.centreOfArea(set.px, set.py, set.np);
+            case LM -> Defuzzifier.leftmostMaximum(set.px, set.py, set.np);
+            case RM -> Defuzzifier.rightmostMaximum(set.px, set.py, set.np);
+            default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
+        };
+    }
+}

@@ -1,0 +1,297 @@
+package org.fclcert.eval;
+
+import java.util.Arrays;
+import org.fclcert.model.AccumulationMethod;
+
+/**
+ * Builds the accumulated set of one output with point terms as an exact piece-wise linear function
+ * (Table 5 accumulation of A.15-weighted activations), held as a list of vertices; a jump is two or
+ * three vertices with the same u. Breakpoints are the term points, the interval ends and the places
+ * where a MIN clip level crosses a term segment; between two breakpoints every activated set is
+ * linear, so MAX only adds the crossings of the upper envelope and BSUM the crossing of 1.
+ * Scratch arrays grow on demand and are reused, so the steady state allocates nothing.
+ */
+final class SetBuilder {
+    private int k;
+    private int[] kShape = new int[4];
+    private double[] kLevel = new double[4];
+    private double[] kWeight = new double[4];
+    private boolean[] kProd = new boolean[4];
+
+    private double[] bx = new double[16];
+    private int nb;
+    private double[] cl = new double[64];
+    private double[] cv = new double[64];
+    private double[] cr = new double[64];
+    private double[] aL = new double[16];
+    private double[] aV = new double[16];
+    private double[] aR = new double[16];
+
+    /** Vertices of the accumulated set, valid after {@link #build}. */
+    double[] px = new double[32];
+    double[] py = new double[32];
+    int np;
+
+    void clear() {
+        k = 0;
+        np = 0;
+    }
+
+    /** Adds the activated set w · ACT(level, μ_shape); callers skip contributions with w · level = 0. */
+    void add(int shape, double level, double weight, boolean prod) {
+        if (k == kShape.length) {
+            int c = 2 * k;
+            kShape = Arrays.copyOf(kShape, c);
+            kLevel = Arrays.copyOf(kLevel, c);
+            kWeight = Arrays.copyOf(kWeight, c);
+            kProd = Arrays.copyOf(kProd, c);
+        }
+        kShape[k] = shape;
+        kLevel[k] = level;
+        kWeight[k] = weight;
+        kProd[k] = prod;
+        k++;
+    }
+
+    int contributions() {
+        return k;
+    }
+
+    /** Builds the vertices over [lo, hi]; leaves none when nothing was added or the interval is empty. */
+    void build(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
+        np = 0;
+        if (k == 0 || !(lo < hi)) {
+            return;
+        }
+        breakpoints(lo, hi, cx, cy, shapes);
+        activatedValues(cx, cy, shapes);
+        accumulateAtBreakpoints(accu);
+        for (int i = 0; i < nb; i++) {
+            if (i > 0) {
+                emit(bx[i], aL[i], accu);
+            }
+            emit(bx[i], aV[i], accu);
+            if (i < nb - 1) {
+                emit(bx[i], aR[i], accu);
+                interior(i, accu);
+            }
+        }
+        if (accu == AccumulationMethod.NSUM) {
+            normalize();
+        }
+    }
+
+    private void breakpoints(double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
+        nb = 0;
+        addBreakpoint(lo);
+        addBreakpoint(hi);
+        for (int j = 0; j < k; j++) {
+            double[] x = cx[kShape[j]];
+            double[] y = cy[kShape[j]];
+            int n = shapes[kShape[j]].n;
+            for (int i = 0; i < n; i++) {
+                if (x[i] > lo && x[i] < hi) {
+                    addBreakpoint(x[i]);
+                }
+            }
+            if (!kProd[j]) {
+                clipCrossings(x, y, n, kLevel[j], lo, hi);
+            }
+        }
+        Arrays.sort(bx, 0, nb);
+        int m = 1;
+        for (int i = 1; i < nb; i++) {
+            if (bx[i] != bx[m - 1]) {
+                bx[m++] = bx[i];
+            }
+        }
+        nb = m;
+    }
+
+    private void clipCrossings(double[] x, double[] y, int n, double level, double lo, double hi) {
+        for (int i = 0; i + 1 < n; i++) {
+            double y0 = y[i];
+            double y1 = y[i + 1];
+            if ((y0 - level) * (y1 - level) < 0 && x[i + 1] > x[i]) {
+                double u = x[i] + (x[i + 1] - x[i]) * (level - y0) / (y1 - y0);
+                if (u > lo && u < hi) {
+                    addBreakpoint(u);
+                }
+            }
+        }
+    }
+
+    private void addBreakpoint(double u) {
+        if (nb == bx.length) {
+            bx = Arrays.copyOf(bx, 2 * nb);
+        }
+        bx[nb++] = u;
+    }
+
+    /**
+     * For each contribution j and breakpoint i: left limit, value and right limit at bx[i]. The
+     * breakpoints are sorted, so one forward walk over each term's points serves them all.
+     */
+    private void activatedValues(double[][] cx, double[][] cy, Shape[] shapes) {
+        int size = k * nb;
+        if (cl.length < size) {
+            cl = new double[2 * size];
+            cv = new double[2 * size];
+            cr = new double[2 * size];
+        }
+        for (int j = 0; j < k; j++) {
+            double[] x = cx[kShape[j]];
+            double[] y = cy[kShape[j]];
+            int n = shapes[kShape[j]].n;
+            int base = j * nb;
+            int p = 0;
+            for (int i = 0; i < nb; i++) {
+                double u = bx[i];
+                while (p < n && x[p] < u) {
+                    p++;
+                }
+                double l;
+                double v;
+                double r;
+                if (p < n && x[p] == u) {
+                    int q = p;
+                    v = y[p];
+                    while (q + 1 < n && x[q + 1] == u) {
+                        v = Math.max(v, y[++q]);
+                    }
+                    l = y[p];
+                    r = y[q];
+                } else if (p == 0 || p == n) {
+                    l = v = r = y[p == 0 ? 0 : n - 1];
+                } else {
+                    l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
+                }
+                double av = activate(j, v);
+                cv[base + i] = av;
+                cl[base + i] = i == 0 || l == v ? av : activate(j, l);
+                cr[base + i] = i == nb - 1 || r == v ? av : activate(j, r);
+            }
+        }
+    }
+
+    /** A.15 with Table 4: the weight multiplies the result of activation. */
+    private double activate(int j, double mu) {
+        double level = kLevel[j];
+        return kWeight[j] * (kProd[j] ? level * mu : Math.min(level, mu));
+    }
+
+    /** MAX keeps the maximum; BSUM and NSUM keep the plain sum here (bounded or normalised later). */
+    private void accumulateAtBreakpoints(AccumulationMethod accu) {
+        if (aL.length < nb) {
+            aL = new double[2 * nb];
+            aV = new double[2 * nb];
+            aR = new double[2 * nb];
+        }
+        boolean max = accu == AccumulationMethod.MAX;
+        for (int i = 0; i < nb; i++) {
+            double l = 0;
+            double v = 0;
+            double r = 0;
+            for (int j = 0; j < k; j++) {
+                int at = j * nb + i;
+                l = max ? Math.max(l, cl[at]) : l + cl[at];
+                v = max ? Math.max(v, cv[at]) : v + cv[at];
+                r = max ? Math.max(r, cr[at]) : r + cr[at];
+            }
+            aL[i] = l;
+            aV[i] = v;
+            aR[i] = r;
+        }
+    }
+
+    private void interior(int i, AccumulationMethod accu) {
+        if (accu == AccumulationMethod.MAX) {
+            envelope(i);
+        } else if (accu == AccumulationMethod.BSUM) {
+            double s0 = aR[i];
+            double s1 = aL[i + 1];
+            if ((s0 - 1) * (s1 - 1) < 0) {
+                emitRaw(bx[i] + (bx[i + 1] - bx[i]) * (1 - s0) / (s1 - s0), 1.0);
+            }
+        }
+    }
+
+    /**
+     * The corners of the upper envelope of the k activated sets, all linear on (bx[i], bx[i+1]):
+     * walk from the left, always switching to the line that overtakes the current one first.
+     */
+    private void envelope(int i) {
+        double a = bx[i];
+        double w = bx[i + 1] - a;
+        int cur = 0;
+        for (int j = 1; j < k; j++) {
+            int at = j * nb;
+            int best = cur * nb;
+            if (cr[at + i] > cr[best + i] || cr[at + i] == cr[best + i] && cl[at + i + 1] > cl[best + i + 1]) {
+                cur = j;
+            }
+        }
+        double t0 = 0;
+        for (int steps = 0; steps < k; steps++) {
+            double fa = cr[cur * nb + i];
+            double fb = cl[cur * nb + i + 1];
+            double f0 = fa + (fb - fa) * t0;
+            double bestT = 1;
+            int next = -1;
+            for (int j = 0; j < k; j++) {
+                double ga = cr[j * nb + i];
+                double gb = cl[j * nb + i + 1];
+                double d1 = fb - gb;
+                if (j == cur || d1 >= 0) {
+                    continue;
+                }
+                double d0 = Math.max(0, f0 - (ga + (gb - ga) * t0));
+                double t = t0 + (1 - t0) * d0 / (d0 - d1);
+                if (t < bestT || t == bestT && next >= 0 && gb > cl[next * nb + i + 1]) {
+                    bestT = t;
+                    next = j;
+                }
+            }
+            if (next < 0 || bestT >= 1) {
+                return;
+            }
+            if (bestT > t0) {
+                emitRaw(a + w * bestT, fa + (fb - fa) * bestT);
+            }
+            t0 = bestT;
+            cur = next;
+        }
+    }
+
+    private void emit(double u, double raw, AccumulationMethod accu) {
+        emitRaw(u, accu == AccumulationMethod.BSUM ? Math.min(1.0, raw) : raw);
+    }
+
+    private void emitRaw(double u, double y) {
+        if (np > 0 && px[np - 1] == u && py[np - 1] == y) {
+            return;
+        }
+        if (np > 1 && py[np - 1] == y && py[np - 2] == y) {
+            px[np - 1] = u; // a flat run needs only its two ends
+            return;
+        }
+        if (np == px.length) {
+            px = Arrays.copyOf(px, 2 * np);
+            py = Arrays.copyOf(py, 2 * np);
+        }
+        px[np] = u;
+        py[np] = y;
+        np++;
+    }
+
+    /** NSUM (Table 5): divide by max(1, the largest sum), which sits at a vertex. */
+    private void normalize() {
+        double max = 1.0;
+        for (int j = 0; j < np; j++) {
+            max = Math.max(max, py[j]);
+        }
+        for (int j = 0; j < np; j++) {
+            py[j] /= max;
+        }
+    }
+}

@@ -1,0 +1,52 @@
+package org.fclcert.eval;
+
+/**
+ * A compiled linguistic term: its singleton value or its points, each coordinate either a constant
+ * or the slot of an input variable (5.2.2 on-line adaptation). Constant points are sorted once at
+ * load; points with variables are re-read and stably sorted at each evaluation (5.2.2 NOTE: they
+ * may be out of sequence at run time).
+ */
+final class Shape {
+    final boolean singleton;
+    final int n;
+    private final double[] xConst;
+    private final int[] xSlot;
+    private final double[] yConst;
+    private final int[] ySlot;
+    /** True when no coordinate comes from a variable. */
+    final boolean constant;
+    /** The sorted points of a constant shape (shared, never written after construction). */
+    final double[] sortedX;
+    final double[] sortedY;
+
+    Shape(boolean singleton, double[] xConst, int[] xSlot, double[] yConst, int[] ySlot) {
+        this.singleton = singleton;
+        this.n = xConst.length;
+        this.xConst = xConst;
+        this.xSlot = xSlot;
+        this.yConst = yConst;
+        this.ySlot = ySlot;
+        boolean c = true;
+        for (int i = 0; i < n; i++) {
+            c &= xSlot[i] < 0 && ySlot[i] < 0;
+        }
+        this.constant = c;
+        this.sortedX = new double[n];
+        this.sortedY = new double[n];
+        if (c) {
+            resolve(null, sortedX, sortedY);
+        }
+    }
+
+    /** Fills {@code x}/{@code y} with the current points, degrees clamped to [0, 1], stably sorted by x. */
+    void resolve(double[] values, double[] x, double[] y) {
+        for (int i = 0; i < n; i++) {
+            x[i] = xSlot[i] < 0 ? xConst[i] : values[xSlot[i]];
+            double d = ySlot[i] < 0 ? yConst[i] : values[ySlot[i]];
+            y[i] = Math.max(0.0, Math.min(1.0, d));
+        }
+        if (!singleton) {
+            Pwl.sortStably(x, y, n);
+        }
+    }
+}

@@ -1,0 +1,56 @@
+package org.fclcert.iut;
+
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalLong;
+
+/**
+ * One FCL implementation as the harness drives it, whatever it really is (fclcert's own evaluator,
+ * a vendor's Java class, or a separate process speaking JSON lines). One session holds at most one
+ * loaded program and one instance of one of its function blocks at a time.
+ *
+ * <p>Every failure of the implementation arrives as an {@link IutException} whose {@link
+ * IutException.Kind} tells the harness how to record it; no other exception escapes. Implementations
+ * are not thread-safe: one harness thread drives one session.
+ */
+public interface ImplementationUnderTest extends AutoCloseable {
+
+    /** Who the implementation says it is, and which features it claims to realise. */
+    IutInfo hello() throws IutException;
+
+    /**
+     * Loads a program, replacing the one loaded before. The text keeps the line numbers of the corpus
+     * file it came from, so a rejection's line can be compared with the case's expected line.
+     */
+    LoadOutcome load(String fcl) throws IutException;
+
+    /**
+     * Sets the given inputs on the instance of {@code block} ({@code null} = the program's first function
+     * block), evaluates once and returns every output (VAR_OUTPUT names as declared). There is one
+     * instance per function block; it keeps its state between calls (the ordered vectors of one case
+     * run on one instance) until {@link #reset()} or the next {@link #load}.
+     */
+    Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException;
+
+    /** Fresh state for every instance; the program stays loaded. */
+    void reset() throws IutException;
+
+    /**
+     * The loaded program written back as FCL text by the implementation; empty when it cannot export.
+     * Asking with no program loaded is an {@link IutException.Kind#EVAL_ERROR} (or whatever a process IUT
+     * answers).
+     */
+    Optional<String> export() throws IutException;
+
+    /**
+     * Peak resident memory of the implementation in bytes, where it can be measured (a process IUT on
+     * Linux); empty otherwise. An addition to the shared contract, used by the probe.
+     */
+    default OptionalLong peakMemoryBytes() {
+        return OptionalLong.empty();
+    }
+
+    /** Ends the session and frees its resources; never throws. */
+    @Override
+    void close();
+}

@@ -1,0 +1,62 @@
+package org.fclcert.iut;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * How fclcert drives an implementation under test.
+ *
+ * @param timeout        longest wait for one reply (process IUT) or one call (Java IUT)
+ * @param restartBudget  how many times a crashed or hung IUT is restarted before requests fail with
+ *                       {@link IutException.Kind#GAVE_UP}
+ * @param maxReplyBytes  longest reply line accepted from a process IUT; longer is a protocol fault
+ * @param stderrTailBytes how much of the end of a process IUT's standard error is kept for reports
+ * @param classpath      jars or class directories searched for a {@code java:CLASS} IUT (empty = the
+ *                       classpath fclcert runs on)
+ */
+public record IutOptions(
+        Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath) {
+
+    public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(5);
+    public static final int DEFAULT_RESTART_BUDGET = 5;
+    public static final int DEFAULT_MAX_REPLY_BYTES = 16 * 1024 * 1024;
+    public static final int DEFAULT_STDERR_TAIL_BYTES = 8 * 1024;
+
+    public IutOptions {
+        Objects.requireNonNull(timeout, "timeout");
+        if (timeout.isNegative() || timeout.isZero()) {
+            throw new IllegalArgumentException("timeout must be positive: " + timeout);
+        }
+        if (restartBudget < 0 || maxReplyBytes < 1 || stderrTailBytes < 0) {
+            throw new IllegalArgumentException("restart budget, reply size and stderr tail size must not be negative");
+        }
+        classpath = List.copyOf(classpath);
+    }
+
+    public static IutOptions defaults() {
+        return new IutOptions(
+                DEFAULT_TIMEOUT, DEFAULT_RESTART_BUDGET, DEFAULT_MAX_REPLY_BYTES, DEFAULT_STDERR_TAIL_BYTES, List.of());
+    }
+
+    public IutOptions withTimeout(Duration newTimeout) {
+        return new IutOptions(newTimeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath);
+    }
+
+    public IutOptions withRestartBudget(int budget) {
+        return new IutOptions(timeout, budget, maxReplyBytes, stderrTailBytes, classpath);
+    }
+
+    public IutOptions withMaxReplyBytes(int bytes) {
+        return new IutOptions(timeout, restartBudget, bytes, stderrTailBytes, classpath);
+    }
+
+    public IutOptions withStderrTailBytes(int bytes) {
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, bytes, classpath);
+    }
+
+    public IutOptions withClasspath(List<Path> entries) {
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, entries);
+    }
+}

@@ -1,0 +1,34 @@
+package org.fclcert.iut;
+
+import java.util.List;
+
+/** Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS} or {@code process:COMMAND}. */
+public final class Iuts {
+    private Iuts() {}
+
+    /**
+     * Opens a session. Nothing is started eagerly beyond what is needed to check the spec: a process
+     * IUT is started on its first request.
+     *
+     * @throws IutException of kind {@link IutException.Kind#INFRA} when the spec is malformed, the class
+     *     cannot be loaded, or the command is empty
+     */
+    public static ImplementationUnderTest open(String spec, IutOptions options) throws IutException {
+        if (spec == null || spec.isBlank()) {
+            throw new IutException(IutException.Kind.INFRA, "no implementation under test given");
+        }
+        if (spec.equals("reference")) {
+            return new ReferenceIut();
+        }
+        if (spec.startsWith("java:")) {
+            return JavaIut.open(spec, spec.substring("java:".length()).strip(), options);
+        }
+        if (spec.startsWith("process:")) {
+            List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
+            return new ProcessIut(spec, command, options);
+        }
+        throw new IutException(
+                IutException.Kind.INFRA,
+                "unknown implementation under test '" + spec + "': use reference, java:CLASS or process:COMMAND");
+    }
+}

@@ -1,0 +1,281 @@
+package org.fclcert.iut;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalLong;
+import org.fclcert.iut.IutException.Kind;
+
+/**
+ * An IUT that is a separate process speaking JSON lines ({@code docs/iut-protocol.md}).
+ *
+ * <p>The process is started on the first request and greeted with {@code hello}. After a crash, a
+ * timeout or a protocol fault it is killed (with its child processes) and the failing request throws;
+ * the next request starts it again, greets it, and — unless that request is itself a {@code load} —
+ * replays the last program it had accepted. Each restart counts against the restart budget; once it
+ * is used up every request fails with {@link Kind#GAVE_UP}.
+ */
+final class ProcessIut implements ImplementationUnderTest {
+    private static final long STDERR_WAIT_MILLIS = 500;
+    private static final Duration BYE_WAIT = Duration.ofSeconds(1);
+    private static final int QUOTE_CHARS = 200;
+    /** A fresh process gets at least this long for its first reply: interpreters and JVMs start slowly. */
+    static final Duration STARTUP_TIMEOUT = Duration.ofSeconds(10);
+
+    private final String spec;
+    private final List<String> command;
+    private final IutOptions options;
+    private final ObjectMapper mapper = Protocol.mapper();
+
+    private ProcessSession session;
+    private int starts;
+    private boolean gaveUp;
+    private String lastFailure = "";
+    private IutInfo info;
+    private String acceptedProgram;
+    private long nextId;
+    private long peakRss = -1;
+
+    ProcessIut(String spec, List<String> command, IutOptions options) {
+        this.spec = spec;
+        this.command = List.copyOf(command);
+        this.options = options;
+    }
+
+    @Override
+    public IutInfo hello() throws IutException {
+        ensureRunning(false);
+        return info;
+    }
+
+    @Override
+    public LoadOutcome load(String fcl) throws IutException {
+        acceptedProgram = null;
+        LoadOutcome outcome = call(Protocol.load(fcl), Protocol::loadOutcome, false);
+        if (outcome instanceof LoadOutcome.Loaded) {
+            acceptedProgram = fcl;
+        }
+        return outcome;
+    }
+
+    @Override
+    public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
+        return call(Protocol.eval(block, inputs), Protocol::outputs, true);
+    }
+
+    @Override
+    public void reset() throws IutException {
+        call(Protocol.request("reset"), reply -> {
+            Protocol.plain(reply, "reset");
+            return null;
+        }, true);
+    }
+
+    @Override
+    public Optional<String> export() throws IutException {
+        return call(Protocol.request("export"), Protocol::exported, true);
+    }
+
+    @Override
+    public OptionalLong peakMemoryBytes() {
+        sampleMemory();
+        return peakRss < 0 ? OptionalLong.empty() : OptionalLong.of(peakRss);
+    }
+
+    /** The end of the current process's standard error (empty when none runs). */
+    String stderrTail() {
+        return session == null ? "" : session.stderrTail(0);
+    }
+
+    @Override
+    public void close() {
+        if (session == null) {
+            return;
+        }
+        try {
+            sampleMemory();
+            if (session.isAlive()) {
+                sayBye();
+            }
+        } catch (RuntimeException e) {
+            // closing must not fail: the kill below ends whatever is left
+        } finally {
+            session.kill();
+            session = null;
+        }
+    }
+
+    private void sayBye() {
+        ObjectNode bye = Protocol.request("bye").put("id", ++nextId);
+        session.send(write(bye));
+        try {
+            session.next(BYE_WAIT.toNanos());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        session.closeInput();
+        session.exitCode(BYE_WAIT.toMillis());
+    }
+
+    private interface Reading<T> {
+        T read(JsonNode reply) throws IutException;
+    }
+
+    private <T> T call(ObjectNode request, Reading<T> reading, boolean replay) throws IutException {
+        ensureRunning(replay);
+        JsonNode reply = exchange(request);
+        try {
+            return reading.read(reply);
+        } catch (IutException e) {
+            if (e.kind() == Kind.PROTOCOL) {
+                throw fail(Kind.PROTOCOL, e.getMessage());
+            }
+            throw new IutException(e.kind(), e.getMessage(), stderrTail());
+        }
+    }
+
+    /** Starts the process if none runs (greeting it, and replaying the accepted program if asked). */
+    private void ensureRunning(boolean replay) throws IutException {
+        if (gaveUp) {
+            throw new IutException(Kind.GAVE_UP, "stopped after " + (starts - 1)
+                    + " restarts (the restart budget); last failure: " + lastFailure);
+        }
+        if (session != null && session.isAlive()) {
+            return;
+        }
+        if (session != null) {
+            lastFailure = "the IUT exited between requests" + exitNote(session.exitCode(0));
+            session.kill();
+            session = null;
+        }
+        start();
+        info = greet();
+        if (replay && acceptedProgram != null) {
+            exchange(Protocol.load(acceptedProgram));
+        }
+    }
+
+    private void start() throws IutException {
+        if (starts > options.restartBudget()) {
+            gaveUp = true;
+            throw new IutException(Kind.GAVE_UP, "the restart budget of " + options.restartBudget()
+                    + " is used up; last failure: " + lastFailure);
+        }
+        try {
+            session = ProcessSession.start(command, options, starts + 1);
+        } catch (IOException e) {
+            throw new IutException(Kind.INFRA, "could not start " + command + ": " + e.getMessage());
+        }
+        starts++;
+    }
+
+    private IutInfo greet() throws IutException {
+        Duration patience = options.timeout().compareTo(STARTUP_TIMEOUT) > 0 ? options.timeout() : STARTUP_TIMEOUT;
+        JsonNode reply = exchange(Protocol.request("hello"), patience);
+        try {
+            return Protocol.info(reply, spec);
+        } catch (IutException e) {
+            throw fail(Kind.PROTOCOL, e.getMessage());
+        }
+    }
+
+    /** Sends one request and waits for its reply line: a JSON object with a boolean {@code ok} and our id. */
+    private JsonNode exchange(ObjectNode request) throws IutException {
+        return exchange(request, options.timeout());
+    }
+
+    private JsonNode exchange(ObjectNode request, Duration timeout) throws IutException {
+        long id = ++nextId;
+        String op = request.get("op").asText();
+        session.send(write(request.put("id", id)));
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (true) {
+            ReplyReader.Event event = nextEvent(deadline, op, timeout);
+            if (event instanceof ReplyReader.Line line && !line.text().isBlank()) {
+                return parse(line.text(), op, id);
+            }
+            if (event instanceof ReplyReader.EndOfStream) {
+                throw fail(Kind.CRASH, "the IUT exited while answering '" + op + "'" + exitNote(session.exitCode(1000)));
+            }
+            if (event instanceof ReplyReader.WriteFailed failed) {
+                throw fail(Kind.CRASH, "could not send '" + op + "' to the IUT (" + failed.reason() + ")"
+                        + exitNote(session.exitCode(1000)));
+            }
+            if (event instanceof ReplyReader.TooLong tooLong) {
+                throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is longer than " + tooLong.limit() + " bytes");
+            }
+        }
+    }
+
+    private ReplyReader.Event nextEvent(long deadline, String op, Duration timeout) throws IutException {
+        long left = deadline - System.nanoTime();
+        try {
+            ReplyReader.Event event = left > 0 ? session.next(left) : null;
+            if (event == null) {
+                throw fail(Kind.TIMEOUT, "no reply to '" + op + "' within " + timeout.toMillis() + " ms");
+            }
+            return event;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw fail(Kind.INFRA, "interrupted while waiting for the reply to '" + op + "'");
+        }
+    }
+
+    private JsonNode parse(String text, String op, long id) throws IutException {
+        JsonNode reply;
+        try {
+            reply = mapper.readTree(text);
+        } catch (JsonProcessingException e) {
+            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not JSON: " + quote(text));
+        }
+        if (reply == null || !reply.isObject() || !reply.path("ok").isBoolean()) {
+            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not an object with a boolean 'ok': " + quote(text));
+        }
+        JsonNode echoed = reply.get("id");
+        if (echoed != null && !(echoed.canConvertToExactIntegral() && echoed.asLong() == id)) {
+            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' carries id " + echoed + " where " + id + " was sent");
+        }
+        return reply;
+    }
+
+    /** Kills the process after a failure and builds the exception, with the end of its stderr. */
+    private IutException fail(Kind kind, String message) {
+        lastFailure = message;
+        String tail = "";
+        if (session != null) {
+            sampleMemory();
+            session.kill();
+            tail = session.stderrTail(STDERR_WAIT_MILLIS);
+            session = null;
+        }
+        return new IutException(kind, message, tail);
+    }
+
+    private void sampleMemory() {
+        if (session != null && session.isAlive()) {
+            session.peakRss().ifPresent(rss -> peakRss = Math.max(peakRss, rss));
+        }
+    }
+
+    private String write(ObjectNode request) {
+        try {
+            return mapper.writeValueAsString(request);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("a request tree always serialises", e);
+        }
+    }
+
+    private static String exitNote(OptionalLong exitCode) {
+        return exitCode.isPresent() ? " (exit code " + exitCode.getAsLong() + ")" : "";
+    }
+
+    private static String quote(String text) {
+        return text.length() <= QUOTE_CHARS ? text : text.substring(0, QUOTE_CHARS) + "…";
+    }
+}

@@ -1,0 +1,145 @@
+package org.fclcert.iut;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.OptionalLong;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.LongStream;
+import java.util.stream.Stream;
+
+/**
+ * One run of an IUT process: its pipes, the threads that drain them, and killing it (with the
+ * processes it started). Requests are written on a separate thread so that an IUT that stops
+ * reading its input cannot block fclcert past the timeout.
+ */
+final class ProcessSession {
+    private final Process process;
+    private final OutputStream stdin;
+    private final ReplyReader replies;
+    private final StderrTail stderr;
+    private final ExecutorService writer;
+
+    private ProcessSession(Process process, IutOptions options, int number) {
+        this.process = process;
+        this.stdin = process.getOutputStream();
+        String name = "fclcert-iut-" + process.pid() + "-" + number;
+        this.replies = new ReplyReader(process.getInputStream(), options.maxReplyBytes(), name + "-stdout");
+        this.stderr = new StderrTail(process.getErrorStream(), options.stderrTailBytes(), name + "-stderr");
+        this.writer = Executors.newSingleThreadExecutor(r -> daemon(r, name + "-stdin"));
+    }
+
+    static ProcessSession start(List<String> command, IutOptions options, int number) throws IOException {
+        Process process = new ProcessBuilder(command).start();
+        return new ProcessSession(process, options, number);
+    }
+
+    private static Thread daemon(Runnable r, String name) {
+        Thread t = new Thread(r, name);
+        t.setDaemon(true);
+        return t;
+    }
+
+    boolean isAlive() {
+        return process.isAlive();
+    }
+
+    /** Sends one line (without its newline) in the background; a failure shows up as a reply event. */
+    void send(String line) {
+        byte[] bytes = (line + "\n").getBytes(StandardCharsets.UTF_8);
+        writer.execute(() -> {
+            try {
+                stdin.write(bytes);
+                stdin.flush();
+            } catch (IOException e) {
+                replies.writeFailed(e.getMessage());
+            }
+        });
+    }
+
+    ReplyReader.Event next(long nanos) throws InterruptedException {
+        return replies.next(nanos);
+    }
+
+    /** The exit code, waiting at most {@code millis} for the process to end; empty if it still runs. */
+    OptionalLong exitCode(long millis) {
+        try {
+            process.waitFor(millis, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return process.isAlive() ? OptionalLong.empty() : OptionalLong.of(process.exitValue());
+    }
+
+    /** The end of stderr so far, after waiting briefly for a dead process's last words. */
+    String stderrTail(long waitMillis) {
+        if (!process.isAlive()) {
+            stderr.awaitEnd(waitMillis);
+        }
+        return stderr.text();
+    }
+
+    /** Kills the process and every process it started (collected first, so none is orphaned unseen). */
+    void kill() {
+        List<ProcessHandle> tree = process.descendants().toList();
+        process.destroyForcibly();
+        tree.forEach(ProcessHandle::destroyForcibly);
+        writer.shutdownNow();
+        exitCode(1000);
+        tree.forEach(ProcessSession::awaitExit);
+    }
+
+    private static void awaitExit(ProcessHandle p) {
+        try {
+            p.onExit().get(500, TimeUnit.MILLISECONDS);
+        } catch (ExecutionException | TimeoutException e) {
+            // killed but not yet reaped: the kill signal is all fclcert can do
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Closes stdin so that an IUT reading to end of input can finish on its own. */
+    void closeInput() {
+        writer.shutdown();
+        try {
+            stdin.close();
+        } catch (IOException e) {
+            // already gone: killing follows anyway
+        }
+    }
+
+    /**
+     * Peak resident set size of the process and its descendants (VmHWM from {@code /proc}, Linux only),
+     * in bytes; empty where it cannot be read.
+     */
+    OptionalLong peakRss() {
+        long[] peaks = Stream.concat(Stream.of(process.toHandle()), process.descendants())
+                .map(p -> vmHwm(p.pid()))
+                .filter(OptionalLong::isPresent)
+                .mapToLong(OptionalLong::getAsLong)
+                .toArray();
+        return peaks.length == 0 ? OptionalLong.empty() : OptionalLong.of(LongStream.of(peaks).sum());
+    }
+
+    private static OptionalLong vmHwm(long pid) {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc", Long.toString(pid), "status"))) {
+                if (line.startsWith("VmHWM:")) {
+                    String kb = line.substring("VmHWM:".length()).replace("kB", "").strip();
+                    return OptionalLong.of(Long.parseLong(kb) * 1024);
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // not Linux, or the process just ended: no measurement
+        }
+        return OptionalLong.empty();
+    }
+}

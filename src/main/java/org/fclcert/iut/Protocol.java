@@ -1,0 +1,199 @@
+package org.fclcert.iut;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.json.JsonReadFeature;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalInt;
+
+/**
+ * The JSON-lines messages of {@code docs/iut-protocol.md}: building requests and reading replies. A
+ * reply of the wrong shape is a {@link IutException.Kind#PROTOCOL} fault; a well-formed
+ * {@code ok:false} is the IUT's own answer.
+ */
+final class Protocol {
+    private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
+
+    private Protocol() {}
+
+    /** Python's json module writes NaN and Infinity; they are read (and then fail as wrong numbers). */
+    static ObjectMapper mapper() {
+        JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS).build();
+        return new ObjectMapper(factory).enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
+    }
+
+    static ObjectNode request(String op) {
+        return NODES.objectNode().put("op", op);
+    }
+
+    static ObjectNode load(String fcl) {
+        return request("load").put("fcl", fcl);
+    }
+
+    static ObjectNode eval(String block, Map<String, Double> inputs) throws IutException {
+        ObjectNode request = request("eval");
+        if (block != null) {
+            request.put("block", block);
+        }
+        ObjectNode values = request.putObject("inputs");
+        for (Map.Entry<String, Double> input : inputs.entrySet()) {
+            if (input.getValue() == null || !Double.isFinite(input.getValue())) {
+                throw new IutException(IutException.Kind.INFRA,
+                        "input " + input.getKey() + " = " + input.getValue() + " cannot be sent as a JSON number");
+            }
+            values.put(input.getKey(), input.getValue());
+        }
+        return request;
+    }
+
+    static IutInfo info(JsonNode reply, String command) throws IutException {
+        requireOk(reply, "hello");
+        JsonNode impl = reply.path("implementation");
+        String name = text(impl, "name", "hello");
+        String version = text(impl, "version", "hello");
+        List<String> claims = new ArrayList<>();
+        for (JsonNode claim : arrayOrEmpty(impl.path("claims"), "implementation.claims")) {
+            if (!claim.isTextual()) {
+                throw protocol("implementation.claims must be a list of feature ids");
+            }
+            claims.add(claim.asText());
+        }
+        return new IutInfo(name, version, command, claims, limits(impl.path("limits")));
+    }
+
+    private static Map<String, Long> limits(JsonNode limits) throws IutException {
+        Map<String, Long> out = new LinkedHashMap<>();
+        if (limits.isMissingNode() || limits.isNull()) {
+            return out;
+        }
+        if (!limits.isObject()) {
+            throw protocol("implementation.limits must be an object of integers");
+        }
+        for (Map.Entry<String, JsonNode> limit : limits.properties()) {
+            if (!limit.getValue().canConvertToExactIntegral() || !limit.getValue().canConvertToLong()) {
+                throw protocol("implementation.limits." + limit.getKey() + " must be an integer");
+            }
+            out.put(limit.getKey(), limit.getValue().asLong());
+        }
+        return out;
+    }
+
+    static LoadOutcome loadOutcome(JsonNode reply) throws IutException {
+        if (reply.get("ok").asBoolean()) {
+            List<String> blocks = new ArrayList<>();
+            for (JsonNode block : array(reply.path("blocks"), "blocks")) {
+                if (!block.isTextual()) {
+                    throw protocol("blocks must be a list of function block names");
+                }
+                blocks.add(block.asText());
+            }
+            return new LoadOutcome.Loaded(blocks);
+        }
+        JsonNode error = error(reply, "load");
+        if (!"rejected".equals(error.path("kind").asText())) {
+            throw protocol("a failed load must have error kind 'rejected', not '" + error.path("kind").asText() + "'");
+        }
+        return new LoadOutcome.Rejected(message(error), line(error.path("line")));
+    }
+
+    private static OptionalInt line(JsonNode line) throws IutException {
+        if (line.isMissingNode() || line.isNull()) {
+            return OptionalInt.empty();
+        }
+        if (!line.canConvertToExactIntegral() || !line.canConvertToInt() || line.asInt() < 1) {
+            throw protocol("error.line must be a positive integer, not " + line);
+        }
+        return OptionalInt.of(line.asInt());
+    }
+
+    static Map<String, Double> outputs(JsonNode reply) throws IutException {
+        failOnError(reply, "eval");
+        JsonNode outputs = reply.path("outputs");
+        if (!outputs.isObject()) {
+            throw protocol("the reply to 'eval' has no 'outputs' object");
+        }
+        Map<String, Double> values = new LinkedHashMap<>();
+        for (Map.Entry<String, JsonNode> output : outputs.properties()) {
+            if (!output.getValue().isNumber()) {
+                throw protocol("output " + output.getKey() + " is not a number: " + output.getValue());
+            }
+            values.put(output.getKey(), output.getValue().asDouble());
+        }
+        return values;
+    }
+
+    static void plain(JsonNode reply, String op) throws IutException {
+        failOnError(reply, op);
+    }
+
+    static Optional<String> exported(JsonNode reply) throws IutException {
+        if (!reply.get("ok").asBoolean() && "unsupported".equals(error(reply, "export").path("kind").asText())) {
+            return Optional.empty();
+        }
+        failOnError(reply, "export");
+        return Optional.of(text(reply, "fcl", "export"));
+    }
+
+    /** An {@code ok:false} reply of kind {@code error} becomes an evaluation error; other kinds are faults. */
+    private static void failOnError(JsonNode reply, String op) throws IutException {
+        if (reply.get("ok").asBoolean()) {
+            return;
+        }
+        JsonNode error = error(reply, op);
+        String kind = error.path("kind").asText();
+        if (!"error".equals(kind)) {
+            throw protocol("a failed '" + op + "' must have error kind 'error', not '" + kind + "'");
+        }
+        throw new IutException(IutException.Kind.EVAL_ERROR, "the IUT reported an error on '" + op + "': " + message(error));
+    }
+
+    private static void requireOk(JsonNode reply, String op) throws IutException {
+        if (!reply.get("ok").asBoolean()) {
+            throw protocol("the IUT refused '" + op + "': " + message(reply.path("error")));
+        }
+    }
+
+    private static JsonNode error(JsonNode reply, String op) throws IutException {
+        JsonNode error = reply.path("error");
+        if (!error.isObject() || !error.path("kind").isTextual()) {
+            throw protocol("a failed '" + op + "' must carry an error object with a 'kind'");
+        }
+        return error;
+    }
+
+    private static String message(JsonNode error) {
+        JsonNode message = error.path("message");
+        return message.isTextual() ? message.asText() : "(no message)";
+    }
+
+    private static String text(JsonNode node, String field, String op) throws IutException {
+        JsonNode value = node.path(field);
+        if (!value.isTextual()) {
+            throw protocol("the reply to '" + op + "' has no text field '" + field + "'");
+        }
+        return value.asText();
+    }
+
+    private static Iterable<JsonNode> array(JsonNode node, String field) throws IutException {
+        if (!node.isArray()) {
+            throw protocol("'" + field + "' must be a list");
+        }
+        return node;
+    }
+
+    private static Iterable<JsonNode> arrayOrEmpty(JsonNode node, String field) throws IutException {
+        return node.isMissingNode() || node.isNull() ? List.of() : array(node, field);
+    }
+
+    static IutException protocol(String message) {
+        return new IutException(IutException.Kind.PROTOCOL, message);
+    }
+}

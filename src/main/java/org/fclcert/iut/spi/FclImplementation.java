@@ -1,0 +1,37 @@
+package org.fclcert.iut.spi;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A Java FCL implementation. One object serves one certification run; fclcert calls it from one
+ * thread at a time (not necessarily always the same thread).
+ */
+public interface FclImplementation {
+
+    /** The product name shown in reports. */
+    String name();
+
+    /** The product version shown in reports. */
+    String version();
+
+    /**
+     * The feature ids of clause 6 (for example {@code B-COGS}, {@code E-OR-BSUM}, {@code O-MANY-POINTS})
+     * the implementation says it realises. The report sets these claims against the measured results.
+     */
+    default List<String> claims() {
+        return List.of();
+    }
+
+    /** Limits the implementation declares (for example {@code maxPoints}), by name. */
+    default Map<String, Long> limits() {
+        return Map.of();
+    }
+
+    /**
+     * Reads and prepares a program. A program the implementation does not accept must come back as
+     * {@link FclLoadResult#rejected(String, int)} with the line of the first error; throwing is reported
+     * as a crash.
+     */
+    FclLoadResult load(String fcl);
+}

@@ -1,0 +1,124 @@
+package org.fclcert.syntax;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.antlr.v4.runtime.Token;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.SourceLocation;
+
+/**
+ * Collects the reader's diagnostics for one text and, at the end, sorts them into source order and
+ * caps them so that one early mistake cannot bury the user in follow-up messages.
+ */
+final class ReaderDiagnostics {
+    /** Errors reported before the rest are summarised in one FCL-S099 error. */
+    static final int MAX_ERRORS = 25;
+    /** Warnings of one code reported before the rest are summarised in one warning. */
+    static final int MAX_WARNINGS_PER_CODE = 25;
+    /** Errors kept at most; past this many the reader stops (memory stays bounded on any input). */
+    static final int STOP_AFTER_ERRORS = 1_000;
+
+    private final String sourceName;
+    private final List<Diagnostic> all = new ArrayList<>();
+    private final java.util.Set<SourceLocation> errorPlaces = new java.util.TreeSet<>(SourceLocation::compareTo);
+    private final Map<String, Integer> warningCounts = new HashMap<>();
+    private int errorCount;
+    private boolean errors;
+    private boolean endOfTextExplained;
+
+    ReaderDiagnostics(String sourceName) {
+        this.sourceName = sourceName;
+    }
+
+    SourceLocation at(Token token) {
+        return SourceLocation.of(sourceName, Math.max(1, token.getLine()), token.getCharPositionInLine() + 1);
+    }
+
+    SourceLocation at(int line, int column) {
+        return SourceLocation.of(sourceName, line, column);
+    }
+
+    void error(Token at, SyntaxCode code, String message) {
+        error(at(at), code, message);
+    }
+
+    /** Reports an error, unless one is already reported at the same place (one message per place). */
+    void error(SourceLocation at, SyntaxCode code, String message) {
+        errors = true;
+        if (errorCount >= STOP_AFTER_ERRORS) {
+            errorCount++;
+        } else if (errorPlaces.add(at)) {
+            errorCount++;
+            all.add(Diagnostic.error(at, code.code(), message));
+        }
+    }
+
+    /** True once so many errors are known that reading further would only add noise. */
+    boolean tooMany() {
+        return errorCount >= STOP_AFTER_ERRORS;
+    }
+
+    /** Marks that an error already explains why the text ends early (an unterminated comment). */
+    void explainEndOfText() {
+        endOfTextExplained = true;
+    }
+
+    boolean endOfTextExplained() {
+        return endOfTextExplained;
+    }
+
+    void warning(Token at, SyntaxCode code, String message) {
+        int n = warningCounts.merge(code.code(), 1, Integer::sum);
+        if (n <= MAX_WARNINGS_PER_CODE + 1) {   // one more than shown marks where the summary goes
+            all.add(Diagnostic.warning(at(at), code.code(), message));
+        }
+    }
+
+    boolean hasErrors() {
+        return errors;
+    }
+
+    /** The diagnostics in source order, errors capped at {@link #MAX_ERRORS}. */
+    List<Diagnostic> finish() {
+        List<Diagnostic> sorted = new ArrayList<>(all);
+        sorted.sort(Comparator.comparing(Diagnostic::location));
+        List<Diagnostic> kept = new ArrayList<>();
+        Map<String, Integer> warningsPerCode = new HashMap<>();
+        Map<String, Diagnostic> firstDroppedWarning = new HashMap<>();
+        int errorsSeen = 0;
+        Diagnostic firstDroppedError = null;
+        for (Diagnostic d : sorted) {
+            if (d.isError()) {
+                errorsSeen++;
+                if (errorsSeen <= MAX_ERRORS) {
+                    kept.add(d);
+                } else if (firstDroppedError == null) {
+                    firstDroppedError = d;
+                }
+            } else {
+                int n = warningsPerCode.merge(d.code(), 1, Integer::sum);
+                if (n <= MAX_WARNINGS_PER_CODE) {
+                    kept.add(d);
+                } else {
+                    firstDroppedWarning.putIfAbsent(d.code(), d);
+                }
+            }
+        }
+        for (Map.Entry<String, Diagnostic> e : firstDroppedWarning.entrySet()) {
+            int more = warningCounts.get(e.getKey()) - MAX_WARNINGS_PER_CODE;
+            kept.add(Diagnostic.warning(e.getValue().location(), e.getKey(),
+                    more + " more " + e.getKey() + " warning(s) like the ones above are not shown"));
+        }
+        if (firstDroppedError != null) {
+            int more = errorCount - MAX_ERRORS;
+            kept.add(Diagnostic.error(firstDroppedError.location(), SyntaxCode.TOO_MANY_ERRORS.code(),
+                    "too many syntax errors: " + more + " more not reported"
+                            + (tooMany() ? " (reading stopped early)" : "") + "; fix the ones above first"));
+        }
+        kept.sort(Comparator.comparing(Diagnostic::location));
+        return kept;
+    }
+}

@@ -1,0 +1,184 @@
+package org.fclcert.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class CheckCommandTest {
+    static final String VALVE = """
+            FUNCTION_BLOCK Fuzzy_FB
+            VAR_INPUT
+                temp : REAL;
+                pressure : REAL;
+            END_VAR
+            VAR_OUTPUT
+                valve : REAL;
+            END_VAR
+            FUZZIFY temp
+                TERM cold := (3, 1) (27, 0);
+                TERM hot := (3, 0) (27, 1);
+            END_FUZZIFY
+            FUZZIFY pressure
+                TERM low := (55, 1) (95, 0);
+                TERM high := (55, 0) (95, 1);
+            END_FUZZIFY
+            DEFUZZIFY valve
+                TERM drainage := -100;
+                TERM closed := 0;
+                TERM inlet := 100;
+                METHOD : CoGS;
+                DEFAULT := 0;
+            END_DEFUZZIFY
+            RULEBLOCK No1
+                AND : MIN;
+                ACCU : MAX;
+                RULE 1 : IF temp IS cold AND pressure IS low THEN valve IS inlet;
+                RULE 2 : IF temp IS cold AND pressure IS high THEN valve IS closed WITH 0.8;
+                RULE 3 : IF temp IS hot AND pressure IS low THEN valve IS closed;
+                RULE 4 : IF temp IS hot AND pressure IS high THEN valve IS drainage;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /**
+     * The valve with rule 3 concluding an undefined term - error FCL-C002 on line 29 at the
+     * subconclusion: "    RULE 3 : IF temp IS hot AND pressure IS low THEN " is 53 characters, so
+     * 'valve' starts in column 54.
+     */
+    static final String UNDEFINED_TERM = VALVE.replace("low THEN valve IS closed;", "low THEN valve IS shut;");
+
+    /**
+     * The valve with WITH 0 in rule 2 - warning FCL-W004 only, on line 28 at the factor:
+     * "    RULE 2 : IF temp IS cold AND pressure IS high THEN valve IS closed WITH " is 76 characters.
+     */
+    static final String ZERO_WEIGHT = VALVE.replace("WITH 0.8", "WITH 0");
+
+    /** The valve without the ';' after the first input declaration - a syntax error on line 3. */
+    static final String MISSING_SEMICOLON = VALVE.replace("temp : REAL;", "temp : REAL");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aValidProgramHasNoOutputAndExitCodeZero() {
+        Path valve = Cli.write(dir, "valve.fcl", VALVE);
+        Cli r = Cli.run("check", valve.toString());
+        assertEquals(0, r.exitCode(), r.err());
+        assertEquals("", r.out());
+        assertEquals(List.of("fclcert: 1 file checked: 0 errors, 0 warnings"), r.errLines());
+    }
+
+    @Test
+    void anErrorIsOneLocatedLineAndExitCodeOne() {
+        Path bad = Cli.write(dir, "bad.fcl", UNDEFINED_TERM);
+        Cli r = Cli.run("check", bad.toString());
+        assertEquals(1, r.exitCode());
+        assertEquals(1, r.outLines().size(), r.out());
+        assertTrue(r.outLines().get(0).startsWith(bad + ":29:54: error FCL-C002: "), r.out());
+        assertTrue(r.outLines().get(0).contains("'shut'"), r.out());
+        assertEquals(List.of("fclcert: 1 file checked: 1 error, 0 warnings"), r.errLines());
+    }
+
+    @Test
+    void warningsAloneKeepExitCodeZero() {
+        Path file = Cli.write(dir, "zero.fcl", ZERO_WEIGHT);
+        Cli r = Cli.run("check", file.toString());
+        assertEquals(0, r.exitCode(), r.out());
+        assertEquals(1, r.outLines().size(), r.out());
+        assertTrue(r.outLines().get(0).startsWith(file + ":28:77: warning FCL-W004: "), r.out());
+        assertEquals(List.of("fclcert: 1 file checked: 0 errors, 1 warning"), r.errLines());
+    }
+
+    @Test
+    void syntaxErrorsAreLocatedToo() {
+        Path file = Cli.write(dir, "semi.fcl", MISSING_SEMICOLON);
+        Cli r = Cli.run("check", file.toString());
+        assertEquals(1, r.exitCode());
+        assertFalse(r.outLines().isEmpty());
+        assertTrue(r.outLines().get(0).matches(java.util.regex.Pattern.quote(file.toString())
+                + ":[34]:[0-9]+: error FCL-S[0-9]{3}: .+"), r.out());
+    }
+
+    @Test
+    void severalFilesAreCheckedInOrderAndAnyErrorGivesOne() {
+        Path good = Cli.write(dir, "good.fcl", VALVE);
+        Path bad = Cli.write(dir, "bad.fcl", UNDEFINED_TERM);
+        Cli r = Cli.run("check", good.toString(), bad.toString());
+        assertEquals(1, r.exitCode());
+        assertTrue(r.out().startsWith(bad + ":29:54: error FCL-C002: "), r.out());
+        assertEquals(List.of("fclcert: 2 files checked: 1 error, 0 warnings"), r.errLines());
+    }
+
+    @Test
+    void aMissingFileIsExitCodeTwoWithoutStackTrace() {
+        Path good = Cli.write(dir, "good.fcl", VALVE);
+        String missing = dir.resolve("missing.fcl").toString();
+        Cli r = Cli.run("check", missing, good.toString());
+        assertEquals(2, r.exitCode());
+        assertEquals("", r.out());
+        assertEquals(List.of("fclcert: cannot read " + missing + ": no such file",
+                "fclcert: 1 file checked: 0 errors, 0 warnings"), r.errLines());
+    }
+
+    @Test
+    void aDirectoryIsNotAProgram() {
+        Cli r = Cli.run("check", dir.toString());
+        assertEquals(2, r.exitCode());
+        assertEquals("fclcert: cannot read " + dir + ": it is a directory", r.errLines().get(0));
+    }
+
+    @Test
+    void noFileIsAUsageError() {
+        Cli r = Cli.run("check");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().startsWith("Missing required parameter: 'FILE'"), r.err());
+    }
+
+    @Test
+    void anUnknownFormatIsAUsageError() {
+        Cli r = Cli.run("check", "--format", "xml", "x.fcl");
+        assertEquals(2, r.exitCode());
+        assertTrue(r.err().startsWith("Invalid value for option '--format'"), r.err());
+    }
+
+    @Test
+    void jsonIsAnArrayOfDiagnostics() throws Exception {
+        Path good = Cli.write(dir, "good.fcl", VALVE);
+        Path bad = Cli.write(dir, "bad.fcl", UNDEFINED_TERM);
+        Cli r = Cli.run("check", "--format", "json", good.toString(), bad.toString());
+        assertEquals(1, r.exitCode());
+        JsonNode array = new ObjectMapper().readTree(r.out());
+        assertTrue(array.isArray());
+        assertEquals(1, array.size(), r.out());
+        JsonNode d = array.get(0);
+        assertEquals(bad.toString(), d.get("file").asText());
+        assertEquals(29, d.get("line").asInt());
+        assertEquals("error", d.get("severity").asText());
+        assertEquals("FCL-C002", d.get("code").asText());
+        assertEquals(54, d.get("column").asInt());
+        assertTrue(d.get("message").asText().contains("shut"));
+        assertEquals(List.of("file", "line", "column", "severity", "code", "message"),
+                iterableToList(d.fieldNames()));
+    }
+
+    @Test
+    void jsonOfAValidProgramIsAnEmptyArray() throws Exception {
+        Path good = Cli.write(dir, "good.fcl", VALVE);
+        Cli r = Cli.run("check", "--format", "json", good.toString());
+        assertEquals(0, r.exitCode());
+        assertEquals(0, new ObjectMapper().readTree(r.out()).size());
+    }
+
+    private static List<String> iterableToList(java.util.Iterator<String> it) {
+        List<String> out = new java.util.ArrayList<>();
+        it.forEachRemaining(out::add);
+        return out;
+    }
+}
