@@ -188,6 +188,19 @@ class ProcessIutTest {
     }
 
     @Test
+    void anIutThatStopsReadingCannotBlockALargeRequestPastTheTimeout() throws IutException {
+        IutOptions halfSecond = FAST.withTimeout(Duration.ofMillis(500));
+        try (ImplementationUnderTest iut = open(halfSecond, "deaf.py")) {
+            assertEquals("deaf", iut.hello().name());
+            // 4 MB is far more than a pipe buffers: writing it blocks until the process is killed
+            String huge = "(*" + "x".repeat(4_000_000) + "*)\n" + PROGRAM;
+            long start = System.nanoTime();
+            assertEquals(Kind.TIMEOUT, assertThrows(IutException.class, () -> iut.load(huge)).kind());
+            assertTrue((System.nanoTime() - start) / 1_000_000 < 5000);
+        }
+    }
+
+    @Test
     void aSlowStartIsNotCutAtTheRequestTimeout() throws IutException {
         // the per-request timeout is 300 ms, the fake needs 1 s before it reads anything
         try (ImplementationUnderTest iut = open(FAST.withTimeout(Duration.ofMillis(300)), "slow_start.py")) {
