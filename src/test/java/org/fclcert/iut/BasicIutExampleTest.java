@@ -2,6 +2,7 @@ package org.fclcert.iut;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -153,8 +154,7 @@ class BasicIutExampleTest {
     @Test
     void anUnknownInputIsAnEvaluationError() throws IutException {
         iut.load(VALVE);
-        IutException e = org.junit.jupiter.api.Assertions.assertThrows(IutException.class,
-                () -> iut.eval(null, Map.of("humidity", 1.0)));
+        IutException e = assertThrows(IutException.class, () -> iut.eval(null, Map.of("humidity", 1.0)));
         assertEquals(IutException.Kind.EVAL_ERROR, e.kind());
         assertTrue(e.getMessage().contains("humidity"), e.getMessage());
     }
