@@ -1,0 +1,241 @@
+package org.fclcert.cli;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import org.fclcert.corpus.Corpus;
+import org.fclcert.corpus.CorpusException;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ResultsWriter;
+import org.fclcert.harness.RunCase;
+import org.fclcert.harness.RunCases;
+import org.fclcert.harness.RunHeader;
+import org.fclcert.harness.RunHeaders;
+import org.fclcert.harness.Runner;
+import org.fclcert.iut.ImplementationUnderTest;
+import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutInfo;
+import org.fclcert.iut.IutOptions;
+import org.fclcert.iut.Iuts;
+import org.fclcert.model.ConformanceLevel;
+import org.fclcert.model.Feature;
+import org.fclcert.report.FailOn;
+import org.fclcert.report.Report;
+import org.fclcert.report.ReportBuilder;
+import org.fclcert.report.ReportFiles;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert certify}: runs the conformance corpus against an implementation and writes the reports. */
+@Command(name = "certify", mixinStandardHelpOptions = true,
+        description = {"Run the conformance corpus against an implementation under test and write the compliance "
+                + "statement (report.json, report.md, report.html, junit.xml) and results.jsonl.",
+            "Exit 0: the run completed and --fail-on holds; 1: it does not hold; 2: the run could not be done."})
+final class CertifyCommand implements Callable<Integer> {
+    static final int OK = ExitCodes.OK;
+    static final int FAILED = ExitCodes.ERRORS;
+    static final int CANNOT_RUN = ExitCodes.USAGE;
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
+            description = "reference | java:CLASS | process:COMMAND (default: ${DEFAULT-VALUE})")
+    String iut;
+
+    @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found (jars or directories, separated as the platform's class path)")
+    String classpath;
+
+    @Option(names = "--corpus", paramLabel = "DIR", defaultValue = "conformance",
+            description = "Corpus directory (default: ${DEFAULT-VALUE})")
+    Path corpus;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "Output directory (default: reports/<iut-name>)")
+    Path out;
+
+    @Option(names = "--level", paramLabel = "LEVEL", split = ",",
+            description = "Only cases of these levels: basic, extension, open")
+    List<String> levels = new ArrayList<>();
+
+    @Option(names = "--feature", paramLabel = "ID", arity = "1..*",
+            description = "Only cases that are evidence for these feature ids (e.g. E-ACCU-NSUM)")
+    List<String> features = new ArrayList<>();
+
+    @Option(names = "--case", paramLabel = "GLOB", arity = "1..*",
+            description = "Only cases whose id matches one of these globs (e.g. 'B-COGS-*')")
+    List<String> cases = new ArrayList<>();
+
+    @Option(names = "--timeout", paramLabel = "DURATION", defaultValue = "5s",
+            description = "Per-request timeout for the implementation, e.g. 5s, 500ms (default: ${DEFAULT-VALUE})")
+    String timeout;
+
+    @Option(names = "--fail-on", paramLabel = "WHAT", defaultValue = "none",
+            description = "none | basic | claimed | any: exit 1 when this does not hold (default: ${DEFAULT-VALUE})")
+    String failOn;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        try {
+            return certify(spec.commandLine().getOut(), err);
+        } catch (CannotRun e) {
+            err.println("fclcert certify: " + e.getMessage());
+            err.flush();
+            return CANNOT_RUN;
+        }
+    }
+
+    private int certify(PrintWriter stdout, PrintWriter err) throws CannotRun {
+        FailOn condition = parseFailOn();
+        CaseSelection selection = new CaseSelection(parseLevels(), parseFeatures(), cases);
+        Duration requestTimeout = Durations.parse(timeout).orElseThrow(() -> new CannotRun(
+                "--timeout: '" + timeout + "' is not a duration (write e.g. 5s, 500ms or 2m)"));
+        Corpus loaded = loadCorpus();
+        List<RunCase> all = RunCases.from(loaded.cases());
+        List<RunCase> selected = selection.apply(all);
+        if (selected.isEmpty()) {
+            throw new CannotRun("no case of " + corpus + " matches the selection");
+        }
+        try (ImplementationUnderTest impl = open(requestTimeout)) {
+            IutInfo info = hello(impl);
+            RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
+                    List.of(levels, features, cases));
+            Path dir = out != null ? out : Path.of("reports", OutDirs.forName(info.name()));
+            Report report = run(impl, header, selected, dir, err);
+            print(stdout, report, dir);
+            if (!condition.holds(report)) {
+                err.println("fclcert certify: --fail-on " + failOn + ": " + condition.explain(report));
+                err.flush();
+                return FAILED;
+            }
+            return OK;
+        }
+    }
+
+    private Report run(ImplementationUnderTest impl, RunHeader header, List<RunCase> selected, Path dir,
+            PrintWriter err) throws CannotRun {
+        Path resultsFile = dir.resolve("results.jsonl");
+        try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
+            ProgressLine progress = new ProgressLine(err, System.console() != null);
+            List<CaseResult> done = new Runner(progress).run(impl, header, selected, results);
+            progress.finish();
+            Report report = ReportBuilder.build(header, done, List.of(), List.of(), Instant.now());
+            ReportFiles.writeAll(report, dir);
+            return report;
+        } catch (IOException e) {
+            throw new CannotRun("cannot write the results or reports in " + dir + ": " + e.getMessage());
+        }
+    }
+
+    private static void print(PrintWriter out, Report r, Path dir) {
+        Report.Summary s = r.summary();
+        out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
+                + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
+        out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
+                + r.basicLevel().reason() + ")");
+        List<String> realised = r.features().stream()
+                .filter(f -> f.table() == 9 && f.status() == org.fclcert.report.FeatureStatus.REALISED)
+                .map(Report.FeatureRow::id).toList();
+        long table9 = r.features().stream().filter(f -> f.table() == 9).count();
+        out.println("Standard Extensions realised (Table 9): " + realised.size() + " of " + table9
+                + (realised.isEmpty() ? "" : ": " + String.join(", ", realised)));
+        if (!r.claims().notRealised().isEmpty()) {
+            out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
+        }
+        out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
+                + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", results.jsonl");
+        out.flush();
+    }
+
+    private FailOn parseFailOn() throws CannotRun {
+        try {
+            return FailOn.byWord(failOn);
+        } catch (IllegalArgumentException e) {
+            throw new CannotRun("--fail-on: '" + failOn + "' is not one of none, basic, claimed, any");
+        }
+    }
+
+    private Set<ConformanceLevel> parseLevels() throws CannotRun {
+        Set<ConformanceLevel> set = EnumSet.noneOf(ConformanceLevel.class);
+        for (String level : levels) {
+            try {
+                set.add(ConformanceLevel.byWord(level.trim()));
+            } catch (IllegalArgumentException e) {
+                throw new CannotRun("--level: '" + level + "' is not one of basic, extension, open");
+            }
+        }
+        return set;
+    }
+
+    private Set<String> parseFeatures() throws CannotRun {
+        for (String id : features) {
+            if (Feature.byId(id.toUpperCase(Locale.ROOT)).isEmpty()) {
+                throw new CannotRun("--feature: '" + id + "' is not a feature id (known ids: "
+                        + Arrays.stream(Feature.values()).map(Feature::id).reduce((a, b) -> a + " " + b).orElse("")
+                        + ")");
+            }
+        }
+        return Set.copyOf(features);
+    }
+
+    private Corpus loadCorpus() throws CannotRun {
+        if (!Files.isDirectory(corpus)) {
+            throw new CannotRun("corpus directory " + corpus + " does not exist (use --corpus DIR)");
+        }
+        try {
+            return Corpus.load(corpus);
+        } catch (CorpusException e) {
+            throw new CannotRun("the corpus cannot be used: " + e.getMessage());
+        }
+    }
+
+    private ImplementationUnderTest open(Duration requestTimeout) throws CannotRun {
+        try {
+            IutOptions options = IutOptions.defaults().withTimeout(requestTimeout);
+            if (classpath != null) {
+                options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
+                        .filter(s -> !s.isBlank()).map(Path::of).toList());
+            }
+            return Iuts.open(iut, options);
+        } catch (IutException e) {
+            throw new CannotRun("cannot start the implementation '" + iut + "': " + e.getMessage()
+                    + tail(e.stderrTail()));
+        }
+    }
+
+    private IutInfo hello(ImplementationUnderTest impl) throws CannotRun {
+        try {
+            return impl.hello();
+        } catch (IutException e) {
+            throw new CannotRun("the implementation '" + iut + "' did not answer hello: " + e.getMessage()
+                    + tail(e.stderrTail()));
+        }
+    }
+
+    private static String tail(String stderrTail) {
+        return stderrTail == null || stderrTail.isBlank() ? "" : "\n--- its stderr ---\n" + stderrTail.strip();
+    }
+
+    /** The run cannot be done; the message says why. */
+    static final class CannotRun extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        CannotRun(String message) {
+            super(message);
+        }
+    }
+}

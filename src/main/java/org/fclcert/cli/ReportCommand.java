@@ -1,0 +1,63 @@
+package org.fclcert.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.concurrent.Callable;
+import org.fclcert.harness.ResultsFile;
+import org.fclcert.report.Report;
+import org.fclcert.report.ReportBuilder;
+import org.fclcert.report.ReportFiles;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert report}: rebuilds every report from a (possibly partial) {@code results.jsonl}. */
+@Command(name = "report", mixinStandardHelpOptions = true,
+        description = {"Rebuild report.json, report.md, report.html and junit.xml from a results.jsonl "
+                + "written by 'fclcert certify' (also one cut short: cases not run are reported as skipped).",
+            "Exit 0 when the reports were written, 2 when the results file cannot be used."})
+final class ReportCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--from", paramLabel = "FILE", required = true, description = "The results.jsonl to read")
+    Path from;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "Output directory (default: the results file's)")
+    Path out;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        if (!Files.isRegularFile(from)) {
+            err.println("fclcert report: " + from + ": no such file");
+            err.flush();
+            return CertifyCommand.CANNOT_RUN;
+        }
+        Path dir = out != null ? out : from.toAbsolutePath().getParent();
+        try {
+            ResultsFile results = ResultsFile.read(from);
+            results.problems().forEach(p -> err.println("warning: " + p));
+            Report report = ReportBuilder.build(results, Instant.now());
+            ReportFiles.writeAll(report, dir);
+            PrintWriter o = spec.commandLine().getOut();
+            o.println(report.summary().cases() + " cases (" + report.summary().passed() + " passed, "
+                    + report.summary().skipped() + " skipped); Basic Level: "
+                    + (report.basicLevel().conformant() ? "conformant" : "not conformant"));
+            o.println("Reports written to " + dir);
+            o.flush();
+            err.flush();
+            return CertifyCommand.OK;
+        } catch (ResultsFile.InvalidResultsException e) {
+            err.println("fclcert report: " + e.getMessage());
+        } catch (IOException e) {
+            err.println("fclcert report: " + e.getMessage());
+        }
+        err.flush();
+        return CertifyCommand.CANNOT_RUN;
+    }
+}

@@ -1,0 +1,174 @@
+package org.fclcert.harness;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.fclcert.corpus.ExpectedError;
+import org.fclcert.corpus.Vector;
+import org.fclcert.iut.ImplementationUnderTest;
+import org.fclcert.iut.IutException;
+import org.fclcert.iut.LoadOutcome;
+
+/**
+ * Runs one case against an implementation: load, then either judge the rejection (negative case) or run the
+ * steps in order on one instance, rerun them in reverse order after {@code reset()} (stateless cases), and
+ * check the export.
+ */
+final class CaseRunner {
+    /** The result, and whether the implementation has given up for good (restart budget exhausted). */
+    record Ran(CaseResult result, boolean gaveUp) {
+    }
+
+    private final ExportCheck exportCheck;
+
+    CaseRunner(ExportCheck exportCheck) {
+        this.exportCheck = exportCheck;
+    }
+
+    Ran run(ImplementationUnderTest iut, RunCase c) {
+        long start = System.nanoTime();
+        ResultBuilder r = new ResultBuilder(c);
+        boolean gaveUp = false;
+        try {
+            LoadOutcome outcome = iut.load(c.program());
+            if (c.expectReject()) {
+                judgeRejection(c, outcome, r);
+            } else {
+                runPositive(iut, c, outcome, r);
+            }
+        } catch (IutException e) {
+            // a load that ends in anything but a clean Loaded/Rejected is a breakdown, never a verdict
+            r.errored("load: the implementation " + IutFaults.describe(e), IutFaults.errorText(e));
+            gaveUp = e.kind() == IutException.Kind.GAVE_UP;
+        } catch (StepBreakdown b) {
+            gaveUp = b.gaveUp;
+        }
+        return new Ran(r.build((System.nanoTime() - start) / 1_000_000), gaveUp);
+    }
+
+    private static void judgeRejection(RunCase c, LoadOutcome outcome, ResultBuilder r) {
+        ExpectedError want = c.expectedError().orElseThrow();
+        String expected = "reject: " + want.code() + " at line " + want.line();
+        if (outcome instanceof LoadOutcome.Rejected rejected) {
+            String where = rejected.line().isPresent() ? " at line " + rejected.line().getAsInt() : "";
+            r.passed("rejected" + where + ": " + rejected.message())
+                    .outcome(expected, "rejected" + where + ": " + rejected.message());
+            if (rejected.line().isEmpty()) {
+                r.note("the implementation gave no line for its rejection; the error is at line " + want.line());
+            } else if (rejected.line().getAsInt() != want.line()) {
+                r.note("the implementation reports line " + rejected.line().getAsInt() + "; the error ("
+                        + want.code() + ") is at line " + want.line());
+            }
+        } else {
+            r.failed("accepted a program the standard rejects: " + want.code() + " at line " + want.line())
+                    .outcome(expected, "accepted");
+        }
+    }
+
+    private void runPositive(ImplementationUnderTest iut, RunCase c, LoadOutcome outcome, ResultBuilder r)
+            throws StepBreakdown {
+        if (outcome instanceof LoadOutcome.Rejected rejected) {
+            String where = rejected.line().isPresent() ? " at line " + rejected.line().getAsInt() : "";
+            r.failed("rejected a program the standard accepts" + where + ": " + rejected.message())
+                    .outcome("load and evaluate", "rejected" + where + ": " + rejected.message());
+            return;
+        }
+        List<Map<String, Double>> forward = runForward(iut, c, r);
+        if (r.status() == CaseStatus.PASSED && !c.stateful()) {
+            checkNoStateLeak(iut, c, forward, r);
+        }
+        checkExport(iut, c, r);
+    }
+
+    private static List<Map<String, Double>> runForward(ImplementationUnderTest iut, RunCase c, ResultBuilder r)
+            throws StepBreakdown {
+        List<Map<String, Double>> actuals = new ArrayList<>();
+        int wrong = 0;
+        for (int i = 0; i < c.vectors().size(); i++) {
+            Vector v = c.vectors().get(i);
+            Map<String, Double> got = evaluate(iut, c, v, i + 1, r);
+            actuals.add(got);
+            Optional<String> problem = StepComparison.compare(c, v.out(), got, r);
+            if (problem.isPresent() && wrong++ == 0) {
+                r.failed("step " + (i + 1) + " of " + c.vectors().size() + ": " + problem.get())
+                        .at(i + 1, v.in()).outcome(v.out(), got);
+            }
+        }
+        if (wrong > 1) {
+            r.note(wrong + " of " + c.vectors().size() + " steps gave a wrong result");
+        }
+        if (r.status() == CaseStatus.PASSED) {
+            r.passed(c.vectors().size() + " step(s) within tolerance");
+        }
+        return actuals;
+    }
+
+    private static void checkNoStateLeak(ImplementationUnderTest iut, RunCase c, List<Map<String, Double>> forward,
+            ResultBuilder r) throws StepBreakdown {
+        try {
+            iut.reset();
+        } catch (IutException e) {
+            breakdown(r, e, "reset");
+        }
+        for (int i = c.vectors().size() - 1; i >= 0; i--) {
+            Vector v = c.vectors().get(i);
+            Map<String, Double> again = evaluate(iut, c, v, i + 1, r);
+            Optional<String> leak = StepComparison.difference(v.out().keySet(), forward.get(i), again);
+            if (leak.isPresent()) {
+                r.failed("state leaks between evaluations: after reset() and with the steps in reverse order, step "
+                        + (i + 1) + " gives " + leak.get()).at(i + 1, v.in()).outcome(forward.get(i), again);
+                return;
+            }
+        }
+    }
+
+    private void checkExport(ImplementationUnderTest iut, RunCase c, ResultBuilder r) {
+        try {
+            Optional<String> text = iut.export();
+            if (text.isEmpty()) {
+                r.export(ExportStatus.UNSUPPORTED, "the implementation does not export FCL");
+            } else {
+                ExportCheck.Verdict v = exportCheck.check(text.get(), c);
+                r.export(v.status(), v.message());
+            }
+        } catch (IutException e) {
+            r.export(ExportStatus.FAILED, "export: the implementation " + IutFaults.describe(e));
+        }
+    }
+
+    private static Map<String, Double> evaluate(ImplementationUnderTest iut, RunCase c, Vector v, int step,
+            ResultBuilder r) throws StepBreakdown {
+        try {
+            Map<String, Double> got = iut.eval(c.block().orElse(null), v.in());
+            return got == null ? Map.of() : new LinkedHashMap<>(got);
+        } catch (IutException e) {
+            r.at(step, v.in());
+            breakdown(r, e, "step " + step + " of " + c.vectors().size());
+            throw new AssertionError("unreachable");
+        }
+    }
+
+    /** Records an exception at a step: an evaluation error is a failure, anything else a breakdown. */
+    private static void breakdown(ResultBuilder r, IutException e, String where) throws StepBreakdown {
+        if (e.kind() == IutException.Kind.EVAL_ERROR) {
+            r.failed(where + ": the implementation reported an evaluation error: " + e.getMessage())
+                    .error(IutFaults.errorText(e));
+        } else {
+            r.errored(where + ": the implementation " + IutFaults.describe(e), IutFaults.errorText(e));
+        }
+        throw new StepBreakdown(e.kind() == IutException.Kind.GAVE_UP);
+    }
+
+    /** Ends a case early once the implementation has answered a step with an error. */
+    private static final class StepBreakdown extends Exception {
+        private static final long serialVersionUID = 1L;
+        private final boolean gaveUp;
+
+        StepBreakdown(boolean gaveUp) {
+            super(null, null, false, false);
+            this.gaveUp = gaveUp;
+        }
+    }
+}

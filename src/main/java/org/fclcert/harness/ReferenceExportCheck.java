@@ -1,0 +1,59 @@
+package org.fclcert.harness;
+
+import java.util.Map;
+import org.fclcert.check.Analysis;
+import org.fclcert.corpus.Vector;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.LoadedProgram;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.StrictReader;
+
+/**
+ * The export check done with fclcert's own strict reader, checks and reference evaluator: the exported text
+ * is compared with the case's expected outputs (which the reference evaluator reproduces for the original
+ * program, as corpus lint guarantees), step by step on one instance, within the case's tolerance.
+ */
+public final class ReferenceExportCheck implements ExportCheck {
+
+    @Override
+    public Verdict check(String exportedFcl, RunCase c) {
+        Analysis analysis = Analysis.analyze(new StrictReader(), c.id() + " (exported)", exportedFcl);
+        if (analysis.program().isEmpty()) {
+            String first = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
+                    .map(Diagnostic::toString).orElse("no program");
+            return failed("the exported FCL does not read back: " + first);
+        }
+        try {
+            return evaluateLikeOriginal(analysis.program().get(), c);
+        } catch (EvaluationException e) {
+            return failed("the exported FCL cannot be evaluated: " + e.getMessage());
+        }
+    }
+
+    private static Verdict evaluateLikeOriginal(Program program, RunCase c) throws EvaluationException {
+        LoadedProgram loaded = Evaluator.load(program);
+        FunctionBlockInstance fb = c.block().isPresent() ? loaded.newInstance(c.block().get()) : loaded.newInstance();
+        for (int i = 0; i < c.vectors().size(); i++) {
+            Vector v = c.vectors().get(i);
+            for (Map.Entry<String, Double> in : v.in().entrySet()) {
+                fb.set(in.getKey(), in.getValue());
+            }
+            fb.evaluate();
+            for (Map.Entry<String, Double> out : v.out().entrySet()) {
+                double got = fb.get(out.getKey());
+                if (!c.tolerance().accepts(out.getKey(), out.getValue(), got)) {
+                    return failed("the exported FCL evaluates differently: step " + (i + 1) + ": " + out.getKey()
+                            + " = " + got + " where " + out.getValue() + " is expected");
+                }
+            }
+        }
+        return new Verdict(ExportStatus.PASSED, "reads back strictly and evaluates like the original");
+    }
+
+    private static Verdict failed(String why) {
+        return new Verdict(ExportStatus.FAILED, why);
+    }
+}

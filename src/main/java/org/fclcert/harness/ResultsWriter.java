@@ -1,0 +1,53 @@
+package org.fclcert.harness;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.BufferedWriter;
+import java.io.Closeable;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * Writes {@code results.jsonl}: a {@code "type":"run"} header line, then one {@code "type":"case"} line per
+ * finished case, each flushed at once so that a killed run leaves every finished case on disk.
+ */
+public final class ResultsWriter implements ResultSink, Closeable {
+    private final BufferedWriter out;
+
+    private ResultsWriter(BufferedWriter out) {
+        this.out = out;
+    }
+
+    public static ResultsWriter create(Path file) throws IOException {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        return new ResultsWriter(Files.newBufferedWriter(file, StandardCharsets.UTF_8));
+    }
+
+    @Override
+    public void header(RunHeader header) throws IOException {
+        write("run", header);
+    }
+
+    @Override
+    public void accept(CaseResult result) throws IOException {
+        write("case", result);
+    }
+
+    private void write(String type, Object value) throws IOException {
+        ObjectNode line = Json.mapper().createObjectNode();
+        line.put("type", type);
+        line.setAll((ObjectNode) Json.mapper().valueToTree(value));
+        out.write(Json.mapper().writeValueAsString(line));
+        out.write('\n');
+        out.flush();
+    }
+
+    @Override
+    public void close() throws IOException {
+        out.close();
+    }
+}

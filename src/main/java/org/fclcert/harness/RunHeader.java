@@ -1,0 +1,50 @@
+package org.fclcert.harness;
+
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The first line of {@code results.jsonl}: everything a report needs besides the case results — which
+ * implementation, which toolkit, which corpus, which selection.
+ */
+public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt) {
+
+    /**
+     * The implementation as it introduced itself, and the {@code --iut} spec (with {@code --classpath}, if
+     * one was given) that reaches it again.
+     */
+    public record Iut(String name, String version, String command, String spec, String classpath,
+            List<String> claims, Map<String, Long> declaredLimits) {
+        public Iut {
+            claims = claims == null ? List.of() : List.copyOf(claims);
+            declaredLimits = declaredLimits == null ? Map.of() : Map.copyOf(declaredLimits);
+        }
+    }
+
+    public record Toolkit(String version) {
+    }
+
+    /**
+     * The corpus: its directory as given, the number of cases in it, the sha256 over the sorted case
+     * files' bytes, and how many Basic Level cases (not flagged interpretation) it holds — the Basic
+     * verdict needs them all.
+     */
+    public record CorpusInfo(String dir, int cases, String sha256, int basicCases) {
+    }
+
+    /** The filters of the run and the cases they selected, in run order. */
+    public record Selection(List<String> levels, List<String> features, List<String> cases,
+            List<PlannedCase> planned) {
+        public Selection {
+            levels = List.copyOf(levels);
+            features = List.copyOf(features);
+            cases = List.copyOf(cases);
+            planned = List.copyOf(planned);
+        }
+
+        /** True when no filter narrowed the corpus. */
+        public boolean whole() {
+            return levels.isEmpty() && features.isEmpty() && cases.isEmpty();
+        }
+    }
+}

@@ -1,0 +1,33 @@
+package org.fclcert.harness;
+
+import java.time.Instant;
+import java.util.List;
+import org.fclcert.iut.IutInfo;
+import org.fclcert.model.ConformanceLevel;
+import org.fclcert.model.Toolkit;
+
+/** Builds the header of a run from what the implementation said and what was selected. */
+public final class RunHeaders {
+    private RunHeaders() {
+    }
+
+    /**
+     * @param spec      the {@code --iut} spec that reaches the implementation again
+     * @param classpath the {@code --classpath} given, or null
+     * @param all       every case of the corpus (the Basic verdict needs to know how many Basic cases it has)
+     * @param selected  the cases that will run, in order
+     * @param filters   the filters as given: levels, features, case globs
+     */
+    public static RunHeader of(IutInfo info, String spec, String classpath, String corpusDir, String sha256,
+            List<RunCase> all, List<RunCase> selected, List<List<String>> filters) {
+        int basic = (int) all.stream().filter(c -> c.level() == ConformanceLevel.BASIC && !c.interpretation()).count();
+        return new RunHeader(
+                new RunHeader.Iut(info.name(), info.version(), info.command(), spec, classpath, info.claims(),
+                        info.declaredLimits()),
+                new RunHeader.Toolkit(Toolkit.version()),
+                new RunHeader.CorpusInfo(corpusDir, all.size(), sha256, basic),
+                new RunHeader.Selection(filters.get(0), filters.get(1), filters.get(2),
+                        selected.stream().map(RunCase::plan).toList()),
+                Instant.now().toString());
+    }
+}

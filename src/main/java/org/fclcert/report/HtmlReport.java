@@ -1,0 +1,231 @@
+package org.fclcert.report;
+
+import java.util.List;
+import java.util.Map;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+
+/**
+ * {@code report.html}: one self-contained page (inline style and script, nothing fetched) with the verdict,
+ * the three tables in colour, and every case with filters by status and level; cases that did not pass open
+ * to show expected against actual, the implementation's error and the program text.
+ */
+public final class HtmlReport {
+    private final Report r;
+    private final StringBuilder out = new StringBuilder(64 * 1024);
+
+    private HtmlReport(Report report) {
+        this.r = report;
+    }
+
+    public static String render(Report report) {
+        return new HtmlReport(report).page();
+    }
+
+    private static final String STYLE = """
+            body{font:15px/1.5 system-ui,-apple-system,'Segoe UI',sans-serif;margin:0;color:#1d2327;background:#f6f7f9}
+            main{max-width:1100px;margin:0 auto;padding:24px}
+            h1{font-size:1.6em;margin:0 0 4px}h2{margin-top:36px;border-bottom:1px solid #d0d5db;padding-bottom:4px}
+            .meta{color:#555;font-size:.9em}.meta code{background:#eceff3;padding:1px 4px;border-radius:3px}
+            .verdict{margin:18px 0;padding:14px 18px;border-radius:8px;font-size:1.15em;font-weight:600}
+            .verdict.ok{background:#e3f5e6;border:1px solid #7cc68a}.verdict.no{background:#fdeaea;border:1px solid #e39b9b}
+            .counts span{display:inline-block;margin-right:14px}
+            table{border-collapse:collapse;width:100%;background:#fff;margin:8px 0 16px}
+            th,td{border:1px solid #dde1e6;padding:6px 9px;text-align:left;vertical-align:top}
+            th{background:#eef1f5;font-weight:600}
+            .st{font-weight:600;white-space:nowrap;border-radius:4px;padding:1px 7px}
+            .realised,.passed{background:#dff3e3;color:#185c26}.partial{background:#fff1cc;color:#6d5200}
+            .not-realised,.failed{background:#fadddd;color:#8a1c1c}.errored{background:#f3dcf5;color:#6a1b73}
+            .not-tested,.skipped,.unsupported,.not-run{background:#eceff3;color:#555}
+            .filters{background:#fff;border:1px solid #dde1e6;border-radius:6px;padding:10px 12px;margin:10px 0}
+            .filters label{margin-right:14px;white-space:nowrap}
+            details{background:#fff;border:1px solid #dde1e6;border-radius:6px;margin:6px 0;padding:6px 10px}
+            details[open]{box-shadow:0 1px 4px rgba(0,0,0,.08)}summary{cursor:pointer}
+            pre{background:#f3f5f8;padding:8px 10px;overflow:auto;font-size:.85em;border-radius:4px}
+            .cmd{font-family:ui-monospace,monospace;font-size:.85em;background:#1d2327;color:#e8eaed;padding:6px 9px;border-radius:4px;display:block;overflow:auto}
+            .small{font-size:.85em;color:#555}.hidden{display:none}
+            """;
+
+    private static final String SCRIPT = """
+            function applyFilters(){
+              var st={},lv={};
+              document.querySelectorAll('input[data-status]').forEach(function(i){st[i.dataset.status]=i.checked;});
+              document.querySelectorAll('input[data-level]').forEach(function(i){lv[i.dataset.level]=i.checked;});
+              var q=document.getElementById('q').value.toLowerCase(),shown=0;
+              document.querySelectorAll('.case').forEach(function(c){
+                var ok=st[c.dataset.status]&&lv[c.dataset.level]&&(q===''||c.dataset.id.toLowerCase().indexOf(q)>=0);
+                c.classList.toggle('hidden',!ok);if(ok)shown++;});
+              document.getElementById('shown').textContent=shown;
+            }
+            document.querySelectorAll('.filters input').forEach(function(i){i.addEventListener('input',applyFilters);});
+            applyFilters();
+            """;
+
+    private String page() {
+        out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">")
+                .append("<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\">")
+                .append("<title>FCL compliance: ").append(Texts.html(r.iut().name())).append("</title>")
+                .append("<style>").append(STYLE).append("</style></head><body><main>\n");
+        header();
+        table(8, "Table 8: Basic Level language elements (mandatory)");
+        table(9, "Table 9: Extension Level, Standard Extensions");
+        table(10, "Table 10: Open Level features");
+        claimsAndInterpretation();
+        cases();
+        out.append("</main><script>").append(SCRIPT).append("</script></body></html>\n");
+        return out.toString();
+    }
+
+    private void header() {
+        out.append("<h1>FCL compliance statement: ").append(Texts.html(r.iut().name() + " " + r.iut().version()))
+                .append("</h1>\n<p class=\"meta\">IEC 61131-7 clause 6.1, measured by fclcert ")
+                .append(Texts.html(r.toolkit().version())).append(" on ").append(Texts.html(r.generatedAt()))
+                .append("<br>Implementation <code>").append(Texts.html(r.iut().spec())).append("</code>")
+                .append(" · corpus <code>").append(Texts.html(r.corpus().dir())).append("</code>, ")
+                .append(r.corpus().cases()).append(" cases, sha256 <code>").append(Texts.html(r.corpus().sha256()))
+                .append("</code></p>\n");
+        boolean ok = r.basicLevel().conformant();
+        out.append("<div class=\"verdict ").append(ok ? "ok" : "no").append("\">Basic Level: ")
+                .append(ok ? "conformant" : "not conformant").append("<div class=\"small\">")
+                .append(Texts.html(r.basicLevel().reason())).append("</div></div>\n");
+        Report.Summary s = r.summary();
+        out.append("<p class=\"counts\"><span><b>").append(s.cases()).append("</b> cases</span>")
+                .append(count("passed", s.passed())).append(count("failed", s.failed()))
+                .append(count("errored", s.errored())).append(count("skipped", s.skipped())).append("</p>\n");
+        if (!r.run().complete()) {
+            out.append("<p><b>Incomplete run:</b> some selected cases were not run (shown as skipped).</p>\n");
+        }
+        if (!r.run().selection().whole()) {
+            out.append("<p><b>Partial selection:</b> verdicts cover only the cases run.</p>\n");
+        }
+    }
+
+    private static String count(String status, int n) {
+        return "<span><span class=\"st " + status + "\">" + n + " " + status + "</span></span>";
+    }
+
+    private void table(int table, String title) {
+        out.append("<h2>").append(Texts.html(title)).append("</h2>\n");
+        List<Report.FeatureRow> rows = r.features().stream().filter(f -> f.table() == table).toList();
+        if (table == 9) {
+            List<String> realised = rows.stream().filter(f -> f.status() == FeatureStatus.REALISED)
+                    .map(Report.FeatureRow::id).toList();
+            out.append("<p>Standard Extensions realised: ")
+                    .append(realised.isEmpty() ? "none" : Texts.html(String.join(", ", realised))).append("</p>\n");
+        }
+        out.append("<table><tr><th>Language element</th><th>Feature</th><th>Verdict</th><th>Passed</th>")
+                .append("<th>Not passed</th></tr>\n");
+        for (Report.FeatureRow f : rows) {
+            out.append("<tr><td>").append(Texts.html(f.element())).append("</td><td><b>").append(f.id())
+                    .append("</b> ").append(Texts.html(f.description())).append("</td><td><span class=\"st ")
+                    .append(f.status().word()).append("\">").append(f.status().label()).append("</span></td><td>")
+                    .append(f.passed()).append(" / ").append(f.cases().size()).append("</td><td>")
+                    .append(links(f.notPassed())).append("</td></tr>\n");
+        }
+        out.append("</table>\n");
+    }
+
+    private static String links(List<String> ids) {
+        StringBuilder b = new StringBuilder();
+        ids.forEach(id -> b.append(b.length() == 0 ? "" : ", ").append("<a href=\"#case-").append(Texts.html(id))
+                .append("\">").append(Texts.html(id)).append("</a>"));
+        return b.toString();
+    }
+
+    private void claimsAndInterpretation() {
+        Report.Claims c = r.claims();
+        out.append("<h2>Claims</h2>\n<p>");
+        if (c.claimed().isEmpty()) {
+            out.append("The implementation claims no feature.");
+        } else {
+            out.append("Claimed: ").append(Texts.html(String.join(", ", c.claimed()))).append("<br>Confirmed: ")
+                    .append(Texts.html(String.join(", ", c.confirmed()))).append("<br><b>Claimed but not realised:</b> ")
+                    .append(c.notRealised().isEmpty() ? "none" : Texts.html(String.join(", ", c.notRealised())));
+            if (!c.unknown().isEmpty()) {
+                out.append("<br>Unknown ids claimed: ").append(Texts.html(String.join(", ", c.unknown())));
+            }
+        }
+        out.append("</p>\n<h2>Cases that depend on an interpretation</h2>\n");
+        if (r.interpretation().isEmpty()) {
+            out.append("<p>None in this run.</p>\n");
+            return;
+        }
+        out.append("<p class=\"small\">Reported apart; counted against no verdict.</p><table><tr><th>Case</th>")
+                .append("<th>Point</th><th>Status</th><th>Message</th></tr>\n");
+        r.interpretation().forEach(i -> out.append("<tr><td>").append(links(List.of(i.id()))).append("</td><td>")
+                .append(Texts.html(i.flag())).append("</td><td><span class=\"st ").append(i.status()).append("\">")
+                .append(i.status()).append("</span></td><td>").append(Texts.html(i.message())).append("</td></tr>\n"));
+        out.append("</table>\n");
+    }
+
+    private void cases() {
+        out.append("<h2>Cases</h2>\n<div class=\"filters\">Status: ");
+        for (CaseStatus s : CaseStatus.values()) {
+            boolean on = s != CaseStatus.PASSED || r.summary().passed() == r.summary().cases();
+            out.append("<label><input type=\"checkbox\" data-status=\"").append(s.word()).append('"')
+                    .append(on ? " checked" : "").append("> ").append(s.word()).append("</label>");
+        }
+        out.append(" &nbsp; Level: ");
+        for (String level : List.of("basic", "extension", "open")) {
+            out.append("<label><input type=\"checkbox\" data-level=\"").append(level).append("\" checked> ")
+                    .append(level).append("</label>");
+        }
+        out.append(" &nbsp; <label>Id: <input id=\"q\" type=\"search\" placeholder=\"e.g. E-COG\"></label>")
+                .append(" <span class=\"small\"><span id=\"shown\"></span> shown</span></div>\n");
+        r.cases().forEach(this::caseBlock);
+    }
+
+    private void caseBlock(CaseResult c) {
+        out.append("<details class=\"case\" id=\"case-").append(Texts.html(c.id())).append("\" data-id=\"")
+                .append(Texts.html(c.id())).append("\" data-status=\"").append(c.status().word())
+                .append("\" data-level=\"").append(Texts.html(c.level())).append("\"><summary><span class=\"st ")
+                .append(c.status().word()).append("\">").append(c.status().word()).append("</span> <b>")
+                .append(Texts.html(c.id())).append("</b> ").append(Texts.html(c.title()))
+                .append(" <span class=\"small\">").append(Texts.html(c.level())).append(" · ")
+                .append(Texts.html(String.join(", ", c.tests()))).append("</span></summary>\n<p>")
+                .append(Texts.html(c.message())).append("</p>\n");
+        comparison(c);
+        c.notes().forEach(n -> out.append("<p class=\"small\">Note: ").append(Texts.html(n)).append("</p>\n"));
+        out.append("<p class=\"small\">Tolerance: ").append(Texts.html(c.tolerance())).append(" · max measured error: ")
+                .append(c.maxError() == null ? "–" : c.maxError().toString()).append(" · export: <span class=\"st ")
+                .append(c.exportStatus().word()).append("\">").append(c.exportStatus().word()).append("</span> ")
+                .append(Texts.html(c.exportMessage())).append("</p>\n");
+        if (c.error() != null) {
+            out.append("<p>Implementation error:</p><pre>").append(Texts.html(c.error())).append("</pre>\n");
+        }
+        if (c.program() != null) {
+            out.append("<p>Program (").append(c.block() == null ? "first function block" : "block "
+                    + Texts.html(c.block())).append("):</p><pre>").append(numbered(c.program())).append("</pre>\n");
+        }
+        if (c.status() != CaseStatus.PASSED) {
+            out.append("<code class=\"cmd\">").append(Texts.html(Texts.repro(r, c.id()))).append("</code>\n");
+        }
+        out.append("</details>\n");
+    }
+
+    private void comparison(CaseResult c) {
+        if (c.expected() == null && c.actual() == null) {
+            return;
+        }
+        out.append("<table><tr><th></th><th>").append(c.step() == null ? "" : "step " + c.step()).append("</th></tr>");
+        if (c.inputs() != null) {
+            out.append("<tr><th>inputs</th><td>").append(Texts.html(Texts.describe(c.inputs()))).append("</td></tr>");
+        }
+        out.append(row("expected", c.expected())).append(row("actual", c.actual())).append("</table>\n");
+    }
+
+    private static String row(String label, Object value) {
+        String text = value instanceof Map<?, ?> || value != null ? Texts.describe(value) : "";
+        return "<tr><th>" + label + "</th><td>" + Texts.html(text) + "</td></tr>";
+    }
+
+    private static String numbered(String program) {
+        String[] lines = program.split("\n", -1);
+        StringBuilder b = new StringBuilder();
+        int width = String.valueOf(lines.length).length();
+        for (int i = 0; i < lines.length; i++) {
+            b.append(String.format("%" + width + "d  ", i + 1)).append(Texts.html(lines[i])).append('\n');
+        }
+        return b.toString();
+    }
+}

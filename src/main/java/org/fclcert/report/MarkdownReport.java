@@ -1,0 +1,230 @@
+package org.fclcert.report;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ExportStatus;
+
+/**
+ * {@code report.md}: the compliance statement in the shape clause 6.1 asks for — the Basic Level verdict
+ * with Table 8 row by row, the Standard Extensions realised (Table 9), the Open Level features (Table 10) —
+ * then the evidence: claims, interpretation-dependent cases, export, data check list, and the failures
+ * grouped by feature with a command that reproduces each.
+ */
+public final class MarkdownReport {
+    private final Report r;
+    private final StringBuilder out = new StringBuilder();
+
+    private MarkdownReport(Report report) {
+        this.r = report;
+    }
+
+    public static String render(Report report) {
+        return new MarkdownReport(report).all();
+    }
+
+    private String all() {
+        header();
+        table8();
+        table9();
+        table10();
+        claims();
+        interpretation();
+        export();
+        dataCheckList();
+        failures();
+        return out.toString();
+    }
+
+    private void line(String s) {
+        out.append(s).append('\n');
+    }
+
+    private void header() {
+        line("# FCL compliance statement: " + r.iut().name() + " " + r.iut().version());
+        line("");
+        line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
+                + ".");
+        line("");
+        line("- Implementation: `" + r.iut().spec() + "`"
+                + (r.iut().command() == null || r.iut().command().isBlank() ? "" : " (" + r.iut().command() + ")"));
+        line("- Corpus: `" + r.corpus().dir() + "`, " + r.corpus().cases() + " cases, sha256 `" + r.corpus().sha256()
+                + "`");
+        Report.Summary s = r.summary();
+        line("- Cases run: " + s.cases() + ": " + s.passed() + " passed, " + s.failed() + " failed, " + s.errored()
+                + " errored, " + s.skipped() + " skipped");
+        if (!r.run().selection().whole()) {
+            line("- Selection: " + selection() + " (a partial run: verdicts cover only the cases run)");
+        }
+        if (!r.run().complete()) {
+            line("- **Incomplete run**: some selected cases were not run; they are reported as skipped.");
+        }
+        r.run().problems().forEach(p -> line("- Results file problem: " + p));
+        line("");
+        line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
+                + r.basicLevel().reason() + ").");
+        line("");
+    }
+
+    private String selection() {
+        List<String> parts = new ArrayList<>();
+        if (!r.run().selection().levels().isEmpty()) {
+            parts.add("--level " + String.join(",", r.run().selection().levels()));
+        }
+        if (!r.run().selection().features().isEmpty()) {
+            parts.add("--feature " + String.join(" ", r.run().selection().features()));
+        }
+        if (!r.run().selection().cases().isEmpty()) {
+            parts.add("--case " + String.join(" ", r.run().selection().cases()));
+        }
+        return String.join(" ", parts);
+    }
+
+    private void table8() {
+        line("## Table 8: Basic Level language elements (mandatory)");
+        line("");
+        featureTable(8);
+    }
+
+    private void table9() {
+        line("## Table 9: Standard Extensions realised");
+        line("");
+        List<String> realised = rows(9).stream().filter(f -> f.status() == FeatureStatus.REALISED)
+                .map(f -> f.id() + " (" + f.description() + ")").toList();
+        line(realised.isEmpty() ? "No Standard Extension is realised." : "Realised:");
+        line("");
+        realised.forEach(x -> line("- " + x));
+        if (!realised.isEmpty()) {
+            line("");
+        }
+        line("All Table 9 rows:");
+        line("");
+        featureTable(9);
+    }
+
+    private void table10() {
+        line("## Table 10: Open Level features");
+        line("");
+        featureTable(10);
+    }
+
+    private List<Report.FeatureRow> rows(int table) {
+        return r.features().stream().filter(f -> f.table() == table).toList();
+    }
+
+    private void featureTable(int table) {
+        line("| Language element | Feature | Verdict | Passed | Not passed |");
+        line("| --- | --- | --- | --- | --- |");
+        for (Report.FeatureRow f : rows(table)) {
+            String verdict = f.status() == FeatureStatus.REALISED || f.status() == FeatureStatus.NOT_TESTED
+                    ? f.status().label() : "**" + f.status().label() + "**";
+            line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
+                    + verdict + " | " + f.passed() + "/" + f.cases().size() + " | "
+                    + String.join(", ", f.notPassed()) + " |");
+        }
+        line("");
+    }
+
+    private void claims() {
+        Report.Claims c = r.claims();
+        line("## Claims");
+        line("");
+        if (c.claimed().isEmpty()) {
+            line("The implementation claims no feature.");
+        } else {
+            line("- Claimed: " + String.join(", ", c.claimed()));
+            line("- Confirmed: " + none(c.confirmed()));
+            line("- **Claimed but not realised**: " + none(c.notRealised()));
+            if (!c.unknown().isEmpty()) {
+                line("- Unknown feature ids claimed: " + String.join(", ", c.unknown()));
+            }
+        }
+        if (!c.unclaimed().isEmpty()) {
+            line("- Realised but not claimed: " + String.join(", ", c.unclaimed()));
+        }
+        line("");
+    }
+
+    private static String none(List<String> ids) {
+        return ids.isEmpty() ? "none" : String.join(", ", ids);
+    }
+
+    private void interpretation() {
+        line("## Cases that depend on an interpretation of the standard");
+        line("");
+        if (r.interpretation().isEmpty()) {
+            line("None in this run.");
+        } else {
+            line("Not counted against any verdict (see docs/semantics.md).");
+            line("");
+            line("| Case | Point | Status | Message |");
+            line("| --- | --- | --- | --- |");
+            r.interpretation().forEach(i -> line("| " + i.id() + " | " + i.flag() + " | " + i.status() + " | "
+                    + Texts.cell(i.message()) + " |"));
+        }
+        line("");
+    }
+
+    private void export() {
+        line("## FCL export (clause 6 e)");
+        line("");
+        Map<ExportStatus, Integer> counts = new LinkedHashMap<>();
+        r.cases().forEach(c -> counts.merge(c.exportStatus(), 1, Integer::sum));
+        line(counts.entrySet().stream().map(e -> e.getValue() + " " + e.getKey().word())
+                .reduce((a, b) -> a + ", " + b).orElse("no case") + ".");
+        r.cases().stream().filter(c -> c.exportStatus() == ExportStatus.FAILED)
+                .forEach(c -> line("- " + c.id() + ": " + Texts.cell(c.exportMessage())));
+        line("");
+    }
+
+    private void dataCheckList() {
+        line("## Data check list (Table 11)");
+        line("");
+        if (r.dataCheckList().isEmpty()) {
+            line("Not measured in this run.");
+        } else {
+            line("| Item | Value | Unit | Bound | Method |");
+            line("| --- | --- | --- | --- | --- |");
+            r.dataCheckList().forEach(d -> line("| " + Texts.cell(d.item()) + " | " + Texts.cell(d.value()) + " | "
+                    + Texts.cell(d.unit()) + " | " + d.bound() + " | " + Texts.cell(d.method()) + " |"));
+        }
+        line("");
+    }
+
+    private void failures() {
+        line("## Failures by feature");
+        line("");
+        Map<String, List<CaseResult>> groups = new LinkedHashMap<>();
+        r.cases().stream().filter(c -> c.status() == CaseStatus.FAILED || c.status() == CaseStatus.ERRORED)
+                .forEach(c -> groups.computeIfAbsent(c.tests().isEmpty() ? "(no feature)" : c.tests().get(0),
+                        k -> new ArrayList<>()).add(c));
+        if (groups.isEmpty()) {
+            line("No case failed or errored.");
+        }
+        groups.forEach((feature, cases) -> {
+            line("### " + feature + description(feature));
+            line("");
+            cases.forEach(this::failure);
+        });
+    }
+
+    private String description(String featureId) {
+        return r.features().stream().filter(f -> f.id().equals(featureId)).findFirst()
+                .map(f -> ": " + f.description()).orElse("");
+    }
+
+    private void failure(CaseResult c) {
+        line("- **" + c.id() + "** " + c.status().word() + ": " + Texts.cell(c.message()));
+        if (c.expected() != null || c.actual() != null) {
+            line("  - expected: " + Texts.cell(Texts.describe(c.expected())) + "; actual: "
+                    + Texts.cell(Texts.describe(c.actual())));
+        }
+        if (c.tests().size() > 1) {
+            line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
+        }
+        line("  - reproduce: `" + Texts.repro(r, c.id()) + "`");
+    }
+}

@@ -1,0 +1,85 @@
+package org.fclcert.report;
+
+import com.fasterxml.jackson.annotation.JsonInclude;
+import java.util.List;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.RunHeader;
+
+/**
+ * A certification report: what was run against what, the verdicts, and every case result. This record is
+ * exactly what {@code report.json} holds (schema in {@code docs/report-format.md}); the other renderings are
+ * made from it.
+ */
+@JsonInclude(JsonInclude.Include.NON_NULL)
+public record Report(
+        int formatVersion,
+        String generatedAt,
+        RunHeader.Iut iut,
+        RunHeader.Toolkit toolkit,
+        RunHeader.CorpusInfo corpus,
+        Run run,
+        Summary summary,
+        BasicLevel basicLevel,
+        List<FeatureRow> features,
+        List<DataCheckEntry> dataCheckList,
+        List<InterpretationEntry> interpretation,
+        Claims claims,
+        List<CaseResult> cases) {
+
+    public static final int FORMAT_VERSION = 1;
+
+    public Report {
+        features = List.copyOf(features);
+        dataCheckList = List.copyOf(dataCheckList);
+        interpretation = List.copyOf(interpretation);
+        cases = List.copyOf(cases);
+    }
+
+    /** How the run went: when, with which filters, whether every selected case ran, problems reading results. */
+    public record Run(String startedAt, boolean complete, RunHeader.Selection selection, List<String> problems) {
+        public Run {
+            problems = List.copyOf(problems);
+        }
+    }
+
+    public record Summary(int cases, int passed, int failed, int errored, int skipped) {
+    }
+
+    /**
+     * Clause 6.1 b): conformant only when every Basic Level case of the corpus (not flagged interpretation)
+     * was run and passed. {@code required} is that number in the corpus, {@code run} how many were run.
+     */
+    public record BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
+    }
+
+    /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
+    public record FeatureRow(String id, int table, String level, String element, String description,
+            FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
+            List<String> notPassed) {
+        public FeatureRow {
+            cases = List.copyOf(cases);
+            notPassed = List.copyOf(notPassed);
+        }
+    }
+
+    /** A case that depends on a reading of the standard: shown on its own, counted against no verdict. */
+    public record InterpretationEntry(String id, String title, String flag, String status, String message) {
+    }
+
+    /**
+     * The implementation's claims (feature ids from {@code hello}) against the measurements: {@code confirmed}
+     * realised as claimed, {@code notRealised} claimed but partial / not realised / not tested,
+     * {@code unknown} not a feature id of the catalogue, {@code unclaimed} realised Extension or Open Level
+     * features the implementation did not claim.
+     */
+    public record Claims(List<String> claimed, List<String> confirmed, List<String> notRealised,
+            List<String> unknown, List<String> unclaimed) {
+        public Claims {
+            claimed = List.copyOf(claimed);
+            confirmed = List.copyOf(confirmed);
+            notRealised = List.copyOf(notRealised);
+            unknown = List.copyOf(unknown);
+            unclaimed = List.copyOf(unclaimed);
+        }
+    }
+}

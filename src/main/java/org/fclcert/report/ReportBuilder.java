@@ -1,0 +1,149 @@
+package org.fclcert.report;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.function.Predicate;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.PlannedCase;
+import org.fclcert.harness.ResultsFile;
+import org.fclcert.harness.RunHeader;
+import org.fclcert.model.ConformanceLevel;
+import org.fclcert.model.Feature;
+
+/** Builds the verdicts of clause 6.1 from case results (complete or not). */
+public final class ReportBuilder {
+    private ReportBuilder() {
+    }
+
+    public static Report build(ResultsFile file, Instant generatedAt) {
+        return build(file.header(), file.results(), file.problems(), List.of(), generatedAt);
+    }
+
+    public static Report build(RunHeader header, List<CaseResult> results, List<String> problems,
+            List<DataCheckEntry> dataCheckList, Instant generatedAt) {
+        List<CaseResult> cases = complete(header, results);
+        boolean complete = cases.stream().noneMatch(c -> c.status() == CaseStatus.SKIPPED && isUnrun(c));
+        List<CaseResult> counted = cases.stream().filter(c -> !c.interpretation()).toList();
+        List<Report.FeatureRow> features = featureRows(counted);
+        return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
+                header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
+                summary(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
+                claims(header.iut().claims(), features), cases);
+    }
+
+    static final String NOT_RUN = "not run: the run ended before this case";
+
+    private static boolean isUnrun(CaseResult c) {
+        return NOT_RUN.equals(c.message());
+    }
+
+    /** Planned order, the last result per id, and a skipped entry for every planned case with no result. */
+    private static List<CaseResult> complete(RunHeader header, List<CaseResult> results) {
+        Map<String, CaseResult> byId = new LinkedHashMap<>();
+        results.forEach(r -> byId.put(r.id(), r));
+        List<CaseResult> ordered = new ArrayList<>();
+        for (PlannedCase p : header.selection().planned()) {
+            CaseResult r = byId.remove(p.id());
+            ordered.add(r != null ? r : CaseResult.skipped(p, NOT_RUN));
+        }
+        ordered.addAll(byId.values());
+        return ordered;
+    }
+
+    private static Report.Summary summary(List<CaseResult> cases) {
+        return new Report.Summary(cases.size(), count(cases, CaseStatus.PASSED), count(cases, CaseStatus.FAILED),
+                count(cases, CaseStatus.ERRORED), count(cases, CaseStatus.SKIPPED));
+    }
+
+    private static int count(List<CaseResult> cases, CaseStatus status) {
+        return (int) cases.stream().filter(c -> c.status() == status).count();
+    }
+
+    private static Report.BasicLevel basicLevel(RunHeader header, List<CaseResult> counted) {
+        List<CaseResult> basic = counted.stream().filter(c -> "basic".equals(c.level())).toList();
+        int required = header.corpus().basicCases();
+        int passed = count(basic, CaseStatus.PASSED);
+        List<String> notPassed = basic.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id)
+                .toList();
+        String reason;
+        if (required == 0) {
+            reason = "the corpus has no Basic Level case";
+        } else if (!notPassed.isEmpty()) {
+            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: "
+                    + String.join(", ", notPassed);
+        } else if (basic.size() < required) {
+            reason = "only " + basic.size() + " of the corpus's " + required + " Basic Level cases were run";
+        } else {
+            reason = "all " + required + " Basic Level cases passed";
+        }
+        boolean conformant = required > 0 && notPassed.isEmpty() && passed >= required;
+        return new Report.BasicLevel(conformant, required, basic.size(), passed, reason);
+    }
+
+    private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
+        List<Report.FeatureRow> rows = new ArrayList<>();
+        for (Feature f : Feature.values()) {
+            List<CaseResult> evidence = counted.stream().filter(testing(f)).toList();
+            int passed = count(evidence, CaseStatus.PASSED);
+            int skipped = count(evidence, CaseStatus.SKIPPED);
+            FeatureStatus status = FeatureStatus.of(passed, evidence.size());
+            rows.add(new Report.FeatureRow(f.id(), f.table(), f.level().word(), f.element(), f.description(),
+                    status, passed, count(evidence, CaseStatus.FAILED), count(evidence, CaseStatus.ERRORED), skipped,
+                    evidence.stream().map(CaseResult::id).toList(),
+                    evidence.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id).toList()));
+        }
+        return rows;
+    }
+
+    private static Predicate<CaseResult> testing(Feature f) {
+        return c -> c.tests().stream().anyMatch(t -> t.equalsIgnoreCase(f.id()));
+    }
+
+    private static List<Report.InterpretationEntry> interpretation(List<CaseResult> cases) {
+        return cases.stream().filter(CaseResult::interpretation)
+                .map(c -> new Report.InterpretationEntry(c.id(), c.title(), interpretationFlag(c), c.status().word(),
+                        c.message()))
+                .toList();
+    }
+
+    private static String interpretationFlag(CaseResult c) {
+        return c.flags().stream().filter(f -> f.toLowerCase(Locale.ROOT).startsWith("interpretation")).findFirst()
+                .orElse("interpretation");
+    }
+
+    private static Report.Claims claims(List<String> claimed, List<Report.FeatureRow> rows) {
+        Map<String, Report.FeatureRow> byId = new LinkedHashMap<>();
+        rows.forEach(r -> byId.put(r.id(), r));
+        List<String> confirmed = new ArrayList<>();
+        List<String> notRealised = new ArrayList<>();
+        List<String> unknown = new ArrayList<>();
+        Set<String> claimedIds = new TreeSet<>(String.CASE_INSENSITIVE_ORDER);
+        for (String id : claimed) {
+            Report.FeatureRow row = byId.get(id.toUpperCase(Locale.ROOT));
+            claimedIds.add(id);
+            if (row == null) {
+                unknown.add(id);
+            } else if (row.status() == FeatureStatus.REALISED) {
+                confirmed.add(row.id());
+            } else {
+                notRealised.add(row.id() + " (" + row.status().label() + ")");
+            }
+        }
+        List<String> unclaimed = rows.stream()
+                .filter(r -> r.table() != 8 && r.status() == FeatureStatus.REALISED && !claimedIds.contains(r.id()))
+                .map(Report.FeatureRow::id).toList();
+        return new Report.Claims(claimed, confirmed, notRealised, unknown, unclaimed);
+    }
+
+    /** The level a case's {@code level} word names, for renderers. */
+    static ConformanceLevel level(String word) {
+        return ConformanceLevel.byWord(word);
+    }
+}

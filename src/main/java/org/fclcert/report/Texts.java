@@ -1,0 +1,80 @@
+package org.fclcert.report;
+
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/** Small text helpers shared by the renderers. */
+final class Texts {
+    private Texts() {
+    }
+
+    /** Expected/actual values for people: {@code valve = 74.8, flow = 1.0} or the sentence itself. */
+    static String describe(Object value) {
+        if (value == null) {
+            return "";
+        }
+        if (value instanceof Map<?, ?> map) {
+            return map.entrySet().stream().map(e -> e.getKey() + " = " + e.getValue())
+                    .collect(Collectors.joining(", "));
+        }
+        return value.toString();
+    }
+
+    static String html(String s) {
+        if (s == null) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder(s.length() + 16);
+        for (char ch : s.toCharArray()) {
+            switch (ch) {
+                case '<' -> b.append("&lt;");
+                case '>' -> b.append("&gt;");
+                case '&' -> b.append("&amp;");
+                case '"' -> b.append("&quot;");
+                case '\'' -> b.append("&#39;");
+                default -> b.append(allowedInXml(ch) ? ch : '\uFFFD');
+            }
+        }
+        return b.toString();
+    }
+
+    /** Replaces characters XML 1.0 forbids (an implementation's garbage output may contain them). */
+    static String xmlSafe(String s) {
+        if (s == null) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder(s.length());
+        s.chars().forEach(ch -> b.append(allowedInXml((char) ch) ? (char) ch : '\uFFFD'));
+        return b.toString();
+    }
+
+    private static boolean allowedInXml(char ch) {
+        return ch == '\t' || ch == '\n' || ch == '\r' || (ch >= 0x20 && ch != 0xFFFE && ch != 0xFFFF);
+    }
+
+    /** A Markdown table cell: one line, pipes escaped. */
+    static String cell(String s) {
+        return s == null ? "" : s.replace("\r", "").replace("\n", " ").replace("|", "\\|");
+    }
+
+    /** Quotes a word for a POSIX shell. */
+    static String shellQuote(String s) {
+        if (s.matches("[A-Za-z0-9_./:=@%+,-]+")) {
+            return s;
+        }
+        return "'" + s.replace("'", "'\\''") + "'";
+    }
+
+    /** The command that reruns one case against the same implementation and corpus. */
+    static String repro(Report report, String caseId) {
+        StringBuilder b = new StringBuilder("./fclcert certify --iut ").append(shellQuote(report.iut().spec()));
+        if (report.iut().classpath() != null) {
+            b.append(" --classpath ").append(shellQuote(report.iut().classpath()));
+        }
+        String dir = report.corpus().dir();
+        if (dir != null && !dir.equals("conformance")) {
+            b.append(" --corpus ").append(shellQuote(dir));
+        }
+        return b.append(" --case ").append(shellQuote(caseId)).toString();
+    }
+}

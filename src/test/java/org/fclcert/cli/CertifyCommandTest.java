@@ -1,0 +1,166 @@
+package org.fclcert.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.report.JsonReport;
+import org.fclcert.report.Report;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code fclcert certify} against real separate processes (the Python fakes of the iut tests, which answer
+ * {@code sum = a + b}), and its exit codes.
+ */
+class CertifyCommandTest {
+    static final String CORPUS = "src/test/resources/corpus-process";
+    static final String FAKES = "src/test/resources/iut/";
+
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+    private PrintStream oldOut;
+    private PrintStream oldErr;
+
+    @BeforeEach
+    void capture() {
+        oldOut = System.out;
+        oldErr = System.err;
+        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    @AfterEach
+    void restore() {
+        System.setOut(oldOut);
+        System.setErr(oldErr);
+    }
+
+    private int certify(String iut, String... more) {
+        List<String> args = new java.util.ArrayList<>(List.of("certify", "--iut", iut, "--corpus", CORPUS,
+                "--out", dir.toString()));
+        args.addAll(List.of(more));
+        return Main.run(args.toArray(String[]::new));
+    }
+
+    private Report report() throws Exception {
+        return JsonReport.read(dir.resolve("report.json"));
+    }
+
+    private static Map<String, CaseStatus> statuses(Report r) {
+        return r.cases().stream().collect(Collectors.toMap(CaseResult::id, CaseResult::status, (a, b) -> a,
+                TreeMap::new));
+    }
+
+    private static CaseResult result(Report r, String id) {
+        return r.cases().stream().filter(c -> c.id().equals(id)).findFirst().orElseThrow();
+    }
+
+    @Test
+    void aCrashIsErroredWithItsStderrAndTheRunGoesOnAfterARestart() throws Exception {
+        assertEquals(0, certify("process:python3 " + FAKES + "crash_on_fifth_eval.py"), err::toString);
+        Report r = report();
+        // B-FB-001 uses evaluations 1-4 (two steps, then two in reverse); the fifth is B-FB-002's first step
+        assertEquals(Map.of("B-FB-001", CaseStatus.PASSED, "B-FB-002", CaseStatus.ERRORED,
+                "B-FB-003", CaseStatus.PASSED, "B-FB-901", CaseStatus.FAILED), statuses(r));
+        CaseResult crashed = result(r, "B-FB-002");
+        assertTrue(crashed.message().startsWith("step 1 of 2: the implementation crashed"), crashed.message());
+        assertTrue(crashed.error().contains("fatal: fifth evaluation, giving up"), crashed.error());
+        assertEquals("accepted a program the standard rejects: FCL-S001 at line 14", result(r, "B-FB-901").message());
+        assertEquals("fake", r.iut().name());
+        assertEquals(List.of("B-FB"), r.claims().claimed());
+        assertEquals(List.of("B-FB (partial)"), r.claims().notRealised());
+        assertTrue(Files.readString(dir.resolve("report.md")).contains(
+                "`./fclcert certify --iut 'process:python3 src/test/resources/iut/crash_on_fifth_eval.py' --corpus "
+                        + CORPUS + " --case B-FB-002`"));
+        assertEquals(5, Files.readAllLines(dir.resolve("results.jsonl")).size(), "a header and four cases");
+        assertTrue(out.toString().contains("fake 1.0: 4 cases, 2 passed, 1 failed, 1 errored, 0 skipped"), out::toString);
+        assertTrue(err.toString().contains("ERRORED B-FB-002: step 1 of 2: the implementation crashed"), err::toString);
+    }
+
+    @Test
+    void failOnDecidesTheExitCode() {
+        String iut = "process:python3 " + FAKES + "crash_on_fifth_eval.py";
+        assertEquals(1, certify(iut, "--fail-on", "any"));
+        assertTrue(err.toString().contains("--fail-on any: 1 case(s) failed, 1 errored"), err::toString);
+        assertEquals(1, certify(iut, "--fail-on", "claimed"));
+        // alone, B-FB-001 needs four evaluations: no crash
+        assertEquals(0, certify(iut, "--case", "B-FB-001", "--fail-on", "any"));
+        assertEquals(1, certify(iut, "--case", "B-FB-001", "--fail-on", "basic"), "a partial run is not conformant");
+    }
+
+    @Test
+    void aHangIsATimeoutNeverAPassNotEvenForANegativeCase() throws Exception {
+        assertEquals(0, certify("process:python3 " + FAKES + "hang_on_load.py", "--timeout", "3s",
+                "--case", "B-FB-901"), err::toString);
+        Report r = report();
+        assertEquals(0, r.summary().passed());
+        CaseResult negative = result(r, "B-FB-901");
+        assertEquals(CaseStatus.ERRORED, negative.status());
+        assertEquals("load: the implementation timed out: no reply to 'load' within 3000 ms", negative.message());
+    }
+
+    @Test
+    void garbageRepliesAreProtocolErrors() throws Exception {
+        assertEquals(0, certify("process:python3 " + FAKES + "garbage.py text"), err::toString);
+        Report r = report();
+        assertEquals(0, r.summary().passed());
+        assertTrue(result(r, "B-FB-001").message().startsWith("load: the implementation broke the protocol"),
+                result(r, "B-FB-001").message());
+        assertTrue(r.cases().stream().allMatch(c -> c.status() == CaseStatus.ERRORED
+                || c.status() == CaseStatus.SKIPPED), r.cases()::toString);
+    }
+
+    @Test
+    void aRunThatCannotBeDoneExitsWith2AndSaysWhy() {
+        assertEquals(2, Main.run("certify", "--corpus", "no/such/dir", "--out", dir.toString()));
+        assertTrue(err.toString().contains("corpus directory no/such/dir does not exist"), err::toString);
+        assertEquals(2, certify("process:/no/such/program"));
+        assertTrue(err.toString().contains("fclcert certify: the implementation 'process:/no/such/program' did not "
+                + "answer hello"), err::toString);
+        assertEquals(2, certify("nonsense"));
+        assertEquals(2, certify("reference", "--fail-on", "sometimes"));
+        assertEquals(2, certify("reference", "--feature", "E-HEDGES"));
+        assertEquals(2, certify("reference", "--level", "expert"));
+        assertEquals(2, certify("reference", "--timeout", "soon"));
+        assertEquals(2, certify("reference", "--case", "Z-*"));
+        assertTrue(err.toString().contains("no case of " + CORPUS + " matches the selection"), err::toString);
+    }
+
+    @Test
+    void reportRebuildsEverythingFromAResultsFileCutShort() throws Exception {
+        certify("process:python3 " + FAKES + "crash_on_fifth_eval.py");
+        Path results = dir.resolve("results.jsonl");
+        List<String> lines = Files.readAllLines(results);
+        Path cut = dir.resolve("cut/results.jsonl");
+        Files.createDirectories(cut.getParent());
+        // the header, the first case, and half of the second line as a killed run leaves it
+        Files.writeString(cut, lines.get(0) + "\n" + lines.get(1) + "\n" + lines.get(2).substring(0, 40));
+        assertEquals(0, Main.run("report", "--from", cut.toString()), err::toString);
+        Report r = JsonReport.read(dir.resolve("cut/report.json"));
+        assertEquals(Map.of("B-FB-001", CaseStatus.PASSED, "B-FB-002", CaseStatus.SKIPPED,
+                "B-FB-003", CaseStatus.SKIPPED, "B-FB-901", CaseStatus.SKIPPED), statuses(r));
+        assertEquals(false, r.run().complete());
+        assertEquals(1, r.run().problems().size());
+        assertTrue(err.toString().contains("unreadable line ignored"), err::toString);
+        for (String f : List.of("report.md", "report.html", "junit.xml")) {
+            assertTrue(Files.size(dir.resolve("cut").resolve(f)) > 0, f);
+        }
+        assertEquals(2, Main.run("report", "--from", dir.resolve("missing.jsonl").toString()));
+    }
+}

@@ -1,0 +1,138 @@
+package org.fclcert.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.xml.parsers.DocumentBuilderFactory;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.w3c.dom.NodeList;
+
+class RenderersTest {
+    private static final Report REPORT = ReportBuilderTest.report(List.of("E-NOT"));
+
+    @Test
+    void markdownIsAComplianceStatementWithReproCommands() {
+        String md = MarkdownReport.render(REPORT);
+        assertTrue(md.startsWith("# FCL compliance statement: Fake <FLC> 0.1\n"), md);
+        assertTrue(md.contains("**Basic Level: NOT conformant** (2 of 4 Basic Level cases did not pass: "
+                + "B-COGS-002, B-DEFAULT-NC-001)."), md);
+        assertTrue(md.contains("## Table 8: Basic Level language elements (mandatory)"));
+        assertTrue(md.contains("| defuzzification | B-COGS: METHOD CoGS, centre of gravity for singletons | **partial** "
+                + "| 1/2 | B-COGS-002 |"), md);
+        assertTrue(md.contains("Realised:\n\n- E-COG (METHOD CoG, centre of gravity)\n"), md);
+        assertTrue(md.contains("- **Claimed but not realised**: E-NOT (not realised)"), md);
+        assertTrue(md.contains("| E-COG-INT-001 | interpretation:3 | failed |"), md);
+        assertTrue(md.contains("### E-NOT: NOT operator, 1 - argument (also IS NOT)\n"), md);
+        assertTrue(md.contains("- **E-NOT-002** errored: step 1 of 1: y = 1.0 where 2.0 is expected\n"
+                + "  - expected: y = 2.0; actual: y = 1.0\n  - also evidence for: E-PARENS\n"
+                + "  - reproduce: `./fclcert certify --iut 'process:python3 fake.py' --corpus "
+                + "src/test/resources/corpus-mini --case E-NOT-002`\n"), md);
+        assertTrue(md.contains("- **Incomplete run**"), md);
+        assertFalse(md.contains("B-COGS-001**"), "passed cases are not listed as failures");
+    }
+
+    @Test
+    void htmlIsOneSelfContainedBalancedPage() {
+        String html = HtmlReport.render(REPORT);
+        assertTrue(html.startsWith("<!DOCTYPE html>"));
+        assertFalse(Pattern.compile("(src|href)=\"(https?:)?//").matcher(html).find(), "nothing is fetched");
+        assertFalse(html.contains("<link"), "no external style sheet");
+        assertTrue(html.contains("<style>") && html.contains("<script>"));
+        assertBalanced(html);
+        assertEquals(3, count(html, "<h2>Table "), "the three tables");
+        assertEquals(REPORT.cases().size(), count(html, "<details class=\"case\""));
+        assertTrue(html.contains("data-status=\"errored\" data-level=\"extension\""));
+        assertTrue(html.contains("<span class=\"st partial\">partial</span>"));
+        // program text is escaped and numbered
+        assertTrue(html.contains("2    (* x &lt; y &amp; z *)") || html.contains("2  (* x &lt; y &amp; z *)"), html);
+        assertTrue(html.contains("Fake &lt;FLC&gt;"));
+        assertFalse(html.contains("Fake <FLC>"));
+    }
+
+    @Test
+    void junitHasOneTestcasePerCaseAndSurvivesControlCharacters() throws Exception {
+        CaseResult garbage = new CaseResult("B-FB-009", "garbage", "basic", List.of("B-FB"), List.of(),
+                CaseStatus.ERRORED, "broke the protocol: reply 'x\u0001\u0007y'", null, null, null, null,
+                "\u0000\u001b[31mboom", null, "exact", null, null, List.of(), null, null, 1L);
+        List<CaseResult> cases = new java.util.ArrayList<>(REPORT.cases());
+        cases.add(garbage);
+        Report r = new Report(1, REPORT.generatedAt(), REPORT.iut(), REPORT.toolkit(), REPORT.corpus(), REPORT.run(),
+                new Report.Summary(9, 3, 3, 2, 1), REPORT.basicLevel(), REPORT.features(), List.of(),
+                REPORT.interpretation(), REPORT.claims(), cases);
+        Document doc = DocumentBuilderFactory.newInstance().newDocumentBuilder()
+                .parse(new ByteArrayInputStream(JunitReport.render(r).getBytes(StandardCharsets.UTF_8)));
+        Element suite = doc.getDocumentElement();
+        assertEquals("testsuite", suite.getTagName());
+        assertEquals("9", suite.getAttribute("tests"));
+        assertEquals("2", suite.getAttribute("errors"));
+        NodeList testcases = suite.getElementsByTagName("testcase");
+        assertEquals(9, testcases.getLength());
+        Element first = (Element) testcases.item(0);
+        assertEquals("fclcert.basic.B-COGS", first.getAttribute("classname"));
+        assertEquals(0, first.getChildNodes().getLength(), "a passed case has no child element");
+        assertEquals(3, suite.getElementsByTagName("failure").getLength());
+        assertEquals(2, suite.getElementsByTagName("error").getLength());
+        Element skipped = (Element) suite.getElementsByTagName("skipped").item(0);
+        assertEquals("not run: the run ended before this case", skipped.getAttribute("message"));
+        Element last = (Element) testcases.item(8);
+        assertTrue(last.getElementsByTagName("error").item(0).getTextContent().contains("\uFFFD[31mboom"));
+    }
+
+    @Test
+    void allFourFilesAreWrittenAndTheJsonReadsBack(@TempDir Path dir) throws Exception {
+        List<Path> files = ReportFiles.writeAll(REPORT, dir.resolve("reports/fake"));
+        assertEquals(Set.of("report.json", "report.md", "report.html", "junit.xml"),
+                Set.copyOf(files.stream().map(p -> p.getFileName().toString()).toList()));
+        Report back = JsonReport.read(files.get(0));
+        assertEquals(REPORT.features(), back.features());
+        assertEquals(REPORT.basicLevel(), back.basicLevel());
+        assertEquals(REPORT.summary(), back.summary());
+        String json = Files.readString(files.get(0));
+        assertTrue(json.contains("\"dataCheckList\" : [ ]"), "present and empty until the probes fill it");
+    }
+
+    private static int count(String text, String what) {
+        int n = 0;
+        for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + 1)) {
+            n++;
+        }
+        return n;
+    }
+
+    /** Every non-void element is closed in order (the page is hand-written HTML, so this is worth checking). */
+    private static void assertBalanced(String html) {
+        Set<String> voids = Set.of("meta", "input", "br", "hr", "img", "link");
+        Matcher m = Pattern.compile("<(/?)([a-zA-Z0-9]+)[^>]*>").matcher(html.replaceAll("(?s)<script>.*?</script>", "")
+                .replaceAll("(?s)<style>.*?</style>", ""));
+        Deque<String> open = new ArrayDeque<>();
+        while (m.find()) {
+            String tag = m.group(2).toLowerCase();
+            if (voids.contains(tag)) {
+                continue;
+            }
+            if (m.group(1).isEmpty()) {
+                open.push(tag);
+            } else {
+                assertEquals(open.isEmpty() ? "(none)" : open.peek(), tag, "closing tag at " + m.start());
+                open.pop();
+            }
+        }
+        assertTrue(open.isEmpty(), "unclosed: " + open);
+    }
+}
