@@ -2,16 +2,18 @@
 """basic_iut.py - a small FCL implementation that fclcert can certify as a separate process.
 
 It realises the Basic Level of IEC 61131-7 (Table 8) and one extension, a constant WITH (so that
-the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL or LREAL, input terms of at most three
-constant points, singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a
-value or NC, one rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is
-rejected with the line where it starts.
+the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL, LREAL or an integer type
+(integer outputs rounded half away from zero), input terms of at most three constant points,
+singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a value or NC, one
+rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is rejected with the
+line where it starts.
 
 It speaks fclcert's JSON-lines protocol (docs/iut-protocol.md): one request per line on stdin,
 one reply per line on stdout. Try it:
     fclcert certify --iut 'process:python3 examples/iut/basic_iut.py' --level basic
 """
 import json
+import math
 import re
 import sys
 
@@ -23,6 +25,11 @@ TOKEN = re.compile(r"""(?P<comment>\(\*.*?\*\))|(?P<space>\s+)
     |(?P<number>[+-]?\d[\d_]*(?:\.\d[\d_]*)?(?:[eE][+-]?\d+)?)
     |(?P<name>[A-Za-z_]\w*)|(?P<punct>:=|[():;,])""", re.S | re.X)
 
+
+# integer data types (IEC 61131-3) and their ranges; REAL and LREAL are the floating ones
+INTEGERS = {"SINT": (-2**7, 2**7 - 1), "INT": (-2**15, 2**15 - 1), "DINT": (-2**31, 2**31 - 1),
+            "LINT": (-2**63, 2**63 - 1), "USINT": (0, 2**8 - 1), "UINT": (0, 2**16 - 1),
+            "UDINT": (0, 2**32 - 1), "ULINT": (0, 2**64 - 1)}
 
 # what a rule block may declare, and the algorithms accepted (activation does not matter for singletons)
 SETTINGS = {"AND": ("MIN",), "ACT": ("MIN", "PROD"), "ACCU": ("MAX",)}
@@ -125,9 +132,9 @@ class Parser:
                 self.take()
                 names.append(self.name())
             self.expect(":")
-            if not self.at("REAL", "LREAL"):
+            if not self.at("REAL", "LREAL", *INTEGERS):
                 self.unsupported("data type %r" % self.peek()[1])
-            self.take()
+            dtype = self.take()[1].upper()
             init = 0.0
             if self.at(":="):
                 self.take()
@@ -136,7 +143,7 @@ class Parser:
             for n in names:
                 if n.lower() in fb["inputs"] or n.lower() in fb["outputs"]:
                     raise Reject("variable %s is declared twice" % n, line)
-                table[n.lower()] = {"name": n, "init": init}
+                table[n.lower()] = {"name": n, "init": init, "type": dtype}
         self.take()
 
     def fuzzify(self, fb):
@@ -156,6 +163,8 @@ class Parser:
                 self.expect(",")
                 points.append((x, self.number()))
                 self.expect(")")
+                if self.at(",") and self.tokens[self.i + 1][0] == "(":
+                    self.take()  # points may be separated by commas, as in figure 5
             self.expect(";")
             if not 2 <= len(points) <= 3 or any(a[0] > b[0] for a, b in zip(points, points[1:])):
                 raise Reject("term %s needs 2 or 3 points in ascending order" % term, line)
@@ -262,7 +271,10 @@ def resolve(fb):
 
 
 def membership(points, x):
-    """Linear between points, constant beyond the outer ones; at a vertical edge the later point wins."""
+    """Linear between points, constant beyond the outer ones; at a vertical edge the larger degree."""
+    at_x = [y for px, y in points if px == x]
+    if at_x:
+        return max(at_x)
     if x <= points[0][0]:
         return points[0][1]
     for (x1, y1), (x2, y2) in zip(points, points[1:]):
@@ -281,9 +293,20 @@ def evaluate(fb, state):
     for var, out in fb["defuzzify"].items():
         fired = [(d, out["terms"][t]) for (v, t), d in degrees.items() if v == var and d > 0]
         if fired:
-            state["out"][var] = sum(d * x for d, x in fired) / sum(d for d, _ in fired)
+            state["out"][var] = crisp(fb["outputs"][var], sum(d * x for d, x in fired) / sum(d for d, _ in fired))
         elif not isinstance(out["default"], str):
-            state["out"][var] = out["default"]  # a DEFAULT value; NC keeps the last one
+            state["out"][var] = crisp(fb["outputs"][var], out["default"])  # a DEFAULT value; NC keeps the last one
+
+
+def crisp(output, value):
+    """An integer output gets the value rounded half away from zero, and it must fit its type."""
+    if output["type"] not in INTEGERS:
+        return value
+    rounded = math.floor(abs(value) + 0.5) * (1 if value >= 0 else -1)
+    low, high = INTEGERS[output["type"]]
+    if not low <= rounded <= high:
+        raise ValueError("%s = %s does not fit %s" % (output["name"], rounded, output["type"]))
+    return float(rounded)
 
 
 class Session:
