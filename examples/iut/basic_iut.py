@@ -22,8 +22,17 @@ CLAIMS = ["B-FB", "B-IN-TERM", "B-OUT-SINGLETON", "B-AND-MIN", "B-ACCU-MAX", "B-
           "B-ONE-SUBCONCLUSION", "E-WITH-CONST"]
 
 TOKEN = re.compile(r"""(?P<comment>\(\*.*?\*\))|(?P<space>\s+)
-    |(?P<number>[+-]?\d[\d_]*(?:\.\d[\d_]*)?(?:[eE][+-]?\d+)?)
+    |(?P<number>[+-]?\d[\d_]*(?:\.[\d_]+)?(?:[eE][+-]?[\d_]+)?)
     |(?P<name>[A-Za-z_]\w*)|(?P<punct>:=|[():;,])""", re.S | re.X)
+# IEC 61131-3 spelling: single underscores only between digits or letters; an exponent needs a '.'
+NUMBER = re.compile(r"[+-]?\d(?:_?\d)*(?:\.\d(?:_?\d)*(?:[eE][+-]?\d(?:_?\d)*)?)?\Z")
+IDENTIFIER = re.compile(r"(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*\Z")
+
+# keywords of Table 7 and the data type names: none of them may name anything
+RESERVED = set("""ACCU ACT AND ASUM BDIF BSUM COA COG COGS DEFAULT DEFUZZIFY END_DEFUZZIFY
+    END_FUNCTION_BLOCK END_FUZZIFY END_OPTIONS END_RULEBLOCK END_VAR FUNCTION_BLOCK FUZZIFY IF IS LM
+    MAX METHOD MIN NC NOT NSUM OPTIONS OR PROD RANGE RM RULE RULEBLOCK TERM THEN VAR VAR_INPUT
+    VAR_OUTPUT WITH REAL LREAL SINT INT DINT LINT USINT UINT UDINT ULINT""".split())
 
 
 # integer data types (IEC 61131-3) and their ranges; REAL and LREAL are the floating ones
@@ -44,18 +53,25 @@ class Reject(Exception):
 
 
 def tokenize(text):
-    """(kind, value, line) triples; kind is 'number', 'name', a punctuation mark, or 'eof'."""
+    """(kind, value, line) triples; kind is 'number', 'name', a punctuation mark, 'eof', or 'bad'
+    (a message, reported only when the parser gets there, so that earlier errors come first)."""
     tokens, pos, line = [], 0, 1
     while pos < len(text):
         m = TOKEN.match(text, pos)
         if not m:
             what = "comment is never closed" if text.startswith("(*", pos) else "unexpected %r" % text[pos]
-            raise Reject(what, line)
+            tokens.append(("bad", what, line))
+            break
         kind, value = m.lastgroup, m.group()
         if kind == "number":
-            tokens.append(("number", float(value.replace("_", "")), line))
-        elif kind in ("name", "punct"):
-            tokens.append((kind if kind == "name" else value, value, line))
+            good = NUMBER.match(value)
+            tokens.append(("number", float(value.replace("_", "")), line) if good
+                          else ("bad", "malformed number %r" % value, line))
+        elif kind == "name":
+            tokens.append(("name", value, line) if IDENTIFIER.match(value)
+                          else ("bad", "malformed identifier %r" % value, line))
+        elif kind == "punct":
+            tokens.append((value, value, line))
         line += value.count("\n")
         pos = m.end()
     tokens.append(("eof", None, line))
@@ -69,14 +85,18 @@ class Parser:
         self.tokens, self.i = tokenize(text), 0
 
     def peek(self):
+        kind, value, line = self.tokens[self.i]
+        if kind == "bad":
+            raise Reject(value, line)
         return self.tokens[self.i]
 
     def line(self):
         return self.peek()[2]
 
     def take(self):
+        token = self.peek()
         self.i += 1
-        return self.tokens[self.i - 1]
+        return token
 
     def at(self, *words):
         kind, value, _ = self.peek()
@@ -94,6 +114,8 @@ class Parser:
     def name(self):
         if self.peek()[0] != "name":
             self.fail("a name")
+        if self.peek()[1].upper() in RESERVED:
+            raise Reject("%s is a keyword and cannot be used as a name" % self.peek()[1], self.line())
         return self.take()[1]
 
     def number(self):
@@ -105,6 +127,8 @@ class Parser:
         raise Reject("%s is not supported at the Basic Level" % (what or repr(self.peek()[1])), self.line())
 
     def program(self):
+        if self.at("eof"):
+            raise Reject("the text holds no FUNCTION_BLOCK", 1)
         blocks = [self.block()]
         while not self.at("eof"):
             blocks.append(self.block())
@@ -115,10 +139,16 @@ class Parser:
         fb = {"name": self.name(), "inputs": {}, "outputs": {}, "fuzzify": {}, "defuzzify": {}, "rules": None}
         sections = {"VAR_INPUT": self.variables, "VAR_OUTPUT": self.variables, "FUZZIFY": self.fuzzify,
                     "DEFUZZIFY": self.defuzzify, "RULEBLOCK": self.ruleblock}
+        order = ["VAR_INPUT", "FUZZIFY", "DEFUZZIFY", "RULEBLOCK"]  # the order 5.4 prescribes
+        last = 0
         while not self.at("END_FUNCTION_BLOCK"):
             keyword = str(self.peek()[1]).upper()
             if keyword not in sections:
                 self.fail("END_FUNCTION_BLOCK") if self.at("eof") else self.unsupported()
+            rank = order.index(keyword.replace("VAR_OUTPUT", "VAR_INPUT"))
+            if rank < last:
+                raise Reject("%s must come before %s" % (keyword, order[last]), self.line())
+            last = rank
             sections[keyword](fb)
         self.take()
         resolve(fb)
@@ -140,6 +170,9 @@ class Parser:
                 self.take()
                 init = self.number()
             self.expect(";")
+            low, high = INTEGERS.get(dtype, (-math.inf, math.inf))
+            if not low <= init <= high or dtype in INTEGERS and init != int(init):
+                raise Reject("initial value %s does not fit %s" % (init, dtype), line)
             for n in names:
                 if n.lower() in fb["inputs"] or n.lower() in fb["outputs"]:
                     raise Reject("variable %s is declared twice" % n, line)
@@ -168,6 +201,8 @@ class Parser:
             self.expect(";")
             if not 2 <= len(points) <= 3 or any(a[0] > b[0] for a, b in zip(points, points[1:])):
                 raise Reject("term %s needs 2 or 3 points in ascending order" % term, line)
+            if any(not 0 <= y <= 1 for _, y in points):
+                raise Reject("term %s has a degree outside [0, 1]" % term, line)
             if term in terms:
                 raise Reject("term %s is defined twice" % term, line)
             terms[term] = points
@@ -179,10 +214,17 @@ class Parser:
         if var not in fb["outputs"] or var in fb["defuzzify"]:
             raise Reject("DEFUZZIFY %s: not a declared output, or defuzzified twice" % var, line)
         out = fb["defuzzify"][var] = {"terms": {}, "method": None, "default": None}
+        order, last = ["TERM", "METHOD", "DEFAULT"], 0  # terms, then METHOD, then DEFAULT, once each
         while not self.at("END_DEFUZZIFY"):
-            keyword = str(self.take()[1]).upper()
+            line, keyword = self.line(), str(self.take()[1]).upper()
+            rank = order.index(keyword) if keyword in order else -1
+            if rank >= 0 and (rank < last or rank == last > 0):
+                raise Reject("%s is out of place (order: TERMs, METHOD, DEFAULT; once each)" % keyword, line)
+            last = max(last, rank)
             if keyword == "TERM":
-                term = self.name().lower()
+                line, term = self.line(), self.name().lower()
+                if term in out["terms"]:
+                    raise Reject("term %s is defined twice" % term, line)
                 self.expect(":=")
                 out["terms"][term] = self.number()
             elif keyword == "METHOD":
@@ -204,15 +246,19 @@ class Parser:
             self.unsupported("a second RULEBLOCK")
         start = self.take()[2]
         self.name()
-        rules, declared = [], set()
+        rules, declared, names = [], set(), set()
         fb["rules"] = rules
+        order, last = ["AND", "ACT", "ACCU", "RULE"], -1  # operators, ACT, ACCU, then the rules
         while not self.at("END_RULEBLOCK"):
-            if self.at("RULE"):
-                rules.append(self.rule())
-                continue
             keyword = str(self.peek()[1]).upper()
-            if keyword not in SETTINGS:
+            if keyword not in order:
                 self.unsupported()
+            if order.index(keyword) < last or order.index(keyword) == last < 3:
+                raise Reject("%s is out of place (order: AND, ACT, ACCU, rules)" % keyword, self.line())
+            last = order.index(keyword)
+            if keyword == "RULE":
+                rules.append(self.rule(names))
+                continue
             self.take()
             self.expect(":")
             if not self.at(*SETTINGS[keyword]):
@@ -221,18 +267,25 @@ class Parser:
             self.expect(";")
             declared.add(keyword)
         self.take()
-        if "ACCU" not in declared or any(len(r["if"]) > 1 for r in rules) and "AND" not in declared:
-            raise Reject("the rule block needs ACCU: MAX (and AND: MIN when a rule uses AND)", start)
+        if "ACCU" not in declared:
+            raise Reject("the rule block needs ACCU: MAX", start)
+        uses_and = [r["and"] for r in rules if r["and"]]
+        if uses_and and "AND" not in declared:
+            raise Reject("AND is used but the rule block does not declare AND: MIN", uses_and[0])
 
-    def rule(self):
+    def rule(self, names):
         self.take()
         if self.peek()[0] not in ("name", "number"):
             self.fail("a rule name or number")
-        self.take()
+        line, name = self.line(), str(self.take()[1]).lower()
+        if name in names:
+            raise Reject("rule %s is defined twice" % name, line)
+        names.add(name)
         self.expect(":")
         self.expect("IF")
-        conditions = [self.subcondition()]
+        conditions, and_line = [self.subcondition()], None
         while self.at("AND"):
+            and_line = and_line or self.line()
             self.take()
             conditions.append(self.subcondition())
         if not self.at("THEN"):
@@ -240,7 +293,7 @@ class Parser:
         self.take()
         line, var = self.line(), self.name().lower()
         self.expect("IS")
-        rule = {"if": conditions, "then": (var, self.name().lower(), line), "with": 1.0}
+        rule = {"if": conditions, "then": (var, self.name().lower(), line), "with": 1.0, "and": and_line}
         if self.at("WITH"):
             self.take()
             rule["with"] = self.number()
