@@ -2,16 +2,18 @@
 """basic_iut.py - a small FCL implementation that fclcert can certify as a separate process.
 
 It realises the Basic Level of IEC 61131-7 (Table 8) and one extension, a constant WITH (so that
-the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL or LREAL, input terms of at most three
-constant points, singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a
-value or NC, one rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is
-rejected with the line where it starts.
+the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL, LREAL or an integer type
+(integer outputs rounded half away from zero), input terms of at most three constant points,
+singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a value or NC, one
+rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is rejected with the
+line where it starts.
 
 It speaks fclcert's JSON-lines protocol (docs/iut-protocol.md): one request per line on stdin,
 one reply per line on stdout. Try it:
     fclcert certify --iut 'process:python3 examples/iut/basic_iut.py' --level basic
 """
 import json
+import math
 import re
 import sys
 
@@ -20,9 +22,23 @@ CLAIMS = ["B-FB", "B-IN-TERM", "B-OUT-SINGLETON", "B-AND-MIN", "B-ACCU-MAX", "B-
           "B-ONE-SUBCONCLUSION", "E-WITH-CONST"]
 
 TOKEN = re.compile(r"""(?P<comment>\(\*.*?\*\))|(?P<space>\s+)
-    |(?P<number>[+-]?\d[\d_]*(?:\.\d[\d_]*)?(?:[eE][+-]?\d+)?)
+    |(?P<number>[+-]?\d[\d_]*(?:\.[\d_]+)?(?:[eE][+-]?[\d_]+)?)
     |(?P<name>[A-Za-z_]\w*)|(?P<punct>:=|[():;,])""", re.S | re.X)
+# IEC 61131-3 spelling: single underscores only between digits or letters; an exponent needs a '.'
+NUMBER = re.compile(r"[+-]?\d(?:_?\d)*(?:\.\d(?:_?\d)*(?:[eE][+-]?\d(?:_?\d)*)?)?\Z")
+IDENTIFIER = re.compile(r"(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*\Z")
 
+# keywords of Table 7 and the data type names: none of them may name anything
+RESERVED = set("""ACCU ACT AND ASUM BDIF BSUM COA COG COGS DEFAULT DEFUZZIFY END_DEFUZZIFY
+    END_FUNCTION_BLOCK END_FUZZIFY END_OPTIONS END_RULEBLOCK END_VAR FUNCTION_BLOCK FUZZIFY IF IS LM
+    MAX METHOD MIN NC NOT NSUM OPTIONS OR PROD RANGE RM RULE RULEBLOCK TERM THEN VAR VAR_INPUT
+    VAR_OUTPUT WITH REAL LREAL SINT INT DINT LINT USINT UINT UDINT ULINT""".split())
+
+
+# integer data types (IEC 61131-3) and their ranges; REAL and LREAL are the floating ones
+INTEGERS = {"SINT": (-2**7, 2**7 - 1), "INT": (-2**15, 2**15 - 1), "DINT": (-2**31, 2**31 - 1),
+            "LINT": (-2**63, 2**63 - 1), "USINT": (0, 2**8 - 1), "UINT": (0, 2**16 - 1),
+            "UDINT": (0, 2**32 - 1), "ULINT": (0, 2**64 - 1)}
 
 # what a rule block may declare, and the algorithms accepted (activation does not matter for singletons)
 SETTINGS = {"AND": ("MIN",), "ACT": ("MIN", "PROD"), "ACCU": ("MAX",)}
@@ -37,18 +53,25 @@ class Reject(Exception):
 
 
 def tokenize(text):
-    """(kind, value, line) triples; kind is 'number', 'name', a punctuation mark, or 'eof'."""
+    """(kind, value, line) triples; kind is 'number', 'name', a punctuation mark, 'eof', or 'bad'
+    (a message, reported only when the parser gets there, so that earlier errors come first)."""
     tokens, pos, line = [], 0, 1
     while pos < len(text):
         m = TOKEN.match(text, pos)
         if not m:
             what = "comment is never closed" if text.startswith("(*", pos) else "unexpected %r" % text[pos]
-            raise Reject(what, line)
+            tokens.append(("bad", what, line))
+            break
         kind, value = m.lastgroup, m.group()
         if kind == "number":
-            tokens.append(("number", float(value.replace("_", "")), line))
-        elif kind in ("name", "punct"):
-            tokens.append((kind if kind == "name" else value, value, line))
+            good = NUMBER.match(value)
+            tokens.append(("number", float(value.replace("_", "")), line) if good
+                          else ("bad", "malformed number %r" % value, line))
+        elif kind == "name":
+            tokens.append(("name", value, line) if IDENTIFIER.match(value)
+                          else ("bad", "malformed identifier %r" % value, line))
+        elif kind == "punct":
+            tokens.append((value, value, line))
         line += value.count("\n")
         pos = m.end()
     tokens.append(("eof", None, line))
@@ -62,14 +85,18 @@ class Parser:
         self.tokens, self.i = tokenize(text), 0
 
     def peek(self):
+        kind, value, line = self.tokens[self.i]
+        if kind == "bad":
+            raise Reject(value, line)
         return self.tokens[self.i]
 
     def line(self):
         return self.peek()[2]
 
     def take(self):
+        token = self.peek()
         self.i += 1
-        return self.tokens[self.i - 1]
+        return token
 
     def at(self, *words):
         kind, value, _ = self.peek()
@@ -87,6 +114,8 @@ class Parser:
     def name(self):
         if self.peek()[0] != "name":
             self.fail("a name")
+        if self.peek()[1].upper() in RESERVED:
+            raise Reject("%s is a keyword and cannot be used as a name" % self.peek()[1], self.line())
         return self.take()[1]
 
     def number(self):
@@ -98,6 +127,8 @@ class Parser:
         raise Reject("%s is not supported at the Basic Level" % (what or repr(self.peek()[1])), self.line())
 
     def program(self):
+        if self.at("eof"):
+            raise Reject("the text holds no FUNCTION_BLOCK", 1)
         blocks = [self.block()]
         while not self.at("eof"):
             blocks.append(self.block())
@@ -108,10 +139,16 @@ class Parser:
         fb = {"name": self.name(), "inputs": {}, "outputs": {}, "fuzzify": {}, "defuzzify": {}, "rules": None}
         sections = {"VAR_INPUT": self.variables, "VAR_OUTPUT": self.variables, "FUZZIFY": self.fuzzify,
                     "DEFUZZIFY": self.defuzzify, "RULEBLOCK": self.ruleblock}
+        order = ["VAR_INPUT", "FUZZIFY", "DEFUZZIFY", "RULEBLOCK"]  # the order 5.4 prescribes
+        last = 0
         while not self.at("END_FUNCTION_BLOCK"):
             keyword = str(self.peek()[1]).upper()
             if keyword not in sections:
                 self.fail("END_FUNCTION_BLOCK") if self.at("eof") else self.unsupported()
+            rank = order.index(keyword.replace("VAR_OUTPUT", "VAR_INPUT"))
+            if rank < last:
+                raise Reject("%s must come before %s" % (keyword, order[last]), self.line())
+            last = rank
             sections[keyword](fb)
         self.take()
         resolve(fb)
@@ -125,18 +162,21 @@ class Parser:
                 self.take()
                 names.append(self.name())
             self.expect(":")
-            if not self.at("REAL", "LREAL"):
+            if not self.at("REAL", "LREAL", *INTEGERS):
                 self.unsupported("data type %r" % self.peek()[1])
-            self.take()
+            dtype = self.take()[1].upper()
             init = 0.0
             if self.at(":="):
                 self.take()
                 init = self.number()
             self.expect(";")
+            low, high = INTEGERS.get(dtype, (-math.inf, math.inf))
+            if not low <= init <= high or dtype in INTEGERS and init != int(init):
+                raise Reject("initial value %s does not fit %s" % (init, dtype), line)
             for n in names:
                 if n.lower() in fb["inputs"] or n.lower() in fb["outputs"]:
                     raise Reject("variable %s is declared twice" % n, line)
-                table[n.lower()] = {"name": n, "init": init}
+                table[n.lower()] = {"name": n, "init": init, "type": dtype}
         self.take()
 
     def fuzzify(self, fb):
@@ -156,9 +196,13 @@ class Parser:
                 self.expect(",")
                 points.append((x, self.number()))
                 self.expect(")")
+                if self.at(",") and self.tokens[self.i + 1][0] == "(":
+                    self.take()  # points may be separated by commas, as in figure 5
             self.expect(";")
             if not 2 <= len(points) <= 3 or any(a[0] > b[0] for a, b in zip(points, points[1:])):
                 raise Reject("term %s needs 2 or 3 points in ascending order" % term, line)
+            if any(not 0 <= y <= 1 for _, y in points):
+                raise Reject("term %s has a degree outside [0, 1]" % term, line)
             if term in terms:
                 raise Reject("term %s is defined twice" % term, line)
             terms[term] = points
@@ -170,10 +214,17 @@ class Parser:
         if var not in fb["outputs"] or var in fb["defuzzify"]:
             raise Reject("DEFUZZIFY %s: not a declared output, or defuzzified twice" % var, line)
         out = fb["defuzzify"][var] = {"terms": {}, "method": None, "default": None}
+        order, last = ["TERM", "METHOD", "DEFAULT"], 0  # terms, then METHOD, then DEFAULT, once each
         while not self.at("END_DEFUZZIFY"):
-            keyword = str(self.take()[1]).upper()
+            line, keyword = self.line(), str(self.take()[1]).upper()
+            rank = order.index(keyword) if keyword in order else -1
+            if rank >= 0 and (rank < last or rank == last > 0):
+                raise Reject("%s is out of place (order: TERMs, METHOD, DEFAULT; once each)" % keyword, line)
+            last = max(last, rank)
             if keyword == "TERM":
-                term = self.name().lower()
+                line, term = self.line(), self.name().lower()
+                if term in out["terms"]:
+                    raise Reject("term %s is defined twice" % term, line)
                 self.expect(":=")
                 out["terms"][term] = self.number()
             elif keyword == "METHOD":
@@ -195,15 +246,19 @@ class Parser:
             self.unsupported("a second RULEBLOCK")
         start = self.take()[2]
         self.name()
-        rules, declared = [], set()
+        rules, declared, names = [], set(), set()
         fb["rules"] = rules
+        order, last = ["AND", "ACT", "ACCU", "RULE"], -1  # operators, ACT, ACCU, then the rules
         while not self.at("END_RULEBLOCK"):
-            if self.at("RULE"):
-                rules.append(self.rule())
-                continue
             keyword = str(self.peek()[1]).upper()
-            if keyword not in SETTINGS:
+            if keyword not in order:
                 self.unsupported()
+            if order.index(keyword) < last or order.index(keyword) == last < 3:
+                raise Reject("%s is out of place (order: AND, ACT, ACCU, rules)" % keyword, self.line())
+            last = order.index(keyword)
+            if keyword == "RULE":
+                rules.append(self.rule(names))
+                continue
             self.take()
             self.expect(":")
             if not self.at(*SETTINGS[keyword]):
@@ -212,18 +267,25 @@ class Parser:
             self.expect(";")
             declared.add(keyword)
         self.take()
-        if "ACCU" not in declared or any(len(r["if"]) > 1 for r in rules) and "AND" not in declared:
-            raise Reject("the rule block needs ACCU: MAX (and AND: MIN when a rule uses AND)", start)
+        if "ACCU" not in declared:
+            raise Reject("the rule block needs ACCU: MAX", start)
+        uses_and = [r["and"] for r in rules if r["and"]]
+        if uses_and and "AND" not in declared:
+            raise Reject("AND is used but the rule block does not declare AND: MIN", uses_and[0])
 
-    def rule(self):
+    def rule(self, names):
         self.take()
         if self.peek()[0] not in ("name", "number"):
             self.fail("a rule name or number")
-        self.take()
+        line, name = self.line(), str(self.take()[1]).lower()
+        if name in names:
+            raise Reject("rule %s is defined twice" % name, line)
+        names.add(name)
         self.expect(":")
         self.expect("IF")
-        conditions = [self.subcondition()]
+        conditions, and_line = [self.subcondition()], None
         while self.at("AND"):
+            and_line = and_line or self.line()
             self.take()
             conditions.append(self.subcondition())
         if not self.at("THEN"):
@@ -231,7 +293,7 @@ class Parser:
         self.take()
         line, var = self.line(), self.name().lower()
         self.expect("IS")
-        rule = {"if": conditions, "then": (var, self.name().lower(), line), "with": 1.0}
+        rule = {"if": conditions, "then": (var, self.name().lower(), line), "with": 1.0, "and": and_line}
         if self.at("WITH"):
             self.take()
             rule["with"] = self.number()
@@ -262,7 +324,10 @@ def resolve(fb):
 
 
 def membership(points, x):
-    """Linear between points, constant beyond the outer ones; at a vertical edge the later point wins."""
+    """Linear between points, constant beyond the outer ones; at a vertical edge the larger degree."""
+    at_x = [y for px, y in points if px == x]
+    if at_x:
+        return max(at_x)
     if x <= points[0][0]:
         return points[0][1]
     for (x1, y1), (x2, y2) in zip(points, points[1:]):
@@ -281,9 +346,20 @@ def evaluate(fb, state):
     for var, out in fb["defuzzify"].items():
         fired = [(d, out["terms"][t]) for (v, t), d in degrees.items() if v == var and d > 0]
         if fired:
-            state["out"][var] = sum(d * x for d, x in fired) / sum(d for d, _ in fired)
+            state["out"][var] = crisp(fb["outputs"][var], sum(d * x for d, x in fired) / sum(d for d, _ in fired))
         elif not isinstance(out["default"], str):
-            state["out"][var] = out["default"]  # a DEFAULT value; NC keeps the last one
+            state["out"][var] = crisp(fb["outputs"][var], out["default"])  # a DEFAULT value; NC keeps the last one
+
+
+def crisp(output, value):
+    """An integer output gets the value rounded half away from zero, and it must fit its type."""
+    if output["type"] not in INTEGERS:
+        return value
+    rounded = math.floor(abs(value) + 0.5) * (1 if value >= 0 else -1)
+    low, high = INTEGERS[output["type"]]
+    if not low <= rounded <= high:
+        raise ValueError("%s = %s does not fit %s" % (output["name"], rounded, output["type"]))
+    return float(rounded)
 
 
 class Session:

@@ -17,6 +17,7 @@ public final class Iuts {
         if (spec == null || spec.isBlank()) {
             throw new IutException(IutException.Kind.INFRA, "no implementation under test given");
         }
+        spec = spec.strip();
         if (spec.equals("reference")) {
             return new ReferenceIut();
         }

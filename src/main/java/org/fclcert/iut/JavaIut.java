@@ -45,6 +45,7 @@ final class JavaIut implements ImplementationUnderTest {
     private FclProgram program;
     private List<String> blocks = List.of();
     private final Map<String, FclInstance> instances = new HashMap<>();
+    private final Map<String, List<String>> outputs = new HashMap<>();
 
     private JavaIut(String spec, IutOptions options, URLClassLoader loader) {
         this.spec = spec;
@@ -120,6 +121,7 @@ final class JavaIut implements ImplementationUnderTest {
         programText = null;
         blocks = List.of();
         instances.clear();
+        outputs.clear();
         FclLoadResult result = call("load", () -> vendor.load(fcl), Kind.CRASH);
         if (result instanceof FclLoadResult.Rejected rejected) {
             return new LoadOutcome.Rejected(rejected.message(), rejected.line());
@@ -138,8 +140,8 @@ final class JavaIut implements ImplementationUnderTest {
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
         String name = blockName(block);
         FclInstance instance = instance(name);
-        List<String> outputs = DeclaredOutputs.of(programText, name);
-        return call("eval", () -> evaluate(instance, inputs, outputs), Kind.CRASH);
+        List<String> names = outputs.computeIfAbsent(Names.key(name), k -> DeclaredOutputs.of(programText, name));
+        return call("eval", () -> evaluate(instance, inputs, names), Kind.CRASH);
     }
 
     private static Map<String, Double> evaluate(FclInstance instance, Map<String, Double> inputs, List<String> outputs)

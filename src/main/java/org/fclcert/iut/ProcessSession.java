@@ -92,6 +92,7 @@ final class ProcessSession {
         process.destroyForcibly();
         tree.forEach(ProcessHandle::destroyForcibly);
         writer.shutdownNow();
+        replies.stop();
         exitCode(1000);
         tree.forEach(ProcessSession::awaitExit);
     }

@@ -29,13 +29,19 @@ final class ReplyReader {
     private final BlockingQueue<Event> events = new LinkedBlockingQueue<>(4);
     private final int maxLineBytes;
     private final ByteArrayOutputStream line = new ByteArrayOutputStream();
+    private final Thread reader;
     private boolean skipping;
 
     ReplyReader(InputStream stdout, int maxLineBytes, String threadName) {
         this.maxLineBytes = maxLineBytes;
-        Thread reader = new Thread(() -> read(stdout), threadName);
+        this.reader = new Thread(() -> read(stdout), threadName);
         reader.setDaemon(true);
         reader.start();
+    }
+
+    /** Frees the reader thread if it waits for room to hand over a line nobody will take any more. */
+    void stop() {
+        reader.interrupt();
     }
 
     /** The next event, or null when none came within the time. */

@@ -14,30 +14,31 @@ import org.fclcert.corpus.CorpusCase;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.corpus.OutputScales;
 import org.fclcert.corpus.Vector;
+import org.fclcert.model.ConformanceLevel;
 import org.junit.jupiter.api.Test;
 
 /**
- * Both example Basic Level implementations — the reference and the Python example of the protocol
- * docs — run the Basic part of the corpus cleanly. A small, independent cross-check of the corpus,
- * the adapters and the example; the harness proper does much more (reverse order, export, reports).
+ * The Python example of docs/iut-protocol.md, an independent Basic Level implementation, runs the
+ * Basic Level cases of the corpus (positive and negative) cleanly through the process adapter: a cross-check of the corpus, the
+ * adapter and the example (the reference is held to the whole corpus by the corpus tests). The
+ * harness proper does much more (reverse order, export, reports).
  */
 class BasicCorpusTest {
 
     @Test
-    void theReferenceAndThePythonExamplePassEveryBasicCase() throws CorpusException, IutException {
+    void thePythonExamplePassesEveryBasicCase() throws CorpusException, IutException {
         Corpus corpus = Corpus.load(Path.of("conformance"));
         List<CorpusCase> basic = corpus.cases().stream()
-                .filter(c -> c.path().toString().contains("basic")).toList();
-        assertTrue(basic.size() >= 10, "only " + basic.size() + " basic cases");
+                .filter(c -> c.level() == ConformanceLevel.BASIC).toList();
+        assertTrue(basic.stream().anyMatch(CorpusCase::expectReject) && basic.size() >= 20, "only " + basic.size() + " basic cases");
         IutOptions options = IutOptions.defaults().withTimeout(Duration.ofSeconds(5));
-        for (String spec : List.of("reference", BasicIutExampleTest.SPEC)) {
-            try (ImplementationUnderTest iut = Iuts.open(spec, options)) {
-                List<String> problems = new ArrayList<>();
-                for (CorpusCase c : basic) {
-                    run(iut, c, problems);
-                }
-                assertEquals(List.of(), problems, spec);
+        try (ImplementationUnderTest iut = Iuts.open(BasicIutExampleTest.SPEC, options)) {
+            List<String> problems = new ArrayList<>();
+            for (CorpusCase c : basic) {
+                run(iut, c, problems);
             }
+            assertEquals(List.of(), problems,
+                    "examples/iut/basic_iut.py and the Basic corpus disagree: fix the example, or the case");
         }
     }
 

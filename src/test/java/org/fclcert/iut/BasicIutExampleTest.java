@@ -2,6 +2,7 @@ package org.fclcert.iut;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
@@ -98,7 +99,7 @@ class BasicIutExampleTest {
 
     private static String oneRule(String defaultValue) {
         return String.join("\n",
-                "FUNCTION_BLOCK nc",
+                "FUNCTION_BLOCK hold",
                 "VAR_INPUT x : REAL; END_VAR",
                 "VAR_OUTPUT y : REAL; END_VAR",
                 "FUZZIFY x TERM low := (0, 1) (10, 0); TERM high := (0, 0) (10, 1); END_FUZZIFY",
@@ -145,6 +146,22 @@ class BasicIutExampleTest {
         assertRejectedAt(21, VALVE.replace("METHOD: CoGS", "METHOD: CoG"));
     }
 
+    @Test
+    void programsTheStandardForbidsAreRejectedAtTheRightLine() throws IutException {
+        // line 3: MAX is a keyword and cannot name a variable
+        assertRejectedAt(3, VALVE.replace("temp:    REAL;", "max:    REAL;"));
+        // line 18: an integer literal may not have two underscores in a row
+        assertRejectedAt(18, VALVE.replace("-100;", "-1__00;"));
+        // line 22: DEFAULT given twice
+        assertRejectedAt(22, VALVE.replace("DEFAULT     := 0;", "DEFAULT     := 0; DEFAULT := 1;"));
+        // line 16: FUZZIFY temp after the DEFUZZIFY block, moved up to lines 9-15, breaks the order of 5.4
+        String defuzzify = VALVE.substring(VALVE.indexOf("DEFUZZIFY valve"), VALVE.indexOf("RULEBLOCK"));
+        String reordered = VALVE.replace(defuzzify, "").replace("FUZZIFY temp", defuzzify + "FUZZIFY temp");
+        assertRejectedAt(16, reordered);
+        // line 10: a degree above 1
+        assertRejectedAt(10, VALVE.replace("(27, 0);", "(27, 2);"));
+    }
+
     private static void assertRejectedAt(int line, String program) throws IutException {
         LoadOutcome.Rejected rejected = assertInstanceOf(LoadOutcome.Rejected.class, iut.load(program));
         assertEquals(OptionalInt.of(line), rejected.line(), rejected.message());
@@ -153,8 +170,7 @@ class BasicIutExampleTest {
     @Test
     void anUnknownInputIsAnEvaluationError() throws IutException {
         iut.load(VALVE);
-        IutException e = org.junit.jupiter.api.Assertions.assertThrows(IutException.class,
-                () -> iut.eval(null, Map.of("humidity", 1.0)));
+        IutException e = assertThrows(IutException.class, () -> iut.eval(null, Map.of("humidity", 1.0)));
         assertEquals(IutException.Kind.EVAL_ERROR, e.kind());
         assertTrue(e.getMessage().contains("humidity"), e.getMessage());
     }

@@ -2,7 +2,6 @@ package org.fclcert.iut;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -184,6 +183,19 @@ class ProcessIutTest {
             long bytes = iut.peakMemoryBytes().orElseThrow();
             // a Python interpreter needs a few MiB and certainly less than 1 GiB
             assertTrue(bytes > 1_000_000 && bytes < 1L << 30, bytes + " bytes");
+        }
+    }
+
+    @Test
+    void anIutThatStopsReadingCannotBlockALargeRequestPastTheTimeout() throws IutException {
+        IutOptions halfSecond = FAST.withTimeout(Duration.ofMillis(500));
+        try (ImplementationUnderTest iut = open(halfSecond, "deaf.py")) {
+            assertEquals("deaf", iut.hello().name());
+            // 4 MB is far more than a pipe buffers: writing it blocks until the process is killed
+            String huge = "(*" + "x".repeat(4_000_000) + "*)\n" + PROGRAM;
+            long start = System.nanoTime();
+            assertEquals(Kind.TIMEOUT, assertThrows(IutException.class, () -> iut.load(huge)).kind());
+            assertTrue((System.nanoTime() - start) / 1_000_000 < 5000);
         }
     }
 
