@@ -2,7 +2,7 @@
 """basic_iut.py - a small FCL implementation that fclcert can certify as a separate process.
 
 It realises the Basic Level of IEC 61131-7 (Table 8) and one extension, a constant WITH (so that
-the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL, input terms of at most three
+the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL or LREAL, input terms of at most three
 constant points, singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a
 value or NC, one rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is
 rejected with the line where it starts.
@@ -125,7 +125,7 @@ class Parser:
                 self.take()
                 names.append(self.name())
             self.expect(":")
-            if not self.at("REAL"):
+            if not self.at("REAL", "LREAL"):
                 self.unsupported("data type %r" % self.peek()[1])
             self.take()
             init = 0.0

@@ -259,10 +259,10 @@ EQUALS : '=';
 REAL_LITERAL  : [+-]? DIGITS '.' DIGITS EXPONENT? ;
 BASED_INTEGER : [+-]? [0-9]+ '#' [0-9a-z_]+ ;
 INTEGER       : [+-]? DIGITS ;
-// Malformed reals, reported by the reader: '.5', '5.' (not followed by a second '.'), '1E5'.
+// Malformed reals, reported by the reader: '.5' and '1E5'. ('5.' lexes as 5 and a stray '.', which
+// the reader joins again; a lexer predicate here would keep ANTLR from caching the number DFA.)
 BAD_REAL
     : [+-]? '.' DIGITS EXPONENT?
-    | [+-]? DIGITS '.' {_input.LA(1) != '.'}?
     | [+-]? DIGITS EXPONENT
     ;
 

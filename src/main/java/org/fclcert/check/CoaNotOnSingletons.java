@@ -26,7 +26,8 @@ public final class CoaNotOnSingletons implements FunctionBlockRule {
             d.terms().stream().filter(t -> t.function() instanceof MembershipFunction.Singleton).findFirst()
                     .ifPresent(t -> sink.report(finding(d.method().get().location(), "DEFUZZIFY " + d.variable()
                             + ": METHOD CoA does not apply to singletons, but term '" + t.name() + "' (line "
-                            + t.location().line() + ") is a singleton; use CoGS for singleton terms (Table 1, note 3)")));
+                            + t.location().line() + ") is a singleton; use CoGS for singleton terms"
+                            + " (Table 1, note 3)")));
         }
     }
 }

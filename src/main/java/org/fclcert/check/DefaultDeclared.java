@@ -19,7 +19,8 @@ public final class DefaultDeclared implements FunctionBlockRule {
     public void check(FunctionBlock block, DiagnosticSink sink) {
         for (Defuzzification d : block.defuzzifications()) {
             if (d.defaultValue().isEmpty()) {
-                sink.report(finding(d.location(), "DEFUZZIFY " + d.variable() + " has no DEFAULT; add 'DEFAULT := value;'"
+                sink.report(finding(d.location(), "DEFUZZIFY " + d.variable()
+                        + " has no DEFAULT; add 'DEFAULT := value;'"
                         + " or 'DEFAULT := NC;' for the output when no rule fires (5.2.3)"));
             }
         }

@@ -22,7 +22,8 @@ public final class FuzzifyOnlyInputs implements FunctionBlockRule {
         for (Fuzzification f : block.fuzzifications()) {
             scope.variable(f.variable()).filter(v -> v.kind() != VariableKind.INPUT).ifPresent(v ->
                     sink.report(finding(f.location(), "FUZZIFY " + f.variable() + ": " + Describe.variable(v)
-                            + " is declared in " + v.kind().keyword() + "; only VAR_INPUT variables are fuzzified (5.2.2)")));
+                            + " is declared in " + v.kind().keyword()
+                            + "; only VAR_INPUT variables are fuzzified (5.2.2)")));
         }
     }
 }

@@ -31,7 +31,8 @@ public final class OperatorDeclaredWhenUsed implements FunctionBlockRule {
                 Optional<Condition> use = firstOperator(rule.condition());
                 if (use.isPresent()) {
                     String op = use.get() instanceof Condition.And ? "AND" : "OR";
-                    sink.report(finding(use.get().location(), "rule " + rule.name() + " uses " + op + " but rule block '"
+                    sink.report(finding(use.get().location(), "rule " + rule.name() + " uses " + op
+                            + " but rule block '"
                             + rb.name() + "' declares no operator algorithm; add for example 'AND: MIN;'"
                             + " (its pair OR: MAX follows from Table 3) (5.2.4)"));
                     break;

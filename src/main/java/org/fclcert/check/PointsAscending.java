@@ -43,7 +43,8 @@ public final class PointsAscending implements FunctionBlockRule {
             if (previous != null && x.value() < previous.value()) {
                 sink.report(finding(list.get(i).location(), "term '" + term.name() + "' of '" + variable + "': point "
                         + (i + 1) + " has x = " + Describe.number(x.value()) + ", less than the x = "
-                        + Describe.number(previous.value()) + " before it; give points in ascending order of x (5.2.2)"));
+                        + Describe.number(previous.value())
+                        + " before it; give points in ascending order of x (5.2.2)"));
                 return;
             }
             previous = x;

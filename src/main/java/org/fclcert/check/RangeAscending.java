@@ -24,7 +24,8 @@ public final class RangeAscending implements FunctionBlockRule {
             }
             Range r = d.range().get();
             if (!(r.min().value() < r.max().value())) {
-                sink.report(finding(r.location(), "DEFUZZIFY " + d.variable() + ": RANGE (" + Describe.number(r.min().value())
+                sink.report(finding(r.location(), "DEFUZZIFY " + d.variable() + ": RANGE ("
+                        + Describe.number(r.min().value())
                         + " .. " + Describe.number(r.max().value()) + ") is empty; the minimum must be less than the"
                         + " maximum (5.2.3)"));
             }

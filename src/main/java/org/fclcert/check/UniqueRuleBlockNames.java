@@ -24,7 +24,8 @@ public final class UniqueRuleBlockNames implements FunctionBlockRule {
         for (RuleBlock rb : block.ruleBlocks()) {
             RuleBlock first = seen.putIfAbsent(Names.key(rb.name()), rb);
             if (first != null) {
-                sink.report(finding(rb.location(), "rule block '" + rb.name() + "' has the same name as the rule block '"
+                sink.report(finding(rb.location(), "rule block '" + rb.name()
+                        + "' has the same name as the rule block '"
                         + first.name() + "' at line " + first.location().line()
                         + "; each rule block needs a unique name (5.2.4)"));
             }

@@ -40,7 +40,7 @@ public final class Main implements Runnable {
     /** Runs the command line with the given output streams (tests capture them) and returns its exit code. */
     public static int run(PrintWriter out, PrintWriter err, String... args) {
         try {
-            return commandLine(out, err).execute(args);
+            return execute(commandLine(out, err), err, args);
         } finally {
             out.flush();
             err.flush();
@@ -60,7 +60,17 @@ public final class Main implements Runnable {
         return cli;
     }
 
-    private static String describe(Exception e) {
+    /** Executes; an Error (stack overflow, out of memory) bypasses picocli's handler, so it is caught here. */
+    static int execute(CommandLine cli, PrintWriter err, String... args) {
+        try {
+            return cli.execute(args);
+        } catch (Error e) {
+            err.println("fclcert: internal error: " + describe(e));
+            return ExitCodes.INTERNAL;
+        }
+    }
+
+    private static String describe(Throwable e) {
         return e.getMessage() != null ? e.getMessage() : e.getClass().getName();
     }
 

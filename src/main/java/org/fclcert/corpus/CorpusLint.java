@@ -133,6 +133,8 @@ public final class CorpusLint {
         }
 
         private void negative(Analysis analysis) {
+            // with a semantic (not a syntax) error the reader still gives a program, whose features can be checked
+            reader.read(c.path().toString(), c.programText()).program().ifPresent(this::features);
             List<Diagnostic> errors = errors(analysis);
             ExpectedError want = c.expectedError().orElseThrow();
             if (errors.size() != 1) {
@@ -171,7 +173,7 @@ public final class CorpusLint {
         }
 
         private int vectorsLine() {
-            List<String> lines = c.path().toFile().exists() ? readLines() : List.of();
+            List<String> lines = readLines();
             for (int i = 0; i < lines.size(); i++) {
                 if (lines.get(i).startsWith("vectors:")) {
                     return i + 1;

@@ -92,6 +92,13 @@ final class Defuzzifier {
         return Math.min(h, Math.max(0, t));
     }
 
+    /**
+     * Degrees within this relative distance of the supremum count as reaching it: a plateau that is
+     * flat in exact arithmetic (a clip level meeting a sum of segments, say) may carry vertices
+     * that differ in the last bits.
+     */
+    static final double TIE = 1e-12;
+
     /** Leftmost maximum: the smallest u whose degree is the supremum. */
     static double leftmostMaximum(double[] px, double[] py, int np) {
         double sup = supremum(py, np);
@@ -99,7 +106,7 @@ final class Defuzzifier {
             return Double.NaN;
         }
         for (int j = 0; j < np; j++) {
-            if (py[j] == sup) {
+            if (py[j] >= sup * (1 - TIE)) {
                 return px[j];
             }
         }
@@ -113,7 +120,7 @@ final class Defuzzifier {
             return Double.NaN;
         }
         for (int j = np - 1; j >= 0; j--) {
-            if (py[j] == sup) {
+            if (py[j] >= sup * (1 - TIE)) {
                 return px[j];
             }
         }

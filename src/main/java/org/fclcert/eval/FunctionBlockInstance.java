@@ -355,7 +355,7 @@ public final class FunctionBlockInstance {
         }
         double best = leftmost ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
         for (int t = 0; t < terms; t++) {
-            if (singletonDegree[t] == sup) {
+            if (singletonDegree[t] >= sup * (1 - Defuzzifier.TIE)) {
                 best = leftmost ? Math.min(best, singletonValue[t]) : Math.max(best, singletonValue[t]);
             }
         }

@@ -18,7 +18,7 @@ final class Pwl {
         if (u > x[n - 1]) {
             return y[n - 1];
         }
-        int i = lowerBound(x, n, u);
+        int i = n <= 8 ? linearLowerBound(x, u) : lowerBound(x, n, u);
         if (x[i] == u) {
             double max = y[i];
             for (int j = i + 1; j < n && x[j] == u; j++) {
@@ -63,6 +63,15 @@ final class Pwl {
             return y0;
         }
         return ((x1 - u) * y0 + (u - x0) * y1) / (x1 - x0);
+    }
+
+    /** First index whose x is &gt;= u, for short point lists where a scan beats bisection. */
+    private static int linearLowerBound(double[] x, double u) {
+        int i = 0;
+        while (x[i] < u) {
+            i++;
+        }
+        return i;
     }
 
     /** First index whose x is &gt;= u (n when none). */

@@ -128,7 +128,10 @@ final class SetBuilder {
         bx[nb++] = u;
     }
 
-    /** For each contribution j and breakpoint i: left limit, value and right limit at bx[i]. */
+    /**
+     * For each contribution j and breakpoint i: left limit, value and right limit at bx[i]. The
+     * breakpoints are sorted, so one forward walk over each term's points serves them all.
+     */
     private void activatedValues(double[][] cx, double[][] cy, Shape[] shapes) {
         int size = k * nb;
         if (cl.length < size) {
@@ -141,12 +144,32 @@ final class SetBuilder {
             double[] y = cy[kShape[j]];
             int n = shapes[kShape[j]].n;
             int base = j * nb;
+            int p = 0;
             for (int i = 0; i < nb; i++) {
                 double u = bx[i];
-                double v = activate(j, Pwl.degree(x, y, n, u));
-                cv[base + i] = v;
-                cl[base + i] = i == 0 ? v : activate(j, Pwl.leftLimit(x, y, n, u));
-                cr[base + i] = i == nb - 1 ? v : activate(j, Pwl.rightLimit(x, y, n, u));
+                while (p < n && x[p] < u) {
+                    p++;
+                }
+                double l;
+                double v;
+                double r;
+                if (p < n && x[p] == u) {
+                    int q = p;
+                    v = y[p];
+                    while (q + 1 < n && x[q + 1] == u) {
+                        v = Math.max(v, y[++q]);
+                    }
+                    l = y[p];
+                    r = y[q];
+                } else if (p == 0 || p == n) {
+                    l = v = r = y[p == 0 ? 0 : n - 1];
+                } else {
+                    l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
+                }
+                double av = activate(j, v);
+                cv[base + i] = av;
+                cl[base + i] = i == 0 || l == v ? av : activate(j, l);
+                cr[base + i] = i == nb - 1 || r == v ? av : activate(j, r);
             }
         }
     }

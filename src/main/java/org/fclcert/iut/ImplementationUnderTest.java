@@ -25,16 +25,21 @@ public interface ImplementationUnderTest extends AutoCloseable {
     LoadOutcome load(String fcl) throws IutException;
 
     /**
-     * Sets the given inputs on the current instance of {@code block} ({@code null} = the program's first
-     * function block), evaluates once and returns every output. The instance is kept between calls
-     * (ordered vectors of one case run on one instance); asking for another block replaces it.
+     * Sets the given inputs on the instance of {@code block} ({@code null} = the program's first function
+     * block), evaluates once and returns every output (VAR_OUTPUT names as declared). There is one
+     * instance per function block; it keeps its state between calls (the ordered vectors of one case
+     * run on one instance) until {@link #reset()} or the next {@link #load}.
      */
     Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException;
 
-    /** Fresh instance state; the program stays loaded. */
+    /** Fresh state for every instance; the program stays loaded. */
     void reset() throws IutException;
 
-    /** The loaded program written back as FCL text by the implementation; empty when it cannot export. */
+    /**
+     * The loaded program written back as FCL text by the implementation; empty when it cannot export.
+     * Asking with no program loaded is an {@link IutException.Kind#EVAL_ERROR} (or whatever a process IUT
+     * answers).
+     */
     Optional<String> export() throws IutException;
 
     /**

@@ -197,7 +197,7 @@ final class JavaIut implements ImplementationUnderTest {
     @Override
     public Optional<String> export() throws IutException {
         if (program == null) {
-            return Optional.empty();
+            throw new IutException(Kind.EVAL_ERROR, "no program is loaded");
         }
         FclProgram loaded = program;
         Optional<String> text = call("export", loaded::export, Kind.CRASH);

@@ -25,6 +25,8 @@ final class ProcessIut implements ImplementationUnderTest {
     private static final long STDERR_WAIT_MILLIS = 500;
     private static final Duration BYE_WAIT = Duration.ofSeconds(1);
     private static final int QUOTE_CHARS = 200;
+    /** A fresh process gets at least this long for its first reply: interpreters and JVMs start slowly. */
+    static final Duration STARTUP_TIMEOUT = Duration.ofSeconds(10);
 
     private final String spec;
     private final List<String> command;
@@ -174,7 +176,8 @@ final class ProcessIut implements ImplementationUnderTest {
     }
 
     private IutInfo greet() throws IutException {
-        JsonNode reply = exchange(Protocol.request("hello"));
+        Duration patience = options.timeout().compareTo(STARTUP_TIMEOUT) > 0 ? options.timeout() : STARTUP_TIMEOUT;
+        JsonNode reply = exchange(Protocol.request("hello"), patience);
         try {
             return Protocol.info(reply, spec);
         } catch (IutException e) {
@@ -184,12 +187,16 @@ final class ProcessIut implements ImplementationUnderTest {
 
     /** Sends one request and waits for its reply line: a JSON object with a boolean {@code ok} and our id. */
     private JsonNode exchange(ObjectNode request) throws IutException {
+        return exchange(request, options.timeout());
+    }
+
+    private JsonNode exchange(ObjectNode request, Duration timeout) throws IutException {
         long id = ++nextId;
         String op = request.get("op").asText();
         session.send(write(request.put("id", id)));
-        long deadline = System.nanoTime() + options.timeout().toNanos();
+        long deadline = System.nanoTime() + timeout.toNanos();
         while (true) {
-            ReplyReader.Event event = nextEvent(deadline, op);
+            ReplyReader.Event event = nextEvent(deadline, op, timeout);
             if (event instanceof ReplyReader.Line line && !line.text().isBlank()) {
                 return parse(line.text(), op, id);
             }
@@ -206,12 +213,12 @@ final class ProcessIut implements ImplementationUnderTest {
         }
     }
 
-    private ReplyReader.Event nextEvent(long deadline, String op) throws IutException {
+    private ReplyReader.Event nextEvent(long deadline, String op, Duration timeout) throws IutException {
         long left = deadline - System.nanoTime();
         try {
             ReplyReader.Event event = left > 0 ? session.next(left) : null;
             if (event == null) {
-                throw fail(Kind.TIMEOUT, "no reply to '" + op + "' within " + options.timeout().toMillis() + " ms");
+                throw fail(Kind.TIMEOUT, "no reply to '" + op + "' within " + timeout.toMillis() + " ms");
             }
             return event;
         } catch (InterruptedException e) {

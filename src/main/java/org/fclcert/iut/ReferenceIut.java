@@ -1,39 +1,133 @@
 package org.fclcert.iut;
 
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalInt;
+import org.fclcert.check.Analysis;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.LoadedProgram;
+import org.fclcert.iut.IutException.Kind;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Feature;
+import org.fclcert.model.Names;
+import org.fclcert.model.Program;
+import org.fclcert.model.Toolkit;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.write.CanonicalWriter;
 
-/** fclcert's own evaluator as an implementation under test (in process). Work in progress. */
+/**
+ * fclcert's own front end and evaluator as an implementation under test, in process: a program is
+ * rejected exactly when the strict reader or a check reports an error (the first error's code,
+ * message and line are the rejection), and evaluated by the reference evaluator otherwise. It
+ * exports with the canonical writer. Any exception other than an evaluation error is a bug in
+ * fclcert and is reported as a crash rather than thrown.
+ */
 final class ReferenceIut implements ImplementationUnderTest {
+    /** The source name diagnostics carry; the line numbers are those of the text as sent. */
+    static final String SOURCE_NAME = "<iut>";
+
+    private Program program;
+    private LoadedProgram loaded;
+    private final Map<String, FunctionBlockInstance> instances = new HashMap<>();
+
     @Override
-    public IutInfo hello() throws IutException {
-        throw notYet();
+    public IutInfo hello() {
+        List<String> claims = Arrays.stream(Feature.values()).map(Feature::id).toList();
+        return new IutInfo("fclcert reference evaluator", Toolkit.version(), "reference", claims, Map.of());
     }
 
     @Override
     public LoadOutcome load(String fcl) throws IutException {
-        throw notYet();
+        program = null;
+        loaded = null;
+        instances.clear();
+        Analysis analysis;
+        try {
+            analysis = Analysis.analyze(new StrictReader(), SOURCE_NAME, fcl);
+        } catch (RuntimeException e) {
+            throw crash("reading and checking", e);
+        }
+        if (analysis.program().isEmpty()) {
+            return rejection(analysis.diagnostics());
+        }
+        try {
+            loaded = Evaluator.load(analysis.program().get());
+        } catch (RuntimeException e) {
+            throw crash("compiling a checked program", e);
+        }
+        program = analysis.program().get();
+        return new LoadOutcome.Loaded(loaded.functionBlockNames());
+    }
+
+    private static LoadOutcome rejection(List<Diagnostic> diagnostics) {
+        return diagnostics.stream().filter(Diagnostic::isError).findFirst()
+                .map(d -> new LoadOutcome.Rejected(d.code() + ": " + d.message(),
+                        d.location().line() > 0 ? OptionalInt.of(d.location().line()) : OptionalInt.empty()))
+                .orElseGet(() -> new LoadOutcome.Rejected("the program could not be read", OptionalInt.empty()));
     }
 
     @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
-        throw notYet();
+        FunctionBlockInstance instance = instance(block);
+        try {
+            for (Map.Entry<String, Double> input : inputs.entrySet()) {
+                instance.set(input.getKey(), input.getValue());
+            }
+            instance.evaluate();
+            return new LinkedHashMap<>(instance.outputs());
+        } catch (EvaluationException e) {
+            throw new IutException(Kind.EVAL_ERROR, e.toString());
+        } catch (RuntimeException e) {
+            throw crash("evaluating", e);
+        }
+    }
+
+    private FunctionBlockInstance instance(String block) throws IutException {
+        if (loaded == null) {
+            throw new IutException(Kind.EVAL_ERROR, "no program is loaded");
+        }
+        String name = block == null ? loaded.functionBlockNames().get(0) : block;
+        FunctionBlockInstance instance = instances.get(Names.key(name));
+        if (instance == null) {
+            try {
+                instance = loaded.newInstance(name);
+            } catch (EvaluationException e) {
+                throw new IutException(Kind.EVAL_ERROR, e.toString());
+            }
+            instances.put(Names.key(name), instance);
+        }
+        return instance;
     }
 
     @Override
-    public void reset() throws IutException {
-        throw notYet();
+    public void reset() {
+        instances.clear();
     }
 
     @Override
     public Optional<String> export() throws IutException {
-        throw notYet();
+        if (program == null) {
+            throw new IutException(Kind.EVAL_ERROR, "no program is loaded");
+        }
+        try {
+            return Optional.of(new CanonicalWriter().write(program));
+        } catch (RuntimeException e) {
+            throw crash("exporting", e);
+        }
     }
 
     @Override
-    public void close() {}
+    public void close() {
+        instances.clear();
+    }
 
-    private static IutException notYet() {
-        return new IutException(IutException.Kind.INFRA, "the reference IUT is not available yet");
+    private static IutException crash(String what, RuntimeException e) {
+        return new IutException(Kind.CRASH, "the reference implementation failed while " + what + ": " + e);
     }
 }

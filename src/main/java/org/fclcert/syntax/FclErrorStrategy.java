@@ -19,6 +19,15 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
     private int suppressThrough = -1;
     private boolean reported;
 
+    /** Thrown to stop parsing a text with more errors than worth reporting. */
+    static final class StopReading extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        StopReading() {
+            super("too many syntax errors", null, false, false);
+        }
+    }
+
     FclErrorStrategy(ReaderDiagnostics diagnostics, List<Token> tokens) {
         this.diagnostics = diagnostics;
         this.tokens = tokens;
@@ -68,6 +77,9 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
         SyntaxMessages.Message m = SyntaxMessages.describe(recognizer.getContext(), offending, expected, tokens);
         diagnostics.error(offending, m.code(), m.text());
         suppressThrough = endOfStatement(index);
+        if (diagnostics.tooMany()) {
+            throw new StopReading();
+        }
     }
 
     /**

@@ -33,7 +33,7 @@ final class NumberSyntax {
         return Optional.empty();
     }
 
-    private static String badRealProblem(String text) {
+    static String badRealProblem(String text) {
         String unsigned = stripSign(text);
         if (unsigned.startsWith(".")) {
             return "'" + text + "' is not a valid real literal: IEC 61131-3 requires a digit before the decimal point"

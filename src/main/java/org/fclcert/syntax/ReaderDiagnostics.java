@@ -18,10 +18,14 @@ final class ReaderDiagnostics {
     static final int MAX_ERRORS = 25;
     /** Warnings of one code reported before the rest are summarised in one warning. */
     static final int MAX_WARNINGS_PER_CODE = 25;
+    /** Errors kept at most; past this many the reader stops (memory stays bounded on any input). */
+    static final int STOP_AFTER_ERRORS = 1_000;
 
     private final String sourceName;
     private final List<Diagnostic> all = new ArrayList<>();
     private final java.util.Set<SourceLocation> errorPlaces = new java.util.TreeSet<>(SourceLocation::compareTo);
+    private final Map<String, Integer> warningCounts = new HashMap<>();
+    private int errorCount;
     private boolean errors;
     private boolean endOfTextExplained;
 
@@ -44,9 +48,17 @@ final class ReaderDiagnostics {
     /** Reports an error, unless one is already reported at the same place (one message per place). */
     void error(SourceLocation at, SyntaxCode code, String message) {
         errors = true;
-        if (errorPlaces.add(at)) {
+        if (errorCount >= STOP_AFTER_ERRORS) {
+            errorCount++;
+        } else if (errorPlaces.add(at)) {
+            errorCount++;
             all.add(Diagnostic.error(at, code.code(), message));
         }
+    }
+
+    /** True once so many errors are known that reading further would only add noise. */
+    boolean tooMany() {
+        return errorCount >= STOP_AFTER_ERRORS;
     }
 
     /** Marks that an error already explains why the text ends early (an unterminated comment). */
@@ -59,7 +71,10 @@ final class ReaderDiagnostics {
     }
 
     void warning(Token at, SyntaxCode code, String message) {
-        all.add(Diagnostic.warning(at(at), code.code(), message));
+        int n = warningCounts.merge(code.code(), 1, Integer::sum);
+        if (n <= MAX_WARNINGS_PER_CODE + 1) {   // one more than shown marks where the summary goes
+            all.add(Diagnostic.warning(at(at), code.code(), message));
+        }
     }
 
     boolean hasErrors() {
@@ -73,12 +88,12 @@ final class ReaderDiagnostics {
         List<Diagnostic> kept = new ArrayList<>();
         Map<String, Integer> warningsPerCode = new HashMap<>();
         Map<String, Diagnostic> firstDroppedWarning = new HashMap<>();
-        int errorCount = 0;
+        int errorsSeen = 0;
         Diagnostic firstDroppedError = null;
         for (Diagnostic d : sorted) {
             if (d.isError()) {
-                errorCount++;
-                if (errorCount <= MAX_ERRORS) {
+                errorsSeen++;
+                if (errorsSeen <= MAX_ERRORS) {
                     kept.add(d);
                 } else if (firstDroppedError == null) {
                     firstDroppedError = d;
@@ -93,14 +108,15 @@ final class ReaderDiagnostics {
             }
         }
         for (Map.Entry<String, Diagnostic> e : firstDroppedWarning.entrySet()) {
-            int more = warningsPerCode.get(e.getKey()) - MAX_WARNINGS_PER_CODE;
+            int more = warningCounts.get(e.getKey()) - MAX_WARNINGS_PER_CODE;
             kept.add(Diagnostic.warning(e.getValue().location(), e.getKey(),
                     more + " more " + e.getKey() + " warning(s) like the ones above are not shown"));
         }
         if (firstDroppedError != null) {
             int more = errorCount - MAX_ERRORS;
             kept.add(Diagnostic.error(firstDroppedError.location(), SyntaxCode.TOO_MANY_ERRORS.code(),
-                    "too many syntax errors: " + more + " more not reported; fix the ones above first"));
+                    "too many syntax errors: " + more + " more not reported"
+                            + (tooMany() ? " (reading stopped early)" : "") + "; fix the ones above first"));
         }
         kept.sort(Comparator.comparing(Diagnostic::location));
         return kept;

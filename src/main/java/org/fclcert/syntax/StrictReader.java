@@ -22,6 +22,13 @@ import org.fclcert.model.SourceLocation;
  * reader never throws and never prints. Thread-safe: it keeps no state between calls.
  */
 public final class StrictReader implements FclReader {
+    /**
+     * Parentheses nested at most this deep are parsed on the caller's thread. Deeper nesting (up to
+     * Limits.MAX_NESTING_DEPTH) is parsed on a thread with a large stack: the recursive-descent parser
+     * and the builder use a few stack frames per level, and a caller's thread may have a small stack.
+     */
+    private static final int SHALLOW_NESTING = 50;
+    private static final long DEEP_STACK_BYTES = 64L << 20;
 
     @Override
     public ReadResult read(String sourceName, String text) {
@@ -42,10 +49,21 @@ public final class StrictReader implements FclReader {
         FclLexer lexer = new FclLexer(CharStreams.fromString(text, sourceName));
         lexer.removeErrorListeners();   // the lexer cannot fail: unknown characters are ANY tokens
         TokenPreScan.Result scan = TokenPreScan.scan(lexer, diagnostics);
-        if (scan.tooDeep()) {
+        if (scan.tooDeep() || diagnostics.tooMany()) {
             return Optional.empty();    // never hand the recursive parser a nesting it may not survive
         }
+        if (scan.maxDepth() <= SHALLOW_NESTING) {
+            return parseAndBuild(sourceName, scan, diagnostics);
+        }
+        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics));
+    }
+
+    private static Optional<Program> parseAndBuild(String sourceName, TokenPreScan.Result scan,
+            ReaderDiagnostics diagnostics) {
         Parsed parsed = parse(scan.tokens(), diagnostics);
+        if (parsed.tree() == null) {
+            return Optional.empty();    // stopped after too many errors
+        }
         ReservedNames.check(parsed.tree(), diagnostics);
         if (!parsed.complete()) {
             return Optional.empty();    // the builder needs a tree without gaps
@@ -56,6 +74,40 @@ public final class StrictReader implements FclReader {
     }
 
     private record Parsed(FclParser.ProgramContext tree, boolean complete) {
+    }
+
+    /** Runs the task on a fresh thread with a large stack and returns its result on this thread. */
+    private static Optional<Program> onDeepStack(java.util.function.Supplier<Optional<Program>> task) {
+        Object[] outcome = new Object[1];
+        Thread worker = new Thread(null, () -> {
+            try {
+                outcome[0] = task.get();
+            } catch (RuntimeException | StackOverflowError e) {
+                outcome[0] = e;
+            }
+        }, "fclcert-reader", DEEP_STACK_BYTES);
+        worker.start();
+        boolean interrupted = false;
+        while (true) {
+            try {
+                worker.join();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;   // finish the read (it is bounded), then restore the flag
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        if (outcome[0] instanceof RuntimeException e) {
+            throw e;
+        }
+        if (outcome[0] instanceof StackOverflowError e) {
+            throw e;
+        }
+        @SuppressWarnings("unchecked")
+        Optional<Program> program = (Optional<Program>) outcome[0];
+        return program;
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
@@ -73,8 +125,12 @@ public final class StrictReader implements FclReader {
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);
-            FclParser.ProgramContext tree = parser.program();
-            return new Parsed(tree, !strategy.foundErrors());
+            try {
+                FclParser.ProgramContext tree = parser.program();
+                return new Parsed(tree, !strategy.foundErrors());
+            } catch (FclErrorStrategy.StopReading stop) {
+                return new Parsed(null, false);
+            }
         }
     }
 }

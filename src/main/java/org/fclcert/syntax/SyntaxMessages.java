@@ -312,6 +312,10 @@ final class SyntaxMessages {
                 return specific;
             }
         }
+        if (expected.contains(FclLexer.END_FUNCTION_BLOCK) && expected.contains(FclLexer.FUZZIFY)) {
+            return "a VAR_INPUT, VAR_OUTPUT or VAR section, a FUZZIFY, DEFUZZIFY, RULEBLOCK or OPTIONS block,"
+                    + " or END_FUNCTION_BLOCK";
+        }
         List<String> items = new ArrayList<>();
         if (name) {
             items.add(roleAt(ctx) + " name");

@@ -35,6 +35,7 @@ final class TokenPreScan {
     private boolean inRuleBlock;
     private RulePart rulePart = RulePart.NONE;
     private int depth;
+    private int maxDepth;
     private boolean tooDeep;
     private int lastBadCharStop = -2;
 
@@ -43,7 +44,7 @@ final class TokenPreScan {
     }
 
     /** The checked tokens for the parser (default channel, ending with EOF). */
-    record Result(List<Token> tokens, boolean tooDeep) {
+    record Result(List<Token> tokens, boolean tooDeep, int maxDepth) {
     }
 
     static Result scan(TokenSource lexer, ReaderDiagnostics diagnostics) {
@@ -52,8 +53,8 @@ final class TokenPreScan {
         do {
             t = lexer.nextToken();
             scan.accept(t);
-        } while (t.getType() != Token.EOF);
-        return new Result(scan.out, scan.tooDeep);
+        } while (t.getType() != Token.EOF && !diagnostics.tooMany());   // enough said about garbage
+        return new Result(scan.out, scan.tooDeep, scan.maxDepth);
     }
 
     private void accept(Token t) {
@@ -114,6 +115,12 @@ final class TokenPreScan {
     }
 
     private void badCharacter(Token t) {
+        Token previous = out.isEmpty() ? null : out.get(out.size() - 1);
+        if (t.getText().equals(".") && previous != null && previous.getType() == FclLexer.INTEGER
+                && previous.getStopIndex() + 1 == t.getStartIndex()) {
+            diagnostics.error(previous, SyntaxCode.BAD_NUMBER, NumberSyntax.badRealProblem(previous.getText() + "."));
+            return;
+        }
         // a run of adjacent bad characters (binary garbage, a pasted symbol) is one mistake
         if (t.getStartIndex() != lastBadCharStop + 1) {
             diagnostics.error(t, SyntaxCode.UNEXPECTED_CHARACTER, describeCharacter(t.getText()));
@@ -201,6 +208,7 @@ final class TokenPreScan {
 
     private void open(Token t) {
         depth++;
+        maxDepth = Math.max(maxDepth, depth);
         if (depth > Limits.MAX_NESTING_DEPTH && !tooDeep) {
             tooDeep = true;
             diagnostics.error(t, SyntaxCode.NESTING_TOO_DEEP, "parentheses are nested more than "

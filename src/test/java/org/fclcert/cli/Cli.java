@@ -23,9 +23,10 @@ record Cli(int exitCode, String out, String err) {
     static Cli runWith(String name, Object command, String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        CommandLine cli = Main.commandLine(new PrintWriter(out), new PrintWriter(err));
+        PrintWriter errWriter = new PrintWriter(err);
+        CommandLine cli = Main.commandLine(new PrintWriter(out), errWriter);
         cli.addSubcommand(name, command);
-        int code = cli.execute(args);
+        int code = Main.execute(cli, errWriter, args);
         return new Cli(code, out.toString(), err.toString());
     }
 

@@ -59,6 +59,21 @@ class MainTest {
         }
     }
 
+    @Command(name = "overflow")
+    static final class Overflow implements Callable<Integer> {
+        @Override
+        public Integer call() {
+            throw new StackOverflowError();
+        }
+    }
+
+    @Test
+    void anErrorSuchAsStackOverflowIsOneLineAndExitCodeThree() {
+        Cli r = Cli.runWith("overflow", new Overflow(), "overflow");
+        assertEquals(3, r.exitCode());
+        assertEquals(java.util.List.of("fclcert: internal error: java.lang.StackOverflowError"), r.errLines());
+    }
+
     @Test
     void anUnexpectedExceptionIsOneLineAndExitCodeThree() {
         Cli r = Cli.runWith("boom", new Boom(), "boom");

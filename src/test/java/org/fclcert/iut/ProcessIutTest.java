@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
 /** Drives the Python fakes in src/test/resources/iut, each misbehaving in one way. */
 class ProcessIutTest {
     private static final Path FAKES = Path.of("src/test/resources/iut").toAbsolutePath();
-    private static final IutOptions FAST = IutOptions.defaults().withTimeout(Duration.ofMillis(1500));
+    private static final IutOptions FAST = IutOptions.defaults().withTimeout(Duration.ofMillis(3000));
     private static final String PROGRAM = "FUNCTION_BLOCK first\nEND_FUNCTION_BLOCK\nFUNCTION_BLOCK second\nEND_FUNCTION_BLOCK\n";
 
     static String fake(String script, String... args) {
@@ -98,7 +98,7 @@ class ProcessIutTest {
             IutException hang = assertThrows(IutException.class, () -> iut.load(PROGRAM));
             long millis = (System.nanoTime() - start) / 1_000_000;
             assertEquals(Kind.TIMEOUT, hang.kind());
-            assertTrue(millis >= 500 && millis < 3000, "cut after " + millis + " ms");
+            assertTrue(millis >= 500 && millis < 5000, "cut after " + millis + " ms");
             Matcher pid = Pattern.compile("child pid (\\d+)").matcher(hang.stderrTail());
             assertTrue(pid.find(), hang.stderrTail());
             long childPid = Long.parseLong(pid.group(1));
@@ -184,6 +184,15 @@ class ProcessIutTest {
             long bytes = iut.peakMemoryBytes().orElseThrow();
             // a Python interpreter needs a few MiB and certainly less than 1 GiB
             assertTrue(bytes > 1_000_000 && bytes < 1L << 30, bytes + " bytes");
+        }
+    }
+
+    @Test
+    void aSlowStartIsNotCutAtTheRequestTimeout() throws IutException {
+        // the per-request timeout is 300 ms, the fake needs 1 s before it reads anything
+        try (ImplementationUnderTest iut = open(FAST.withTimeout(Duration.ofMillis(300)), "slow_start.py")) {
+            assertEquals("fake", iut.hello().name());
+            assertEquals(new LoadOutcome.Loaded(List.of("first", "second")), iut.load(PROGRAM));
         }
     }
 

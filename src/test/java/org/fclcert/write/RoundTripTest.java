@@ -9,9 +9,11 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collections;
 import java.util.List;
 import java.util.TreeSet;
 import java.util.stream.Stream;
+import org.fclcert.model.Limits;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.ReadResult;
 import org.fclcert.syntax.StrictReader;
@@ -61,6 +63,29 @@ class RoundTripTest {
                 Double.doubleToRawLongBits(model.functionBlocks().get(0).variables().get(0).initialValue().orElseThrow().value()));
         assertTrue(writer.write(model).contains("a : REAL := -0;\n    b : LREAL := -0.0;"), writer.write(model));
         assertRoundTrip(model);
+    }
+
+    @Test
+    void nestingAtTheDocumentedLimitAndLongChainsRoundTrip() {
+        int depth = Limits.MAX_NESTING_DEPTH;
+        String nested = "(".repeat(depth) + "x IS low" + ")".repeat(depth);
+        String chain = String.join(" AND ", Collections.nCopies(20_000, "x IS low"));
+        String text = """
+                FUNCTION_BLOCK deep
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM low := (0, 1) (1, 0); END_FUZZIFY
+                DEFUZZIFY y TERM one := 1; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r AND : MIN; ACCU : MAX;
+                RULE 1 : IF %s THEN y IS one;
+                RULE 2 : IF %s THEN y IS one;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """.formatted(nested, chain);
+        ReadResult read = reader.read("deep.fcl", text);
+        assertTrue(read.program().isPresent(), () -> read.diagnostics().toString());
+        assertRoundTrip(read.program().get());
+        assertTrue(writer.write(read.program().get()).contains("RULE 1 : IF " + nested + " THEN y IS one;\n"));
     }
 
     private static List<Program> generated() {
