@@ -64,7 +64,8 @@ final class CertifyCommand implements Callable<Integer> {
             description = "Corpus directory (default: ${DEFAULT-VALUE})")
     Path corpus;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "Output directory (default: reports/<iut-name>)")
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Output directory (default: reports/reference for the reference, else reports/<iut-name>)")
     Path out;
 
     @Option(names = "--level", paramLabel = "LEVEL", split = ",",
@@ -114,7 +115,7 @@ final class CertifyCommand implements Callable<Integer> {
             IutInfo info = hello(impl);
             RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
                     List.of(levels, features, cases));
-            Path dir = out != null ? out : Path.of("reports", OutDirs.forName(info.name()));
+            Path dir = out != null ? out : Path.of("reports", OutDirs.forIut(iut, info.name()));
             Report report = run(impl, header, selected, dir, err);
             print(stdout, report, dir);
             if (!condition.holds(report)) {

@@ -76,8 +76,7 @@ public final class ReportBuilder {
         if (required == 0) {
             reason = "the corpus has no Basic Level case";
         } else if (!notPassed.isEmpty()) {
-            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: "
-                    + String.join(", ", notPassed);
+            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: " + list(notPassed);
         } else if (basic.size() < required) {
             reason = "only " + basic.size() + " of the corpus's " + required + " Basic Level cases were run";
         } else {
@@ -85,6 +84,12 @@ public final class ReportBuilder {
         }
         boolean conformant = required > 0 && notPassed.isEmpty() && passed >= required;
         return new Report.BasicLevel(conformant, required, basic.size(), passed, reason);
+    }
+
+    /** At most ten ids, then how many more: a reason stays one readable line. */
+    private static String list(List<String> ids) {
+        return ids.size() <= 10 ? String.join(", ", ids)
+                : String.join(", ", ids.subList(0, 10)) + " and " + (ids.size() - 10) + " more";
     }
 
     private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
