@@ -146,6 +146,9 @@ public final class HtmlReport {
             out.append("Claimed: ").append(Texts.html(String.join(", ", c.claimed()))).append("<br>Confirmed: ")
                     .append(Texts.html(String.join(", ", c.confirmed()))).append("<br><b>Claimed but not realised:</b> ")
                     .append(c.notRealised().isEmpty() ? "none" : Texts.html(String.join(", ", c.notRealised())));
+            if (!c.untested().isEmpty()) {
+                out.append("<br>Claimed, no case in this run: ").append(Texts.html(String.join(", ", c.untested())));
+            }
             if (!c.unknown().isEmpty()) {
                 out.append("<br>Unknown ids claimed: ").append(Texts.html(String.join(", ", c.unknown())));
             }

@@ -138,6 +138,9 @@ public final class MarkdownReport {
             line("- Claimed: " + String.join(", ", c.claimed()));
             line("- Confirmed: " + none(c.confirmed()));
             line("- **Claimed but not realised**: " + none(c.notRealised()));
+            if (!c.untested().isEmpty()) {
+                line("- Claimed, no case in this run: " + String.join(", ", c.untested()));
+            }
             if (!c.unknown().isEmpty()) {
                 line("- Unknown feature ids claimed: " + String.join(", ", c.unknown()));
             }

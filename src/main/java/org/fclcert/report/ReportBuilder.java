@@ -128,6 +128,7 @@ public final class ReportBuilder {
         rows.forEach(r -> byId.put(r.id(), r));
         List<String> confirmed = new ArrayList<>();
         List<String> notRealised = new ArrayList<>();
+        List<String> untested = new ArrayList<>();
         List<String> unknown = new ArrayList<>();
         Set<String> claimedIds = new TreeSet<>(String.CASE_INSENSITIVE_ORDER);
         for (String id : claimed) {
@@ -137,6 +138,8 @@ public final class ReportBuilder {
                 unknown.add(id);
             } else if (row.status() == FeatureStatus.REALISED) {
                 confirmed.add(row.id());
+            } else if (row.status() == FeatureStatus.NOT_TESTED) {
+                untested.add(row.id());
             } else {
                 notRealised.add(row.id() + " (" + row.status().label() + ")");
             }
@@ -144,7 +147,7 @@ public final class ReportBuilder {
         List<String> unclaimed = rows.stream()
                 .filter(r -> r.table() != 8 && r.status() == FeatureStatus.REALISED && !claimedIds.contains(r.id()))
                 .map(Report.FeatureRow::id).toList();
-        return new Report.Claims(claimed, confirmed, notRealised, unknown, unclaimed);
+        return new Report.Claims(claimed, confirmed, notRealised, untested, unknown, unclaimed);
     }
 
     /** The level a case's {@code level} word names, for renderers. */
