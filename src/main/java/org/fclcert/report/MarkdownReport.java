@@ -211,6 +211,7 @@ public final class MarkdownReport {
             line("### " + feature + description(feature));
             line("");
             cases.forEach(this::failure);
+            line("");
         });
     }
 
