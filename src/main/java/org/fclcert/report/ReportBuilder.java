@@ -10,6 +10,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.ResultsFile;
@@ -23,7 +24,7 @@ public final class ReportBuilder {
     }
 
     public static Report build(ResultsFile file, Instant generatedAt) {
-        return build(file.header(), file.results(), file.problems(), List.of(), generatedAt);
+        return build(file.header(), file.results(), file.problems(), file.dataCheckList(), generatedAt);
     }
 
     public static Report build(RunHeader header, List<CaseResult> results, List<String> problems,
