@@ -18,6 +18,7 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunCases;
@@ -130,15 +131,39 @@ final class CertifyCommand implements Callable<Integer> {
     private Report run(ImplementationUnderTest impl, RunHeader header, List<RunCase> selected, Path dir,
             PrintWriter err) throws CannotRun {
         Path resultsFile = dir.resolve("results.jsonl");
+        Thread onInterrupt = new Thread(() -> reportInterruptedRun(impl, resultsFile, dir, err));
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             ProgressLine progress = new ProgressLine(err, System.console() != null);
+            Runtime.getRuntime().addShutdownHook(onInterrupt);
             List<CaseResult> done = new Runner(progress).run(impl, header, selected, results);
+            Runtime.getRuntime().removeShutdownHook(onInterrupt);
             progress.finish();
             Report report = ReportBuilder.build(header, done, List.of(), List.of(), Instant.now());
             ReportFiles.writeAll(report, dir);
             return report;
         } catch (IOException e) {
             throw new CannotRun("cannot write the results or reports in " + dir + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * Ctrl-C or a kill during the run: the results of the finished cases are on disk already; make the
+     * reports from them (the cases not run show as skipped) and stop the implementation.
+     */
+    private static void reportInterruptedRun(ImplementationUnderTest impl, Path resultsFile, Path dir,
+            PrintWriter err) {
+        try {
+            Report report = ReportBuilder.build(ResultsFile.read(resultsFile), Instant.now());
+            ReportFiles.writeAll(report, dir);
+            err.println();
+            err.println("fclcert certify: interrupted after " + (report.summary().cases() - report.summary().skipped())
+                    + " of " + report.summary().cases() + " cases; reports of what was done are in " + dir);
+        } catch (IOException | ResultsFile.InvalidResultsException | RuntimeException e) {
+            err.println("fclcert certify: interrupted; the results so far are in " + resultsFile
+                    + " ('fclcert report --from " + resultsFile + "' makes the reports)");
+        } finally {
+            err.flush();
+            impl.close();
         }
     }
 
