@@ -33,6 +33,7 @@ import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.report.FailOn;
+import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
@@ -174,7 +175,7 @@ final class CertifyCommand implements Callable<Integer> {
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
         List<String> realised = r.features().stream()
-                .filter(f -> f.table() == 9 && f.status() == org.fclcert.report.FeatureStatus.REALISED)
+                .filter(f -> f.table() == 9 && f.status() == FeatureStatus.REALISED)
                 .map(Report.FeatureRow::id).toList();
         long table9 = r.features().stream().filter(f -> f.table() == 9).count();
         out.println("Standard Extensions realised (Table 9): " + realised.size() + " of " + table9

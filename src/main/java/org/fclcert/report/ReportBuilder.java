@@ -12,10 +12,10 @@ import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunHeader;
-import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 
 /** Builds the verdicts of clause 6.1 from case results (complete or not). */
@@ -120,8 +120,7 @@ public final class ReportBuilder {
     }
 
     private static String interpretationFlag(CaseResult c) {
-        return c.flags().stream().filter(f -> f.toLowerCase(Locale.ROOT).startsWith("interpretation")).findFirst()
-                .orElse("interpretation");
+        return Flags.interpretation(c.flags()).orElse("interpretation");
     }
 
     private static Report.Claims claims(List<String> claimed, List<Report.FeatureRow> rows) {
@@ -149,10 +148,5 @@ public final class ReportBuilder {
                 .filter(r -> r.table() != 8 && r.status() == FeatureStatus.REALISED && !claimedIds.contains(r.id()))
                 .map(Report.FeatureRow::id).toList();
         return new Report.Claims(claimed, confirmed, notRealised, untested, unknown, unclaimed);
-    }
-
-    /** The level a case's {@code level} word names, for renderers. */
-    static ConformanceLevel level(String word) {
-        return ConformanceLevel.byWord(word);
     }
 }
