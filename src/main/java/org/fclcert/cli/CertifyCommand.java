@@ -174,18 +174,22 @@ final class CertifyCommand implements Callable<Integer> {
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
-        List<String> realised = r.features().stream()
-                .filter(f -> f.table() == 9 && f.status() == FeatureStatus.REALISED)
-                .map(Report.FeatureRow::id).toList();
-        long table9 = r.features().stream().filter(f -> f.table() == 9).count();
-        out.println("Standard Extensions realised (Table 9): " + realised.size() + " of " + table9
-                + (realised.isEmpty() ? "" : ": " + String.join(", ", realised)));
+        out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
+        out.println("Open Level features realised (Table 10): " + realised(r, 10));
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", results.jsonl");
         out.flush();
+    }
+
+    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3}. */
+    private static String realised(Report r, int table) {
+        List<String> ids = r.features().stream().filter(f -> f.table() == table && f.status() == FeatureStatus.REALISED)
+                .map(Report.FeatureRow::id).toList();
+        long rows = r.features().stream().filter(f -> f.table() == table).count();
+        return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
     }
 
     private FailOn parseFailOn() throws CannotRun {

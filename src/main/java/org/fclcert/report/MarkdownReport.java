@@ -92,23 +92,30 @@ public final class MarkdownReport {
     private void table9() {
         line("## Table 9: Standard Extensions realised");
         line("");
-        List<String> realised = rows(9).stream().filter(f -> f.status() == FeatureStatus.REALISED)
-                .map(f -> f.id() + " (" + f.description() + ")").toList();
-        line(realised.isEmpty() ? "No Standard Extension is realised." : "Realised:");
-        line("");
-        realised.forEach(x -> line("- " + x));
-        if (!realised.isEmpty()) {
-            line("");
-        }
+        realisedList(9, "No Standard Extension is realised.");
         line("All Table 9 rows:");
         line("");
         featureTable(9);
     }
 
     private void table10() {
-        line("## Table 10: Open Level features");
+        line("## Table 10: Open Level features realised");
+        line("");
+        realisedList(10, "No Open Level feature is realised.");
+        line("All Table 10 rows fclcert can recognise:");
         line("");
         featureTable(10);
+    }
+
+    private void realisedList(int table, String none) {
+        List<String> realised = rows(table).stream().filter(f -> f.status() == FeatureStatus.REALISED)
+                .map(f -> f.id() + " (" + f.description() + ")").toList();
+        line(realised.isEmpty() ? none : "Realised:");
+        line("");
+        realised.forEach(x -> line("- " + x));
+        if (!realised.isEmpty()) {
+            line("");
+        }
     }
 
     private List<Report.FeatureRow> rows(int table) {
