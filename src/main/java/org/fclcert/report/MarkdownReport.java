@@ -36,6 +36,7 @@ public final class MarkdownReport {
         export();
         dataCheckList();
         failures();
+        notes();
         return out.toString();
     }
 
@@ -220,6 +221,18 @@ public final class MarkdownReport {
             cases.forEach(this::failure);
             line("");
         });
+    }
+
+    /** Observations that do not change a status, e.g. a rejection reported at another line than the error's. */
+    private void notes() {
+        List<CaseResult> noted = r.cases().stream().filter(c -> !c.notes().isEmpty()).toList();
+        if (noted.isEmpty()) {
+            return;
+        }
+        line("## Notes");
+        line("");
+        noted.forEach(c -> c.notes().forEach(n -> line("- " + c.id() + " (" + c.status().word() + "): " + Texts.cell(n))));
+        line("");
     }
 
     private String description(String featureId) {
