@@ -60,7 +60,7 @@ public final class HtmlReport {
             document.querySelectorAll('.filters input').forEach(function(i){i.addEventListener('input',applyFilters);});
             function openTarget(){
               var t=location.hash&&document.getElementById(location.hash.substring(1));
-              if(t&&t.tagName==='DETAILS'){t.open=true;t.classList.remove('hidden');}
+              if(t&&t.tagName==='DETAILS'){t.open=true;t.classList.remove('hidden');t.scrollIntoView();}
             }
             window.addEventListener('hashchange',openTarget);
             applyFilters();openTarget();
