@@ -158,7 +158,7 @@ public final class Fakes {
                 List<Trace.Activation> acts = trace.activations().stream()
                         .filter(a -> a.variable().equalsIgnoreCase(d.variable()) && a.term().isPresent()).toList();
                 if (set.singletons() || method(d) != DefuzzificationMethod.COG || set.breakpoints().size() < 2
-                        || acts.stream().allMatch(a -> a.weight() == 1.0) || acts.stream()
+                        || !Shapes.constantPoints(d) || acts.stream().allMatch(a -> a.weight() == 1.0) || acts.stream()
                                 .anyMatch(a -> activation(block, a.ruleBlock()) != ActivationMethod.MIN)) {
                     continue;
                 }

@@ -24,6 +24,12 @@ final class Shapes {
                 ? Optional.of(l.value()) : Optional.empty();
     }
 
+    /** True when every term of the output has constant points (the own integrator handles no others). */
+    static boolean constantPoints(org.fclcert.model.Defuzzification d) {
+        return d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Points p
+                && p.points().stream().allMatch(pt -> pt.x() instanceof Literal && pt.degree() instanceof Literal));
+    }
+
     /** μ of a constant point term, linear between points, constant beyond the outer points. */
     static double membership(Term t, double x) {
         List<Point> pts = ((MembershipFunction.Points) t.function()).points();
