@@ -18,6 +18,7 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunCases;
@@ -32,6 +33,7 @@ import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.report.FailOn;
+import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
@@ -64,7 +66,8 @@ final class CertifyCommand implements Callable<Integer> {
             description = "Corpus directory (default: ${DEFAULT-VALUE})")
     Path corpus;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "Output directory (default: reports/<iut-name>)")
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Output directory (default: reports/reference for the reference, else reports/<iut-name>)")
     Path out;
 
     @Option(names = "--level", paramLabel = "LEVEL", split = ",",
@@ -114,7 +117,7 @@ final class CertifyCommand implements Callable<Integer> {
             IutInfo info = hello(impl);
             RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
                     List.of(levels, features, cases));
-            Path dir = out != null ? out : Path.of("reports", OutDirs.forName(info.name()));
+            Path dir = out != null ? out : Path.of("reports", OutDirs.forIut(iut, info.name()));
             Report report = run(impl, header, selected, dir, err);
             print(stdout, report, dir);
             if (!condition.holds(report)) {
@@ -129,9 +132,12 @@ final class CertifyCommand implements Callable<Integer> {
     private Report run(ImplementationUnderTest impl, RunHeader header, List<RunCase> selected, Path dir,
             PrintWriter err) throws CannotRun {
         Path resultsFile = dir.resolve("results.jsonl");
+        Thread onInterrupt = new Thread(() -> reportInterruptedRun(impl, resultsFile, dir, err));
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             ProgressLine progress = new ProgressLine(err, System.console() != null);
+            Runtime.getRuntime().addShutdownHook(onInterrupt);
             List<CaseResult> done = new Runner(progress).run(impl, header, selected, results);
+            Runtime.getRuntime().removeShutdownHook(onInterrupt);
             progress.finish();
             Report report = ReportBuilder.build(header, done, List.of(), List.of(), Instant.now());
             ReportFiles.writeAll(report, dir);
@@ -141,24 +147,49 @@ final class CertifyCommand implements Callable<Integer> {
         }
     }
 
+    /**
+     * Ctrl-C or a kill during the run: the results of the finished cases are on disk already; make the
+     * reports from them (the cases not run show as skipped) and stop the implementation.
+     */
+    private static void reportInterruptedRun(ImplementationUnderTest impl, Path resultsFile, Path dir,
+            PrintWriter err) {
+        try {
+            Report report = ReportBuilder.build(ResultsFile.read(resultsFile), Instant.now());
+            ReportFiles.writeAll(report, dir);
+            err.println();
+            err.println("fclcert certify: interrupted after " + (report.summary().cases() - report.summary().skipped())
+                    + " of " + report.summary().cases() + " cases; reports of what was done are in " + dir);
+        } catch (IOException | ResultsFile.InvalidResultsException | RuntimeException e) {
+            err.println("fclcert certify: interrupted; the results so far are in " + resultsFile
+                    + " ('fclcert report --from " + resultsFile + "' makes the reports)");
+        } finally {
+            err.flush();
+            impl.close();
+        }
+    }
+
     private static void print(PrintWriter out, Report r, Path dir) {
         Report.Summary s = r.summary();
         out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
-        List<String> realised = r.features().stream()
-                .filter(f -> f.table() == 9 && f.status() == org.fclcert.report.FeatureStatus.REALISED)
-                .map(Report.FeatureRow::id).toList();
-        long table9 = r.features().stream().filter(f -> f.table() == 9).count();
-        out.println("Standard Extensions realised (Table 9): " + realised.size() + " of " + table9
-                + (realised.isEmpty() ? "" : ": " + String.join(", ", realised)));
+        out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
+        out.println("Open Level features realised (Table 10): " + realised(r, 10));
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", results.jsonl");
         out.flush();
+    }
+
+    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3}. */
+    private static String realised(Report r, int table) {
+        List<String> ids = r.features().stream().filter(f -> f.table() == table && f.status() == FeatureStatus.REALISED)
+                .map(Report.FeatureRow::id).toList();
+        long rows = r.features().stream().filter(f -> f.table() == table).count();
+        return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
     }
 
     private FailOn parseFailOn() throws CannotRun {

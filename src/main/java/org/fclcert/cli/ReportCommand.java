@@ -38,7 +38,7 @@ final class ReportCommand implements Callable<Integer> {
             err.flush();
             return CertifyCommand.CANNOT_RUN;
         }
-        Path dir = out != null ? out : from.toAbsolutePath().getParent();
+        Path dir = out != null ? out : from.getParent() != null ? from.getParent() : Path.of(".");
         try {
             ResultsFile results = ResultsFile.read(from);
             results.problems().forEach(p -> err.println("warning: " + p));

@@ -2,7 +2,6 @@ package org.fclcert.harness;
 
 import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -45,7 +44,7 @@ public record CaseResult(
     }
 
     public boolean interpretation() {
-        return flags.stream().anyMatch(f -> f.toLowerCase(Locale.ROOT).startsWith("interpretation"));
+        return Flags.interpretation(flags).isPresent();
     }
 
     /** A skipped result for a planned case that never ran. */

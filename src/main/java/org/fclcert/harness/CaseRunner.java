@@ -44,6 +44,9 @@ final class CaseRunner {
             gaveUp = e.kind() == IutException.Kind.GAVE_UP;
         } catch (StepBreakdown b) {
             gaveUp = b.gaveUp;
+        } catch (RuntimeException e) {
+            // the contract allows only IutException; an in-process implementation may still break it
+            r.errored("the implementation failed unexpectedly: " + e, String.valueOf(e));
         }
         return new Ran(r.build((System.nanoTime() - start) / 1_000_000), gaveUp);
     }
@@ -135,6 +138,8 @@ final class CaseRunner {
             }
         } catch (IutException e) {
             r.export(ExportStatus.FAILED, "export: the implementation " + IutFaults.describe(e));
+        } catch (RuntimeException e) {
+            r.export(ExportStatus.FAILED, "export: the exported text could not be checked: " + e);
         }
     }
 

@@ -1,7 +1,6 @@
 package org.fclcert.harness;
 
 import java.util.List;
-import java.util.Locale;
 
 /**
  * A selected case as listed in the run header, so that a report rebuilt from an interrupted results file
@@ -14,6 +13,6 @@ public record PlannedCase(String id, String title, String level, List<String> te
     }
 
     public boolean interpretation() {
-        return flags.stream().anyMatch(f -> f.toLowerCase(Locale.ROOT).startsWith("interpretation"));
+        return Flags.interpretation(flags).isPresent();
     }
 }

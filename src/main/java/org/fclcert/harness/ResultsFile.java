@@ -13,9 +13,11 @@ import java.util.List;
  * A {@code results.jsonl} read back: its header, the case results it holds, and the lines it could not use
  * (typically the last line of a run killed while writing it).
  */
-public record ResultsFile(RunHeader header, List<CaseResult> results, List<String> problems) {
+public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataCheckEntry> dataCheckList,
+        List<String> problems) {
     public ResultsFile {
         results = List.copyOf(results);
+        dataCheckList = List.copyOf(dataCheckList);
         problems = List.copyOf(problems);
     }
 
@@ -24,6 +26,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<Strin
         List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
         RunHeader header = null;
         List<CaseResult> results = new ArrayList<>();
+        List<DataCheckEntry> dataCheckList = new ArrayList<>();
         List<String> problems = new ArrayList<>();
         for (int i = 0; i < lines.size(); i++) {
             String line = lines.get(i);
@@ -38,6 +41,9 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<Strin
                     header = Json.mapper().treeToValue(node, RunHeader.class);
                 } else if (type.equals("case")) {
                     results.add(Json.mapper().treeToValue(node, CaseResult.class));
+                } else if (type.equals("dataCheckList")) {
+                    dataCheckList.clear();
+                    dataCheckList.addAll(Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class).entries());
                 } else {
                     problems.add(where + ": line of unknown type '" + type + "' ignored");
                 }
@@ -49,7 +55,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<Strin
             throw new InvalidResultsException(file + ": no run header line ({\"type\":\"run\",...}); "
                     + "is this a results.jsonl written by fclcert certify?");
         }
-        return new ResultsFile(header, results, problems);
+        return new ResultsFile(header, results, dataCheckList, problems);
     }
 
     /** The file cannot be made into a report. */

@@ -7,10 +7,12 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 /**
  * Writes {@code results.jsonl}: a {@code "type":"run"} header line, then one {@code "type":"case"} line per
- * finished case, each flushed at once so that a killed run leaves every finished case on disk.
+ * finished case (and a {@code "type":"dataCheckList"} line when probes ran), each flushed at once so that a
+ * killed run leaves every finished case on disk.
  */
 public final class ResultsWriter implements ResultSink, Closeable {
     private final BufferedWriter out;
@@ -35,6 +37,15 @@ public final class ResultsWriter implements ResultSink, Closeable {
     @Override
     public void accept(CaseResult result) throws IOException {
         write("case", result);
+    }
+
+    @Override
+    public void dataCheckList(List<DataCheckEntry> entries) throws IOException {
+        write("dataCheckList", new DataCheckLine(entries));
+    }
+
+    /** The body of a {@code "type":"dataCheckList"} line. */
+    record DataCheckLine(List<DataCheckEntry> entries) {
     }
 
     private void write(String type, Object value) throws IOException {

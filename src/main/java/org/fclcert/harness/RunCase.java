@@ -41,12 +41,12 @@ public record RunCase(
 
     /** Stateful cases depend on the order of their steps, so the reverse-order rerun does not apply. */
     public boolean stateful() {
-        return flags.stream().anyMatch(f -> f.equalsIgnoreCase("stateful"));
+        return Flags.stateful(flags);
     }
 
     /** Cases that depend on a reading of the standard ({@code interpretation:<point>}) count against no verdict. */
     public boolean interpretation() {
-        return flags.stream().anyMatch(f -> f.toLowerCase(java.util.Locale.ROOT).startsWith("interpretation"));
+        return Flags.interpretation(flags).isPresent();
     }
 
     /** What the report needs to know about a case before (or without) running it. */

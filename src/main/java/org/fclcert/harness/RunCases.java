@@ -5,6 +5,7 @@ import java.util.Optional;
 import org.fclcert.check.Analysis;
 import org.fclcert.corpus.CorpusCase;
 import org.fclcert.corpus.OutputScales;
+import org.fclcert.corpus.Tolerance;
 import org.fclcert.model.Feature;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Program;
@@ -31,10 +32,10 @@ public final class RunCases {
 
     /**
      * The case's tolerance class with the output widths of its own program (the continuous class is a
-     * fraction of each output's width); a negative case compares nothing, so it needs no widths.
+     * fraction of each output's width); the exact class and negative cases need no widths.
      */
     private static OutputTolerance tolerance(CorpusCase c) {
-        if (c.expectReject()) {
+        if (c.expectReject() || c.tolerance() == Tolerance.EXACT) {
             return new CorpusTolerance(c.tolerance(), OutputScales.none());
         }
         Analysis analysis = Analysis.analyze(new StrictReader(), c.path().toString(), c.programText());

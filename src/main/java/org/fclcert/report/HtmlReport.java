@@ -58,7 +58,12 @@ public final class HtmlReport {
               document.getElementById('shown').textContent=shown;
             }
             document.querySelectorAll('.filters input').forEach(function(i){i.addEventListener('input',applyFilters);});
-            applyFilters();
+            function openTarget(){
+              var t=location.hash&&document.getElementById(location.hash.substring(1));
+              if(t&&t.tagName==='DETAILS'){t.open=true;t.classList.remove('hidden');t.scrollIntoView();}
+            }
+            window.addEventListener('hashchange',openTarget);
+            applyFilters();openTarget();
             """;
 
     private String page() {
@@ -141,6 +146,9 @@ public final class HtmlReport {
             out.append("Claimed: ").append(Texts.html(String.join(", ", c.claimed()))).append("<br>Confirmed: ")
                     .append(Texts.html(String.join(", ", c.confirmed()))).append("<br><b>Claimed but not realised:</b> ")
                     .append(c.notRealised().isEmpty() ? "none" : Texts.html(String.join(", ", c.notRealised())));
+            if (!c.untested().isEmpty()) {
+                out.append("<br>Claimed, no case in this run: ").append(Texts.html(String.join(", ", c.untested())));
+            }
             if (!c.unknown().isEmpty()) {
                 out.append("<br>Unknown ids claimed: ").append(Texts.html(String.join(", ", c.unknown())));
             }
@@ -204,26 +212,42 @@ public final class HtmlReport {
     }
 
     private void comparison(CaseResult c) {
-        if (c.expected() == null && c.actual() == null) {
-            return;
-        }
-        out.append("<table><tr><th></th><th>").append(c.step() == null ? "" : "step " + c.step()).append("</th></tr>");
         if (c.inputs() != null) {
-            out.append("<tr><th>inputs</th><td>").append(Texts.html(Texts.describe(c.inputs()))).append("</td></tr>");
+            out.append("<p>Step ").append(c.step()).append(", inputs: <code>")
+                    .append(Texts.html(Texts.describe(c.inputs()))).append("</code></p>\n");
         }
-        out.append(row("expected", c.expected())).append(row("actual", c.actual())).append("</table>\n");
+        if (c.expected() instanceof Map<?, ?> expected) {
+            Map<?, ?> actual = c.actual() instanceof Map<?, ?> m ? m : Map.of();
+            out.append("<table><tr><th>output</th><th>expected</th><th>actual</th></tr>");
+            expected.forEach((name, want) -> out.append("<tr><td>").append(Texts.html(String.valueOf(name)))
+                    .append("</td><td>").append(Texts.html(String.valueOf(want))).append("</td><td>")
+                    .append(Texts.html(String.valueOf(lookup(actual, String.valueOf(name))))).append("</td></tr>"));
+            out.append("</table>\n");
+        } else if (c.expected() != null || c.actual() != null) {
+            out.append("<table>").append(row("expected", c.expected())).append(row("actual", c.actual()))
+                    .append("</table>\n");
+        }
+    }
+
+    private static Object lookup(Map<?, ?> actual, String name) {
+        return actual.entrySet().stream().filter(e -> String.valueOf(e.getKey()).equalsIgnoreCase(name))
+                .<Object>map(Map.Entry::getValue).findFirst().orElse("(missing)");
     }
 
     private static String row(String label, Object value) {
-        String text = value instanceof Map<?, ?> || value != null ? Texts.describe(value) : "";
-        return "<tr><th>" + label + "</th><td>" + Texts.html(text) + "</td></tr>";
+        return "<tr><th>" + label + "</th><td>" + Texts.html(Texts.describe(value)) + "</td></tr>";
     }
 
+    /** The program with its line numbers; the blank lines left where the case's metadata was are skipped. */
     private static String numbered(String program) {
         String[] lines = program.split("\n", -1);
         StringBuilder b = new StringBuilder();
         int width = String.valueOf(lines.length).length();
-        for (int i = 0; i < lines.length; i++) {
+        int first = 0;
+        while (first < lines.length - 1 && lines[first].isBlank()) {
+            first++;
+        }
+        for (int i = first; i < lines.length; i++) {
             b.append(String.format("%" + width + "d  ", i + 1)).append(Texts.html(lines[i])).append('\n');
         }
         return b.toString();

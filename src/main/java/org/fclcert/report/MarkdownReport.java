@@ -36,6 +36,7 @@ public final class MarkdownReport {
         export();
         dataCheckList();
         failures();
+        notes();
         return out.toString();
     }
 
@@ -92,23 +93,30 @@ public final class MarkdownReport {
     private void table9() {
         line("## Table 9: Standard Extensions realised");
         line("");
-        List<String> realised = rows(9).stream().filter(f -> f.status() == FeatureStatus.REALISED)
-                .map(f -> f.id() + " (" + f.description() + ")").toList();
-        line(realised.isEmpty() ? "No Standard Extension is realised." : "Realised:");
-        line("");
-        realised.forEach(x -> line("- " + x));
-        if (!realised.isEmpty()) {
-            line("");
-        }
+        realisedList(9, "No Standard Extension is realised.");
         line("All Table 9 rows:");
         line("");
         featureTable(9);
     }
 
     private void table10() {
-        line("## Table 10: Open Level features");
+        line("## Table 10: Open Level features realised");
+        line("");
+        realisedList(10, "No Open Level feature is realised.");
+        line("All Table 10 rows fclcert can recognise:");
         line("");
         featureTable(10);
+    }
+
+    private void realisedList(int table, String none) {
+        List<String> realised = rows(table).stream().filter(f -> f.status() == FeatureStatus.REALISED)
+                .map(f -> f.id() + " (" + f.description() + ")").toList();
+        line(realised.isEmpty() ? none : "Realised:");
+        line("");
+        realised.forEach(x -> line("- " + x));
+        if (!realised.isEmpty()) {
+            line("");
+        }
     }
 
     private List<Report.FeatureRow> rows(int table) {
@@ -138,6 +146,9 @@ public final class MarkdownReport {
             line("- Claimed: " + String.join(", ", c.claimed()));
             line("- Confirmed: " + none(c.confirmed()));
             line("- **Claimed but not realised**: " + none(c.notRealised()));
+            if (!c.untested().isEmpty()) {
+                line("- Claimed, no case in this run: " + String.join(", ", c.untested()));
+            }
             if (!c.unknown().isEmpty()) {
                 line("- Unknown feature ids claimed: " + String.join(", ", c.unknown()));
             }
@@ -208,7 +219,20 @@ public final class MarkdownReport {
             line("### " + feature + description(feature));
             line("");
             cases.forEach(this::failure);
+            line("");
         });
+    }
+
+    /** Observations that do not change a status, e.g. a rejection reported at another line than the error's. */
+    private void notes() {
+        List<CaseResult> noted = r.cases().stream().filter(c -> !c.notes().isEmpty()).toList();
+        if (noted.isEmpty()) {
+            return;
+        }
+        line("## Notes");
+        line("");
+        noted.forEach(c -> c.notes().forEach(n -> line("- " + c.id() + " (" + c.status().word() + "): " + Texts.cell(n))));
+        line("");
     }
 
     private String description(String featureId) {

@@ -3,6 +3,7 @@ package org.fclcert.report;
 import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.List;
 import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.DataCheckEntry;
 import org.fclcert.harness.RunHeader;
 
 /**
@@ -68,16 +69,17 @@ public record Report(
 
     /**
      * The implementation's claims (feature ids from {@code hello}) against the measurements: {@code confirmed}
-     * realised as claimed, {@code notRealised} claimed but partial / not realised / not tested,
-     * {@code unknown} not a feature id of the catalogue, {@code unclaimed} realised Extension or Open Level
-     * features the implementation did not claim.
+     * realised as claimed, {@code notRealised} claimed but partial or not realised (with the row's status),
+     * {@code untested} claimed but without a case in this run, {@code unknown} not a feature id of the
+     * catalogue, {@code unclaimed} realised Extension or Open Level features the implementation did not claim.
      */
     public record Claims(List<String> claimed, List<String> confirmed, List<String> notRealised,
-            List<String> unknown, List<String> unclaimed) {
+            List<String> untested, List<String> unknown, List<String> unclaimed) {
         public Claims {
             claimed = List.copyOf(claimed);
             confirmed = List.copyOf(confirmed);
             notRealised = List.copyOf(notRealised);
+            untested = List.copyOf(untested);
             unknown = List.copyOf(unknown);
             unclaimed = List.copyOf(unclaimed);
         }

@@ -10,11 +10,12 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunHeader;
-import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 
 /** Builds the verdicts of clause 6.1 from case results (complete or not). */
@@ -23,7 +24,7 @@ public final class ReportBuilder {
     }
 
     public static Report build(ResultsFile file, Instant generatedAt) {
-        return build(file.header(), file.results(), file.problems(), List.of(), generatedAt);
+        return build(file.header(), file.results(), file.problems(), file.dataCheckList(), generatedAt);
     }
 
     public static Report build(RunHeader header, List<CaseResult> results, List<String> problems,
@@ -76,8 +77,7 @@ public final class ReportBuilder {
         if (required == 0) {
             reason = "the corpus has no Basic Level case";
         } else if (!notPassed.isEmpty()) {
-            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: "
-                    + String.join(", ", notPassed);
+            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: " + list(notPassed);
         } else if (basic.size() < required) {
             reason = "only " + basic.size() + " of the corpus's " + required + " Basic Level cases were run";
         } else {
@@ -85,6 +85,12 @@ public final class ReportBuilder {
         }
         boolean conformant = required > 0 && notPassed.isEmpty() && passed >= required;
         return new Report.BasicLevel(conformant, required, basic.size(), passed, reason);
+    }
+
+    /** At most ten ids, then how many more: a reason stays one readable line. */
+    private static String list(List<String> ids) {
+        return ids.size() <= 10 ? String.join(", ", ids)
+                : String.join(", ", ids.subList(0, 10)) + " and " + (ids.size() - 10) + " more";
     }
 
     private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
@@ -114,8 +120,7 @@ public final class ReportBuilder {
     }
 
     private static String interpretationFlag(CaseResult c) {
-        return c.flags().stream().filter(f -> f.toLowerCase(Locale.ROOT).startsWith("interpretation")).findFirst()
-                .orElse("interpretation");
+        return Flags.interpretation(c.flags()).orElse("interpretation");
     }
 
     private static Report.Claims claims(List<String> claimed, List<Report.FeatureRow> rows) {
@@ -123,6 +128,7 @@ public final class ReportBuilder {
         rows.forEach(r -> byId.put(r.id(), r));
         List<String> confirmed = new ArrayList<>();
         List<String> notRealised = new ArrayList<>();
+        List<String> untested = new ArrayList<>();
         List<String> unknown = new ArrayList<>();
         Set<String> claimedIds = new TreeSet<>(String.CASE_INSENSITIVE_ORDER);
         for (String id : claimed) {
@@ -132,6 +138,8 @@ public final class ReportBuilder {
                 unknown.add(id);
             } else if (row.status() == FeatureStatus.REALISED) {
                 confirmed.add(row.id());
+            } else if (row.status() == FeatureStatus.NOT_TESTED) {
+                untested.add(row.id());
             } else {
                 notRealised.add(row.id() + " (" + row.status().label() + ")");
             }
@@ -139,11 +147,6 @@ public final class ReportBuilder {
         List<String> unclaimed = rows.stream()
                 .filter(r -> r.table() != 8 && r.status() == FeatureStatus.REALISED && !claimedIds.contains(r.id()))
                 .map(Report.FeatureRow::id).toList();
-        return new Report.Claims(claimed, confirmed, notRealised, unknown, unclaimed);
-    }
-
-    /** The level a case's {@code level} word names, for renderers. */
-    static ConformanceLevel level(String word) {
-        return ConformanceLevel.byWord(word);
+        return new Report.Claims(claimed, confirmed, notRealised, untested, unknown, unclaimed);
     }
 }

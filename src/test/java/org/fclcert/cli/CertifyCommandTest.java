@@ -127,6 +127,23 @@ class CertifyCommandTest {
     }
 
     @Test
+    void aJavaImplementationOnAClasspath() throws Exception {
+        // SummingFcl (the iut tests' vendor class) has an output 'y' = a + b and refuses to give 'sum'
+        assertEquals(0, certify("java:org.fclcert.iut.SummingFcl", "--classpath", "target/test-classes"),
+                err::toString);
+        Report r = report();
+        assertEquals("summing", r.iut().name());
+        assertEquals(CaseStatus.FAILED, result(r, "B-FB-001").status());
+        assertTrue(result(r, "B-FB-001").message().startsWith("step 1 of 2: the implementation reported an "
+                + "evaluation error: "), result(r, "B-FB-001").message());
+        assertEquals(CaseStatus.FAILED, result(r, "B-FB-901").status());
+        assertEquals("target/test-classes", r.iut().classpath());
+        assertTrue(Files.readString(dir.resolve("report.md")).contains("`./fclcert certify --iut "
+                + "java:org.fclcert.iut.SummingFcl --classpath target/test-classes --corpus " + CORPUS
+                + " --case B-FB-001`"));
+    }
+
+    @Test
     void aRunThatCannotBeDoneExitsWith2AndSaysWhy() {
         assertEquals(2, Main.run("certify", "--corpus", "no/such/dir", "--out", dir.toString()));
         assertTrue(err.toString().contains("corpus directory no/such/dir does not exist"), err::toString);

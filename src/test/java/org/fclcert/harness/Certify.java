@@ -15,9 +15,21 @@ public final class Certify {
     private Certify() {
     }
 
+    /** A corpus loaded once and turned into runner cases, for running many implementations on it. */
+    public record Prepared(Path dir, String sha256, List<RunCase> cases) {
+        public static Prepared load(Path dir) throws Exception {
+            Corpus corpus = Corpus.load(dir);
+            return new Prepared(dir, corpus.sha256(), RunCases.from(corpus.cases()));
+        }
+    }
+
     public static Report run(ImplementationUnderTest iut, Path corpusDir) throws Exception {
-        Corpus corpus = Corpus.load(corpusDir);
-        List<RunCase> cases = RunCases.from(corpus.cases());
+        return run(iut, Prepared.load(corpusDir));
+    }
+
+    public static Report run(ImplementationUnderTest iut, Prepared corpus) throws Exception {
+        Path corpusDir = corpus.dir();
+        List<RunCase> cases = corpus.cases();
         IutInfo info = iut.hello();
         RunHeader header = RunHeaders.of(info, info.command(), null, corpusDir.toString(), corpus.sha256(), cases,
                 cases, List.of(List.of(), List.of(), List.of()));

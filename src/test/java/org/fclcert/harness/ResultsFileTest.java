@@ -61,6 +61,21 @@ class ResultsFileTest {
     }
 
     @Test
+    void theDataCheckListTravelsInTheResultsFile() throws Exception {
+        Path file = dir.resolve("results.jsonl");
+        DataCheckEntry rules = new DataCheckEntry("max-rules-per-block", "max. number of rules per block", "100000",
+                "at-least", "rules", "generated blocks of 1, 2, 4, ... rules", "cap reached");
+        try (ResultsWriter w = ResultsWriter.create(file)) {
+            w.header(header());
+            w.accept(failed());
+            w.dataCheckList(List.of(rules));
+        }
+        ResultsFile read = ResultsFile.read(file);
+        assertEquals(List.of(rules), read.dataCheckList());
+        assertTrue(Files.readAllLines(file).get(2).startsWith("{\"type\":\"dataCheckList\",\"entries\":[{\"id\":"));
+    }
+
+    @Test
     void aLineCutShortByAKilledRunIsReportedAndTheRestKept() throws Exception {
         Path file = dir.resolve("results.jsonl");
         try (ResultsWriter w = ResultsWriter.create(file)) {

@@ -157,6 +157,18 @@ class RunnerTest {
     }
 
     @Test
+    void anImplementationThatThrowsDespiteTheContractIsErroredAndTheRunGoesOn() throws IOException {
+        ScriptedIut iut = ScriptedIut.loading((call, in) -> {
+            throw new IllegalStateException("bug in the vendor's code");
+        });
+        List<CaseResult> results = run(iut, List.of(PLUS_ONE, negative("B-NEG-001", "FCL-C002", 3)));
+        assertEquals(CaseStatus.ERRORED, results.get(0).status());
+        assertEquals("the implementation failed unexpectedly: java.lang.IllegalStateException: bug in the vendor's "
+                + "code", results.get(0).message());
+        assertEquals(CaseStatus.FAILED, results.get(1).status(), "the next case still ran");
+    }
+
+    @Test
     void aRejectedValidProgramFails() throws IOException {
         ScriptedIut iut = new ScriptedIut(fcl -> new LoadOutcome.Rejected("unexpected NOT", OptionalInt.of(9)),
                 (call, in) -> Map.of());

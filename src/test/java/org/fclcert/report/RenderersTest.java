@@ -45,6 +45,7 @@ class RenderersTest {
                 + "src/test/resources/corpus-mini --case E-NOT-002`\n"), md);
         assertTrue(md.contains("- **Incomplete run**"), md);
         assertFalse(md.contains("B-COGS-001**"), "passed cases are not listed as failures");
+        assertFalse(md.contains("## Notes"), "no case has a note");
     }
 
     @Test

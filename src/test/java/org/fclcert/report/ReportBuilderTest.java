@@ -104,9 +104,10 @@ class ReportBuilderTest {
 
     @Test
     void claimsAreComparedWithTheMeasurements() {
-        Report.Claims c = report(List.of("E-NOT", "e-cog", "X-HEDGES")).claims();
+        Report.Claims c = report(List.of("E-NOT", "e-cog", "X-HEDGES", "E-ACCU-NSUM")).claims();
         assertEquals(List.of("E-COG"), c.confirmed());
         assertEquals(List.of("E-NOT (not realised)"), c.notRealised());
+        assertEquals(List.of("E-ACCU-NSUM"), c.untested(), "no case of it ran: not held against the claim");
         assertEquals(List.of("X-HEDGES"), c.unknown());
         assertEquals(List.of(), c.unclaimed());
         assertEquals(List.of("E-COG"), report(List.of()).claims().unclaimed());
@@ -124,6 +125,9 @@ class ReportBuilderTest {
         Report basicOnly = ReportBuilder.build(header(1, allPass, List.of("E-NOT")), allPass, List.of(), List.of(),
                 Instant.EPOCH);
         assertTrue(FailOn.BASIC.holds(basicOnly));
+        Report untestedClaim = ReportBuilder.build(header(1, allPass.subList(0, 1), List.of("E-NOT")),
+                allPass.subList(0, 1), List.of(), List.of(), Instant.EPOCH);
+        assertTrue(FailOn.CLAIMED.holds(untestedClaim), "a claim without a case in the run is not refuted");
         assertFalse(FailOn.CLAIMED.holds(basicOnly));
         assertEquals("claimed but not realised: E-NOT (not realised)", FailOn.CLAIMED.explain(basicOnly));
     }

@@ -10,6 +10,7 @@ import org.fclcert.check.Analysis;
 import org.fclcert.eval.Trace;
 import org.fclcert.iut.LoadOutcome;
 import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.ActivationMethod;
 import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.Condition;
 import org.fclcert.model.DefaultValue;
@@ -146,27 +147,40 @@ public final class Fakes {
 
     /**
      * Applies a weighting factor to the rule's degree before MIN activation, min(w·d, μ), instead of to the
-     * activated set, w·min(d, μ); computes CoG with its own fine integration.
+     * activated set, w·min(d, μ); computes CoG with its own fine integration. Where every weight is 1, or
+     * activation is PROD, the two readings agree and the reference value is kept.
      */
     public static final class WeightBeforeActivation extends EvaluatorIut {
         @Override
         protected Map<String, Double> adjust(FunctionBlock block, Trace trace, Map<String, Double> outputs) {
             for (Trace.AccumulatedSet set : trace.accumulatedSets()) {
                 Defuzzification d = block.defuzzification(set.variable()).orElseThrow();
-                if (set.singletons() || method(d) != DefuzzificationMethod.COG || set.breakpoints().size() < 2) {
+                List<Trace.Activation> acts = trace.activations().stream()
+                        .filter(a -> a.variable().equalsIgnoreCase(d.variable()) && a.term().isPresent()).toList();
+                if (set.singletons() || method(d) != DefuzzificationMethod.COG || set.breakpoints().size() < 2
+                        || !Shapes.constantPoints(d) || acts.stream().allMatch(a -> a.weight() == 1.0) || acts.stream()
+                                .anyMatch(a -> activation(block, a.ruleBlock()) != ActivationMethod.MIN)) {
                     continue;
                 }
-                List<Shapes.Clipped> clipped = new ArrayList<>();
-                for (Trace.Activation a : trace.activations()) {
-                    if (a.variable().equalsIgnoreCase(d.variable()) && a.term().isPresent()) {
-                        clipped.add(new Shapes.Clipped(d.term(a.term().get()).orElseThrow(), a.activatedDegree()));
-                    }
-                }
+                List<Shapes.Clipped> clipped = acts.stream()
+                        .map(a -> new Shapes.Clipped(d.term(a.term().get()).orElseThrow(), a.activatedDegree()))
+                        .toList();
+                AccumulationMethod accu = accumulation(block, acts.get(0).ruleBlock());
                 double lo = set.breakpoints().get(0).u();
                 double hi = set.breakpoints().get(set.breakpoints().size() - 1).u();
-                Shapes.maxMinCog(clipped, lo, hi).ifPresent(v -> put(outputs, set.variable(), v));
+                Shapes.clippedCog(clipped, accu, lo, hi).ifPresent(v -> put(outputs, set.variable(), v));
             }
             return outputs;
+        }
+
+        private static ActivationMethod activation(FunctionBlock fb, String ruleBlock) {
+            return fb.ruleBlock(ruleBlock).flatMap(RuleBlock::activation).map(Located::value)
+                    .orElse(ActivationMethod.MIN);
+        }
+
+        private static AccumulationMethod accumulation(FunctionBlock fb, String ruleBlock) {
+            return fb.ruleBlock(ruleBlock).flatMap(RuleBlock::accumulation).map(Located::value)
+                    .orElse(AccumulationMethod.MAX);
         }
     }
 

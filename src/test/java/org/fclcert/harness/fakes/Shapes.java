@@ -3,6 +3,7 @@ package org.fclcert.harness.fakes;
 import java.util.List;
 import java.util.Optional;
 import org.fclcert.eval.Trace;
+import org.fclcert.model.AccumulationMethod;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.Literal;
 import org.fclcert.model.MembershipFunction;
@@ -21,6 +22,12 @@ final class Shapes {
     static Optional<Double> singletonValue(Term t) {
         return t.function() instanceof MembershipFunction.Singleton s && s.value() instanceof Literal l
                 ? Optional.of(l.value()) : Optional.empty();
+    }
+
+    /** True when every term of the output has constant points (the own integrator handles no others). */
+    static boolean constantPoints(org.fclcert.model.Defuzzification d) {
+        return d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Points p
+                && p.points().stream().allMatch(pt -> pt.x() instanceof Literal && pt.degree() instanceof Literal));
     }
 
     /** μ of a constant point term, linear between points, constant beyond the outer points. */
@@ -46,20 +53,31 @@ final class Shapes {
         return ((Literal) o).value();
     }
 
-    /** CoG of the MAX of clipped terms over [lo, hi], by the midpoint rule on 200 000 strips. */
-    static Optional<Double> maxMinCog(List<Clipped> clipped, double lo, double hi) {
+    /**
+     * CoG of clipped terms accumulated with MAX, BSUM or NSUM over [lo, hi], by the midpoint rule on
+     * 200 000 strips (NSUM divides by the largest sum over the interval when it exceeds 1).
+     */
+    static Optional<Double> clippedCog(List<Clipped> clipped, AccumulationMethod accu, double lo, double hi) {
         int n = 200_000;
         double h = (hi - lo) / n;
+        double[] mu = new double[n];
+        double peak = 0;
+        for (int i = 0; i < n; i++) {
+            double x = lo + (i + 0.5) * h;
+            double acc = 0;
+            for (Clipped c : clipped) {
+                double m = Math.min(c.height(), membership(c.term(), x));
+                acc = accu == AccumulationMethod.MAX ? Math.max(acc, m) : acc + m;
+            }
+            mu[i] = accu == AccumulationMethod.BSUM ? Math.min(1, acc) : acc;
+            peak = Math.max(peak, mu[i]);
+        }
+        double scale = accu == AccumulationMethod.NSUM ? Math.max(1, peak) : 1;
         double num = 0;
         double den = 0;
         for (int i = 0; i < n; i++) {
-            double x = lo + (i + 0.5) * h;
-            double mu = 0;
-            for (Clipped c : clipped) {
-                mu = Math.max(mu, Math.min(c.height(), membership(c.term(), x)));
-            }
-            num += x * mu;
-            den += mu;
+            num += (lo + (i + 0.5) * h) * mu[i] / scale;
+            den += mu[i] / scale;
         }
         return den > 0 ? Optional.of(num / den) : Optional.empty();
     }

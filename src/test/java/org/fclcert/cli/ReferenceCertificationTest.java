@@ -1,0 +1,62 @@
+package org.fclcert.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ExportStatus;
+import org.fclcert.report.FeatureStatus;
+import org.fclcert.report.JsonReport;
+import org.fclcert.report.Report;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The proof that matters most: fclcert's own evaluator certifies on the real corpus at 100 %. */
+class ReferenceCertificationTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void theReferenceCertifiesTheWholeCorpus() throws Exception {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int exit = Main.run(new PrintWriter(out), new PrintWriter(err), "certify", "--out", dir.toString(),
+                "--fail-on", "any");
+        assertEquals(0, exit, err::toString);
+        Report r = JsonReport.read(dir.resolve("report.json"));
+        assertEquals(r.corpus().cases(), r.summary().cases(), "every case of the corpus ran");
+        assertEquals(r.summary().cases(), r.summary().passed(), err::toString);
+        assertTrue(r.basicLevel().conformant(), r.basicLevel().reason());
+        assertTrue(r.run().complete());
+        for (Report.FeatureRow f : r.features()) {
+            assertNotEquals(FeatureStatus.PARTIAL, f.status(), f.id());
+            assertNotEquals(FeatureStatus.NOT_REALISED, f.status(), f.id());
+            if (f.table() == 8) {
+                assertEquals(FeatureStatus.REALISED, f.status(), "every Table 8 row has evidence: " + f.id());
+            }
+        }
+        // the reference exports with the canonical writer: every positive case reads back and evaluates alike
+        r.cases().forEach(c -> assertNotEquals(ExportStatus.FAILED, c.exportStatus(), c.id() + ": " + c.exportMessage()));
+        assertTrue(r.cases().stream().anyMatch(c -> c.exportStatus() == ExportStatus.PASSED));
+        assertTrue(r.cases().stream().allMatch(c -> c.status() == CaseStatus.PASSED));
+        assertTrue(out.toString().startsWith("fclcert reference evaluator "), out::toString);
+        assertTrue(Files.readString(dir.resolve("report.md")).contains("**Basic Level: conformant**"));
+    }
+
+    @Test
+    void onceTheCorpusCoversTable9EveryRowIsRealised() throws Exception {
+        Main.run(new PrintWriter(new StringWriter()), new PrintWriter(new StringWriter()), "certify", "--out",
+                dir.toString(), "--level", "extension");
+        Report r = JsonReport.read(dir.resolve("report.json"));
+        Assumptions.assumeTrue(r.features().stream().filter(f -> f.table() == 9)
+                .noneMatch(f -> f.status() == FeatureStatus.NOT_TESTED), "the corpus does not cover Table 9 yet");
+        r.features().stream().filter(f -> f.table() == 9)
+                .forEach(f -> assertEquals(FeatureStatus.REALISED, f.status(), f.id()));
+    }
+}
