@@ -1,0 +1,75 @@
+package org.fclcert.maven;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.report.FeatureStatus;
+import org.fclcert.report.Report;
+
+/**
+ * The decision behind {@code fclcert:verify}: does a certification report meet the project's bar?
+ * Kept apart from the mojo so that it is tested without a Maven runtime.
+ */
+final class ReportGate {
+    enum FailOn {
+        NONE, BASIC, CLAIMED, ANY;
+
+        static FailOn byWord(String word) {
+            return valueOf(word.trim().toUpperCase(Locale.ROOT));
+        }
+    }
+
+    private ReportGate() {
+    }
+
+    /**
+     * Why the report does not meet {@code failOn}, or empty when it does.
+     *
+     * @param claims feature ids the project claims; when empty, the claims the implementation made itself
+     */
+    static Optional<String> failure(Report report, FailOn failOn, List<String> claims) {
+        List<String> problems = new ArrayList<>();
+        if (failOn != FailOn.NONE && failOn != FailOn.ANY && !report.basicLevel().conformant()) {
+            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + failingCases(report, "basic"));
+        }
+        if (failOn == FailOn.CLAIMED) {
+            List<String> claimed = claims.isEmpty() ? report.iut().claims() : claims;
+            for (String id : claimed) {
+                problems.addAll(claimProblem(report, id.trim().toUpperCase(Locale.ROOT)));
+            }
+        }
+        if (failOn == FailOn.ANY) {
+            List<String> bad = report.cases().stream()
+                    .filter(c -> c.status() == CaseStatus.FAILED || c.status() == CaseStatus.ERRORED)
+                    .map(c -> c.id() + " " + c.status().name().toLowerCase(Locale.ROOT)).toList();
+            if (!bad.isEmpty()) {
+                problems.add(bad.size() + " case(s) did not pass: " + String.join(", ", bad));
+            }
+        }
+        return problems.isEmpty() ? Optional.empty() : Optional.of(String.join("\n", problems));
+    }
+
+    private static List<String> claimProblem(Report report, String id) {
+        Optional<Report.FeatureRow> row = report.features().stream().filter(f -> f.id().equals(id)).findFirst();
+        if (row.isEmpty()) {
+            return List.of("claimed " + id + " is not a feature id of Tables 8 to 10");
+        }
+        Report.FeatureRow f = row.get();
+        if (f.status() == FeatureStatus.REALISED) {
+            return List.of();
+        }
+        String cases = f.notPassed().isEmpty() ? "" : "; cases not passed: " + String.join(", ", f.notPassed());
+        return List.of("claimed " + id + " (Table " + f.table() + ", " + f.description() + ") is "
+                + f.status().label() + cases);
+    }
+
+    private static String failingCases(Report report, String level) {
+        List<String> ids = report.cases().stream()
+                .filter(c -> level.equals(c.level()) && !c.interpretation() && c.status() != CaseStatus.PASSED)
+                .map(CaseResult::id).toList();
+        return ids.isEmpty() ? "" : "; cases not passed: " + String.join(", ", ids);
+    }
+}

@@ -1,0 +1,76 @@
+package org.fclcert.maven;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import org.apache.maven.plugin.AbstractMojo;
+import org.apache.maven.plugin.MojoExecutionException;
+import org.apache.maven.plugin.MojoFailureException;
+import org.apache.maven.plugins.annotations.LifecyclePhase;
+import org.apache.maven.plugins.annotations.Mojo;
+import org.apache.maven.plugins.annotations.Parameter;
+import org.fclcert.report.JsonReport;
+import org.fclcert.report.Report;
+import org.fclcert.report.ReportFiles;
+
+/**
+ * Reads the report {@code fclcert:certify} wrote and fails the build when it does not meet
+ * {@code failOn}: {@code basic} (Basic Level not conformant), {@code claimed} (that, or a feature in
+ * {@code claims} not realised), {@code any} (any case failed or errored) or {@code none}.
+ */
+@Mojo(name = "verify", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
+public class VerifyMojo extends AbstractMojo {
+    @Parameter(property = "fclcert.reportsDirectory", defaultValue = "${project.build.directory}/fclcert-reports")
+    private File reportsDirectory;
+
+    /** none, basic, claimed or any. */
+    @Parameter(property = "fclcert.failOn", defaultValue = "basic")
+    private String failOn;
+
+    /** Feature ids (e.g. E-ACCU-NSUM) the project claims; when empty, the implementation's own claims. */
+    @Parameter(property = "fclcert.claims")
+    private List<String> claims;
+
+    @Parameter(property = "fclcert.skip", defaultValue = "false")
+    private boolean skip;
+
+    @Parameter(property = "skipTests", defaultValue = "false")
+    private boolean skipTests;
+
+    @Parameter(property = "skipITs", defaultValue = "false")
+    private boolean skipITs;
+
+    @Override
+    public void execute() throws MojoExecutionException, MojoFailureException {
+        if (skip || skipTests || skipITs) {
+            getLog().info("fclcert:verify skipped");
+            return;
+        }
+        ReportGate.FailOn condition;
+        try {
+            condition = ReportGate.FailOn.byWord(failOn);
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException("failOn must be none, basic, claimed or any, not '" + failOn + "'");
+        }
+        Path file = reportsDirectory.toPath().resolve(ReportFiles.JSON);
+        if (!Files.isRegularFile(file)) {
+            throw new MojoExecutionException("No certification report at " + file + ": run fclcert:certify first");
+        }
+        Report report;
+        try {
+            report = JsonReport.read(file);
+        } catch (IOException e) {
+            throw new MojoExecutionException("Cannot read " + file + ": " + e.getMessage(), e);
+        }
+        Optional<String> failure = ReportGate.failure(report, condition, claims == null ? List.of() : claims);
+        if (failure.isPresent()) {
+            throw new MojoFailureException("fclcert:verify (failOn=" + condition.name().toLowerCase(java.util.Locale.ROOT)
+                    + ") failed for " + report.iut().name() + ":\n" + failure.get()
+                    + "\nDetails: " + reportsDirectory.toPath().resolve(ReportFiles.MARKDOWN));
+        }
+        getLog().info("fclcert:verify: " + report.iut().name() + " meets failOn=" + failOn);
+    }
+}
