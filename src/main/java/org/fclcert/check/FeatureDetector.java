@@ -70,6 +70,7 @@ public final class FeatureDetector {
         for (FunctionBlock block : program.functionBlocks()) {
             new Collector(uses).functionBlock(block);
         }
+        uses.addAll(program.dialectFeatures());
         uses.sort(Comparator.comparing(FeatureUse::location).thenComparing(u -> u.feature().ordinal()));
         ConformanceLevel level = uses.stream().map(u -> u.feature().level())
                 .reduce(ConformanceLevel.BASIC, ConformanceLevel::max);
