@@ -252,6 +252,7 @@ public final class FeatureDetector {
             case COA -> Feature.E_COA;
             case LM -> Feature.E_LM;
             case RM -> Feature.E_RM;
+            case MOM -> Feature.O_MOM;
         };
     }
 }

@@ -347,6 +347,7 @@ public final class FunctionBlockInstance {
         return switch (o.method()) {
             case LM -> extremeSingleton(terms, true);
             case RM -> extremeSingleton(terms, false);
+            case MOM -> throw new IllegalStateException("MoM on singletons: not yet evaluated");
             default -> centreOfGravityForSingletons(terms);
         };
     }
@@ -415,6 +416,7 @@ public final class FunctionBlockInstance {
             case COA -> Defuzzifier.centreOfArea(set.px, set.py, set.np);
             case LM -> Defuzzifier.leftmostMaximum(set.px, set.py, set.np);
             case RM -> Defuzzifier.rightmostMaximum(set.px, set.py, set.np);
+            case MOM -> throw new IllegalStateException("MoM: not yet evaluated");
             default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
         };
     }

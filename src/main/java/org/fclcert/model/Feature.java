@@ -92,7 +92,9 @@ public enum Feature {
     O_DEGREES_0_1("O-DEGREES-0-1", ConformanceLevel.OPEN, "membership function",
             "point degrees strictly between 0 and 1"),
     O_VAR_DEGREE("O-VAR-DEGREE", ConformanceLevel.OPEN, "membership function",
-            "membership degrees given by variables");
+            "membership degrees given by variables"),
+    O_MOM("O-MOM", ConformanceLevel.OPEN, "defuzzification method",
+            "METHOD MoM, mean of maximum");
 
     private final String id;
     private final ConformanceLevel level;

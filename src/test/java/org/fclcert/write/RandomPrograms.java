@@ -2,6 +2,7 @@ package org.fclcert.write;
 
 import static org.fclcert.write.M.AT;
 
+import java.util.Arrays;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -71,7 +72,7 @@ final class RandomPrograms {
     private Defuzzification defuzzification() {
         Optional<Range> range = chance(0.5) ? Optional.of(new Range(literal(), literal(), AT)) : Optional.empty();
         List<Term> terms = list(0, 4, chance(0.5) ? this::singletonTerm : this::pointTerm);
-        Optional<Located<DefuzzificationMethod>> method = optional(0.8, () -> pick(DefuzzificationMethod.values()));
+        Optional<Located<DefuzzificationMethod>> method = optional(0.8, () -> pick(Arrays.stream(DefuzzificationMethod.values()).filter(DefuzzificationMethod::standard).toArray(DefuzzificationMethod[]::new)));
         Optional<DefaultValue> dflt = chance(0.2) ? Optional.empty()
                 : chance(0.5) ? Optional.of(new DefaultValue.NoChange(AT))
                 : Optional.of(new DefaultValue.Constant(literal(), AT));
