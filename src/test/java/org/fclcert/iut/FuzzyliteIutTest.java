@@ -72,7 +72,8 @@ class FuzzyliteIutTest {
 
     /**
      * One input, two singletons; at x = 10 neither term has a degree above 0 (lo falls to 0 at 10, hi rises
-     * from 0 at 10), so nothing fires. DEFAULT is spelt {@code DEFAULT_SPELLING}.
+     * from 0 at 10), so nothing fires. {@code defaultLine} is the DEFAULT line of the DEFUZZIFY block (line 17;
+     * empty for none).
      */
     private static String idleAt10(String defaultLine) {
         return """
