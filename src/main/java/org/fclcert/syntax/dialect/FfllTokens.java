@@ -225,6 +225,9 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
         }
         Matcher m = RANGE_COMMENT.matcher(text);
         if (!m.matches()) {
+            if (owner != null) {
+                owner.ranged = true;   // one message for one comment: no FCL-D118 on top
+            }
             report.error(comment, DialectCode.FFLL_MALFORMED_RANGE_COMMENT.code(), "this comment starts with RANGE"
                     + " but is not '(* RANGE(lo .. hi) *)' with two numbers: FFLL cannot read the variable's range");
             return;
