@@ -108,7 +108,7 @@ public enum Feature {
     O_ACCUM("O-ACCUM", ConformanceLevel.OPEN, "accumulation",
             "ACCUM: as the keyword of the accumulation method", true),
     O_RANGE_COMMENT("O-RANGE-COMMENT", ConformanceLevel.OPEN, "range",
-            "a variable's range written in a comment (* RANGE(lo .. hi) *) of its declaration", true),
+            "a variable's range in a comment (* RANGE(lo .. hi) *)", true),
     O_FFLL_NO_DEFAULT("O-FFLL-NO-DEFAULT", ConformanceLevel.OPEN, "default value",
             "an output without DEFAULT", true),
     O_FFLL_NO_METHOD("O-FFLL-NO-METHOD", ConformanceLevel.OPEN, "defuzzification method",
@@ -116,7 +116,7 @@ public enum Feature {
     O_DECLARATION_WITHOUT_COLON("O-DECLARATION-WITHOUT-COLON", ConformanceLevel.OPEN, "function block declaration",
             "a variable declaration without ':' before its type", true),
     O_VAR_RETAIN("O-VAR-RETAIN", ConformanceLevel.OPEN, "function block declaration",
-            "RETAIN or NON_RETAIN after VAR_INPUT or VAR_OUTPUT (IEC 61131-3)", true);
+            "RETAIN or NON_RETAIN on a variable section (IEC 61131-3)", true);
 
     private final String id;
     private final ConformanceLevel level;

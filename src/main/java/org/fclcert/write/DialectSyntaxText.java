@@ -14,12 +14,12 @@ final class DialectSyntaxText {
             case O_FFLL_OUTPUT_FUZZIFY -> "the terms are written in the output's DEFUZZIFY block";
             case O_END_FUZZIFY -> "written as END_DEFUZZIFY";
             case O_ACCUM -> "written as ACCU";
-            case O_RANGE_COMMENT -> "an output's range is written as its RANGE; an input's has no standard form"
-                    + " and no effect on evaluation";
+            case O_RANGE_COMMENT -> "an output's range is written as its RANGE, an input's is left out (the standard"
+                    + " has none; inputs outside it take the terms' outer degrees either way)";
             case O_FFLL_NO_DEFAULT -> "written as DEFAULT := 0";
             case O_FFLL_NO_METHOD -> "written as METHOD : CoG";
             case O_DECLARATION_WITHOUT_COLON -> "written with ':'";
-            case O_VAR_RETAIN -> "left out: it has no effect on evaluation";
+            case O_VAR_RETAIN -> "left out (it has no effect on evaluation)";
             default -> "written in standard syntax";
         };
     }

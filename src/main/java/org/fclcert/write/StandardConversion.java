@@ -97,7 +97,7 @@ public final class StandardConversion {
     private static Program dialectSyntax(Program program, Options options, List<Finding> findings) {
         for (FeatureUse u : program.dialectFeatures()) {
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
-                    u.feature().description() + ": " + DialectSyntaxText.standardForm(u.feature())));
+                    DialectSyntaxText.standardForm(u.feature())));
         }
         return program;
     }

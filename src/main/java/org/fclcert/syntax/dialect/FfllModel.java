@@ -137,8 +137,8 @@ final class FfllModel {
                     + m.keyword() + ")");
         } else if (m == DefuzzificationMethod.MOM) {
             warn(method.location(), DialectCode.FFLL_MOM, "METHOD: MoM: FFLL returns the middle of the peak of the"
-                    + " single most activated term of " + d.variable() + "; fclcert computes the mean of maximum of"
-                    + " the accumulated set (docs/semantics.md), which differs when terms overlap or tie");
+                    + " single most activated term of " + d.variable() + "; fclcert the mean of maximum of the"
+                    + " accumulated set, which differs when terms overlap or tie");
         } else if (terms.stream().anyMatch(t -> t.function() instanceof MembershipFunction.Points)) {
             warn(method.location(), DialectCode.FFLL_COG, "METHOD: CoG: FFLL adds the area of each activated term"
                     + " of " + d.variable() + " separately (overlaps count twice) on a 201-point grid; fclcert computes"
