@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
             CheckCommand.class,
             FeaturesCommand.class,
             FmtCommand.class,
+            ConvertCommand.class,
             CorpusCommand.class,
             CertifyCommand.class,
             ReportCommand.class,

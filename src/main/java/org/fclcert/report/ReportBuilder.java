@@ -96,6 +96,9 @@ public final class ReportBuilder {
     private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
         List<Report.FeatureRow> rows = new ArrayList<>();
         for (Feature f : Feature.values()) {
+            if (f.dialectSyntax()) {
+                continue;   // a dialect's own syntax: no corpus case can test it (Feature#dialectSyntax)
+            }
             List<CaseResult> evidence = counted.stream().filter(testing(f)).toList();
             int passed = count(evidence, CaseStatus.PASSED);
             int skipped = count(evidence, CaseStatus.SKIPPED);
