@@ -22,6 +22,7 @@ import picocli.CommandLine.Command;
             FmtCommand.class,
             CorpusCommand.class,
             CertifyCommand.class,
+            ProbeCommand.class,
             ReportCommand.class,
             EvalCommand.class,
         })

@@ -126,6 +126,12 @@ public final class Prober {
         }
     }
 
+    /** Every row "not measured", with the reason (the implementation could not be probed at all). */
+    public static List<DataCheckEntry> notMeasured(String why) {
+        return Arrays.stream(Table11.values()).map(r -> new DataCheckEntry(r.id(), r.item(), "",
+                DataCheckEntry.NOT_MEASURED, r.unit(), "", why)).toList();
+    }
+
     // ---------------------------------------------------------------- one attempt
 
     private enum Result { OK, REJECTED, WRONG, FAULT, UNJUDGED, UNREACHABLE }
