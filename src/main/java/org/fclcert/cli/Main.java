@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
             ConvertCommand.class,
             CorpusCommand.class,
             CertifyCommand.class,
+            ProbeCommand.class,
             ReportCommand.class,
             EvalCommand.class,
         })

@@ -10,7 +10,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
-import org.fclcert.harness.DataCheckEntry;
+import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
