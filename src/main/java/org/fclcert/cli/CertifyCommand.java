@@ -197,6 +197,9 @@ final class CertifyCommand implements Callable<Integer> {
         Report.Summary s = r.summary();
         out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
+        if (r.rejections().doubtful()) {
+            out.println("Negative cases: " + r.rejections().sentence());
+        }
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
         out.println("Standard Extensions realised (Table 9): " + realised(r, 9));

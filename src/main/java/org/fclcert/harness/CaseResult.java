@@ -11,7 +11,8 @@ import java.util.Map;
  * the last step when all passed are not kept: both are then null); for a negative case they are sentences
  * ({@code reject FCL-C002 at line 14} / {@code accepted}). {@code maxError} is the largest absolute error
  * measured over every compared output of the case, whatever its status. The program text is kept only for
- * cases that did not pass, so a report can show it.
+ * cases that did not pass, so a report can show it. {@code rejection} says, for a negative case the
+ * implementation rejected, whether it named the error's line (null otherwise).
  */
 @JsonInclude(JsonInclude.Include.NON_NULL)
 public record CaseResult(
@@ -34,7 +35,8 @@ public record CaseResult(
         List<String> notes,
         String block,
         String program,
-        Long durationMs) {
+        Long durationMs,
+        RejectionPlace rejection) {
 
     public CaseResult {
         tests = tests == null ? List.of() : List.copyOf(tests);
@@ -50,6 +52,6 @@ public record CaseResult(
     /** A skipped result for a planned case that never ran. */
     public static CaseResult skipped(PlannedCase c, String reason) {
         return new CaseResult(c.id(), c.title(), c.level(), c.tests(), c.flags(), CaseStatus.SKIPPED, reason,
-                null, null, null, null, null, null, null, ExportStatus.NOT_RUN, null, List.of(), null, null, null);
+                null, null, null, null, null, null, null, ExportStatus.NOT_RUN, null, List.of(), null, null, null, null);
     }
 }

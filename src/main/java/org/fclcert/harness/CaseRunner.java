@@ -59,10 +59,14 @@ final class CaseRunner {
             r.passed("rejected" + where + ": " + rejected.message())
                     .outcome(expected, "rejected" + where + ": " + rejected.message());
             if (rejected.line().isEmpty()) {
-                r.note("the implementation gave no line for its rejection; the error is at line " + want.line());
+                r.rejection(RejectionPlace.UNLOCATED)
+                        .note("the implementation gave no line for its rejection; the error is at line " + want.line());
             } else if (rejected.line().getAsInt() != want.line()) {
-                r.note("the implementation reports line " + rejected.line().getAsInt() + "; the error ("
+                r.rejection(RejectionPlace.OTHER_LINE)
+                        .note("the implementation reports line " + rejected.line().getAsInt() + "; the error ("
                         + want.code() + ") is at line " + want.line());
+            } else {
+                r.rejection(RejectionPlace.AT_ERROR_LINE);
             }
         } else {
             r.failed("accepted a program the standard rejects: " + want.code() + " at line " + want.line())

@@ -18,6 +18,7 @@ final class ResultBuilder {
     private ExportStatus exportStatus = ExportStatus.NOT_RUN;
     private String exportMessage;
     private final List<String> notes = new ArrayList<>();
+    private RejectionPlace rejection;
 
     ResultBuilder(RunCase c) {
         this.c = c;
@@ -77,6 +78,11 @@ final class ResultBuilder {
         return this;
     }
 
+    ResultBuilder rejection(RejectionPlace place) {
+        rejection = place;
+        return this;
+    }
+
     ResultBuilder note(String note) {
         notes.add(note);
         return this;
@@ -86,6 +92,6 @@ final class ResultBuilder {
         boolean keepProgram = status != CaseStatus.PASSED || exportStatus == ExportStatus.FAILED;
         return new CaseResult(c.id(), c.title(), c.level().word(), c.tests(), c.flags(), status, message, step,
                 inputs, expected, actual, error, maxError, c.tolerance().describe(), exportStatus, exportMessage,
-                notes, c.block().orElse(null), keepProgram ? c.program() : null, durationMs);
+                notes, c.block().orElse(null), keepProgram ? c.program() : null, durationMs, rejection);
     }
 }

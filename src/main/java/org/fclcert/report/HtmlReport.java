@@ -98,6 +98,11 @@ public final class HtmlReport {
         out.append("<p class=\"counts\"><span><b>").append(s.cases()).append("</b> cases</span>")
                 .append(count("passed", s.passed())).append(count("failed", s.failed()))
                 .append(count("errored", s.errored())).append(count("skipped", s.skipped())).append("</p>\n");
+        if (r.rejections().rejected() > 0) {
+            out.append("<p>Negative cases: ").append(Texts.html(r.rejections().sentence()))
+                    .append(r.rejections().doubtful() ? " <span class=\"small\">(" + Texts.html(Report.REJECTION_CAVEAT)
+                            + ")</span>" : "").append("</p>\n");
+        }
         if (!r.run().complete()) {
             out.append("<p><b>Incomplete run:</b> some selected cases were not run (shown as skipped).</p>\n");
         }

@@ -57,6 +57,10 @@ public final class MarkdownReport {
         Report.Summary s = r.summary();
         line("- Cases run: " + s.cases() + ": " + s.passed() + " passed, " + s.failed() + " failed, " + s.errored()
                 + " errored, " + s.skipped() + " skipped");
+        if (r.rejections().rejected() > 0) {
+            line("- Negative cases: " + r.rejections().sentence()
+                    + (r.rejections().doubtful() ? " (" + Report.REJECTION_CAVEAT + ")" : ""));
+        }
         if (!r.run().selection().whole()) {
             line("- Selection: " + selection() + " (a partial run: verdicts cover only the cases run)");
         }

@@ -20,6 +20,7 @@ public record Report(
         RunHeader.CorpusInfo corpus,
         Run run,
         Summary summary,
+        Rejections rejections,
         BasicLevel basicLevel,
         List<FeatureRow> features,
         List<DataCheckEntry> dataCheckList,
@@ -45,6 +46,27 @@ public record Report(
 
     public record Summary(int cases, int passed, int failed, int errored, int skipped) {
     }
+
+    /**
+     * The negative cases the implementation rejected, by where it placed the rejection ({@link
+     * org.fclcert.harness.RejectionPlace}): only {@code atErrorLine} shows the error itself was found.
+     */
+    public record Rejections(int rejected, int atErrorLine, int otherLine, int unlocated) {
+        /** {@code 72 negative cases rejected: 8 at the error's line, 4 at another line, 60 without a line}. */
+        public String sentence() {
+            return rejected + " negative case(s) rejected: " + atErrorLine + " at the error's line, " + otherLine
+                    + " at another line, " + unlocated + " without a line";
+        }
+
+        /** True when some rejections may have been for another reason than the case's error. */
+        public boolean doubtful() {
+            return otherLine + unlocated > 0;
+        }
+    }
+
+    /** Why a rejection elsewhere than at the error's line is weak evidence, for the reports. */
+    public static final String REJECTION_CAVEAT = "a rejection at another line or without a line shows the program"
+            + " was refused, not that this case's error was found (the implementation may not read the program at all)";
 
     /**
      * Clause 6.1 b): conformant only when every Basic Level case of the corpus (not flagged interpretation)

@@ -35,7 +35,7 @@ public final class ReportBuilder {
         List<Report.FeatureRow> features = featureRows(counted);
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
-                summary(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
+                summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
                 claims(header.iut().claims(), features), cases);
     }
 
@@ -61,6 +61,23 @@ public final class ReportBuilder {
     private static Report.Summary summary(List<CaseResult> cases) {
         return new Report.Summary(cases.size(), count(cases, CaseStatus.PASSED), count(cases, CaseStatus.FAILED),
                 count(cases, CaseStatus.ERRORED), count(cases, CaseStatus.SKIPPED));
+    }
+
+    private static Report.Rejections rejections(List<CaseResult> cases) {
+        int at = 0;
+        int other = 0;
+        int unlocated = 0;
+        for (CaseResult c : cases) {
+            if (c.rejection() == null) {
+                continue;
+            }
+            switch (c.rejection()) {
+                case AT_ERROR_LINE -> at++;
+                case OTHER_LINE -> other++;
+                case UNLOCATED -> unlocated++;
+            }
+        }
+        return new Report.Rejections(at + other + unlocated, at, other, unlocated);
     }
 
     private static int count(List<CaseResult> cases, CaseStatus status) {

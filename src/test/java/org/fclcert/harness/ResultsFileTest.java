@@ -34,7 +34,7 @@ class ResultsFileTest {
         return new CaseResult("B-COGS-001", "t1", "basic", List.of("B-COGS"), List.of(), CaseStatus.FAILED,
                 "step 1 of 1: y = NaN where 2.0 is expected", 1, Map.of("x", 1.0), Map.of("y", 2.0),
                 Map.of("y", Double.NaN), null, Double.POSITIVE_INFINITY, "exact", ExportStatus.UNSUPPORTED, null,
-                List.of("a note"), null, "FUNCTION_BLOCK fb\n", 12L);
+                List.of("a note"), null, "FUNCTION_BLOCK fb\n", 12L, null);
     }
 
     @Test

@@ -185,17 +185,25 @@ class RunnerTest {
                 (call, in) -> Map.of()), bad);
         assertEquals(CaseStatus.PASSED, sameLine.status());
         assertEquals(List.of(), sameLine.notes());
+        assertEquals(RejectionPlace.AT_ERROR_LINE, sameLine.rejection());
 
         CaseResult otherLine = runOne(new ScriptedIut(fcl -> new LoadOutcome.Rejected("no term", OptionalInt.of(12)),
                 (call, in) -> Map.of()), bad);
         assertEquals(CaseStatus.PASSED, otherLine.status());
         assertEquals(List.of("the implementation reports line 12; the error (FCL-C002) is at line 14"),
                 otherLine.notes());
+        assertEquals(RejectionPlace.OTHER_LINE, otherLine.rejection());
+
+        CaseResult unlocated = runOne(new ScriptedIut(fcl -> new LoadOutcome.Rejected("no", OptionalInt.empty()),
+                (call, in) -> Map.of()), bad);
+        assertEquals(CaseStatus.PASSED, unlocated.status());
+        assertEquals(RejectionPlace.UNLOCATED, unlocated.rejection());
 
         CaseResult accepted = runOne(ScriptedIut.loading((call, in) -> Map.of()), bad);
         assertEquals(CaseStatus.FAILED, accepted.status());
         assertEquals("accepted a program the standard rejects: FCL-C002 at line 14", accepted.message());
         assertEquals("accepted", accepted.actual());
+        assertEquals(null, accepted.rejection());
 
         CaseResult crashed = runOne(new ScriptedIut(fcl -> {
             throw new IutException(IutException.Kind.CRASH, "killed by signal 6", "abort");

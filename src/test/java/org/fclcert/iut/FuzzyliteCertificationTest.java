@@ -65,6 +65,7 @@ class FuzzyliteCertificationTest {
         CaseResult noMethod = byId.get("N-C016-001");
         assertEquals(CaseStatus.PASSED, noMethod.status());
         assertEquals(List.of("the implementation reports line 34; the error (FCL-C016) is at line 26"), noMethod.notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.OTHER_LINE, noMethod.rejection());
 
         // an unclosed comment (line 42): "passes", but fuzzylite never got there - it refused CoGS, naming no line
         CaseResult unclosed = byId.get("N-S002-001");
@@ -73,6 +74,7 @@ class FuzzyliteCertificationTest {
                 unclosed.message());
         assertEquals(List.of("the implementation gave no line for its rejection; the error is at line 42"),
                 unclosed.notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.UNLOCATED, unclosed.rejection());
 
         // FUZZIFY temp never closed: rejected where the next FUZZIFY starts (line 21), the case's line
         CaseResult unclosedBlock = byId.get("N-S012-001");

@@ -70,11 +70,11 @@ class RenderersTest {
     void junitHasOneTestcasePerCaseAndSurvivesControlCharacters() throws Exception {
         CaseResult garbage = new CaseResult("B-FB-009", "garbage", "basic", List.of("B-FB"), List.of(),
                 CaseStatus.ERRORED, "broke the protocol: reply 'x\u0001\u0007y'", null, null, null, null,
-                "\u0000\u001b[31mboom", null, "exact", null, null, List.of(), null, null, 1L);
+                "\u0000\u001b[31mboom", null, "exact", null, null, List.of(), null, null, 1L, null);
         List<CaseResult> cases = new java.util.ArrayList<>(REPORT.cases());
         cases.add(garbage);
         Report r = new Report(1, REPORT.generatedAt(), REPORT.iut(), REPORT.toolkit(), REPORT.corpus(), REPORT.run(),
-                new Report.Summary(9, 3, 3, 2, 1), REPORT.basicLevel(), REPORT.features(), List.of(),
+                new Report.Summary(9, 3, 3, 2, 1), REPORT.rejections(), REPORT.basicLevel(), REPORT.features(), List.of(),
                 REPORT.interpretation(), REPORT.claims(), cases);
         Document doc = DocumentBuilderFactory.newInstance().newDocumentBuilder()
                 .parse(new ByteArrayInputStream(JunitReport.render(r).getBytes(StandardCharsets.UTF_8)));

@@ -12,6 +12,7 @@ import java.util.Arrays;
 import java.util.List;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.RejectionPlace;
 import org.fclcert.model.Feature;
 import org.junit.jupiter.api.Test;
 
@@ -130,5 +131,27 @@ class ReportBuilderTest {
         assertTrue(FailOn.CLAIMED.holds(untestedClaim), "a claim without a case in the run is not refuted");
         assertFalse(FailOn.CLAIMED.holds(basicOnly));
         assertEquals("claimed but not realised: E-NOT (not realised)", FailOn.CLAIMED.explain(basicOnly));
+    }
+
+    @Test
+    void negativeCasesAreCountedByWhereTheRejectionWasPlaced() {
+        List<CaseResult> run = List.of(rejected("N-C002-001", RejectionPlace.AT_ERROR_LINE),
+                rejected("N-C002-002", RejectionPlace.OTHER_LINE), rejected("N-S002-001", RejectionPlace.UNLOCATED),
+                rejected("N-S003-001", RejectionPlace.UNLOCATED), result("B-COGS-001", "basic", CaseStatus.PASSED,
+                        List.of("B-COGS")));
+        Report r = ReportBuilder.build(header(5, run, List.of()), run, List.of(), List.of(), Instant.EPOCH);
+        assertEquals(new Report.Rejections(4, 1, 1, 2), r.rejections());
+        assertEquals("4 negative case(s) rejected: 1 at the error's line, 1 at another line, 2 without a line",
+                r.rejections().sentence());
+        assertTrue(r.rejections().doubtful());
+        assertTrue(MarkdownReport.render(r).contains("- Negative cases: 4 negative case(s) rejected: 1 at the error's"
+                + " line, 1 at another line, 2 without a line (a rejection at another line"));
+        assertFalse(report(List.of()).rejections().doubtful(), "no negative case: nothing to doubt");
+    }
+
+    private static CaseResult rejected(String id, RejectionPlace place) {
+        CaseResult r = result(id, "basic", CaseStatus.PASSED, List.of());
+        return new CaseResult(r.id(), r.title(), r.level(), r.tests(), r.flags(), r.status(), "rejected", null, null,
+                "reject", "rejected", null, null, "exact", r.exportStatus(), null, List.of(), null, null, 1L, place);
     }
 }

@@ -19,7 +19,7 @@ final class Results {
                 bad ? "step 1 of 1: y = 1.0 where 2.0 is expected" : "1 step(s) within tolerance", bad ? 1 : null,
                 bad ? Map.of("x", 0.5) : null, bad ? Map.of("y", 2.0) : null, bad ? Map.of("y", 1.0) : null,
                 status == CaseStatus.ERRORED ? "crashed\n--- stderr ---\nSegmentation fault" : null, 0.0, "exact",
-                ExportStatus.UNSUPPORTED, null, List.of(), null, bad ? "FUNCTION_BLOCK fb\n  (* x < y & z *)\nEND_FUNCTION_BLOCK" : null, 3L);
+                ExportStatus.UNSUPPORTED, null, List.of(), null, bad ? "FUNCTION_BLOCK fb\n  (* x < y & z *)\nEND_FUNCTION_BLOCK" : null, 3L, null);
     }
 
     static RunHeader header(int basicCasesInCorpus, List<CaseResult> planned, List<String> claims) {
