@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseResult;
@@ -64,9 +65,18 @@ final class CertifyCommand implements Callable<Integer> {
     @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found (jars or directories, separated as the platform's class path)")
     String classpath;
 
-    @Option(names = "--corpus", paramLabel = "DIR", defaultValue = "conformance",
-            description = "Corpus directory (default: ${DEFAULT-VALUE})")
+    @Option(names = "--corpus", paramLabel = "DIR",
+            description = "Corpus directory (default: conformance/ when the current directory has one, else the"
+                    + " corpus bundled in fclcert)")
     Path corpus;
+
+    /** The corpus of a checkout of this repository, used when the command runs at its root. */
+    private static final Path DEFAULT_CORPUS = Path.of("conformance");
+
+    /** How the run names its corpus: the directory given or found, or {@code bundled}. */
+    private String corpusName() {
+        return corpus != null ? corpus.toString() : BundledCorpus.NAME;
+    }
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output directory (default: reports/reference for the reference, else reports/<iut-name>)")
@@ -130,12 +140,12 @@ final class CertifyCommand implements Callable<Integer> {
         List<RunCase> all = RunCases.from(loaded.cases());
         List<RunCase> selected = selection.apply(all);
         if (selected.isEmpty()) {
-            throw new CannotRun("no case of " + corpus + " matches the selection");
+            throw new CannotRun("no case of " + corpusName() + " matches the selection");
         }
         IutOptions options = options(requestTimeout);
         try (ImplementationUnderTest impl = open(options)) {
             IutInfo info = hello(impl);
-            RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
+            RunHeader header = RunHeaders.of(info, iut, classpath, corpusName(), loaded.sha256(), all, selected,
                     List.of(levels, features, cases));
             Path dir = out != null ? out : Path.of("reports", OutDirs.forIut(iut, info.name()));
             Report report = run(impl, header, selected, dir, err, probe, options);
@@ -252,11 +262,14 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     private Corpus loadCorpus() throws CannotRun {
-        if (!Files.isDirectory(corpus)) {
+        if (corpus == null && Files.isDirectory(DEFAULT_CORPUS)) {
+            corpus = DEFAULT_CORPUS;
+        }
+        if (corpus != null && !Files.isDirectory(corpus)) {
             throw new CannotRun("corpus directory " + corpus + " does not exist (use --corpus DIR)");
         }
         try {
-            return Corpus.load(corpus);
+            return corpus != null ? Corpus.load(corpus) : BundledCorpus.load();
         } catch (CorpusException e) {
             throw new CannotRun("the corpus cannot be used: " + e.getMessage());
         }

@@ -72,7 +72,8 @@ final class Texts {
             b.append(" --classpath ").append(shellQuote(report.iut().classpath()));
         }
         String dir = report.corpus().dir();
-        if (dir != null && !dir.equals("conformance")) {
+        // the default corpus is conformance/ at a checkout's root, else the bundled one: neither needs naming
+        if (dir != null && !dir.equals("conformance") && !dir.equals(org.fclcert.corpus.BundledCorpus.NAME)) {
             b.append(" --corpus ").append(shellQuote(dir));
         }
         return b.append(" --case ").append(shellQuote(caseId)).toString();

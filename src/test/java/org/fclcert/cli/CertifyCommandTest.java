@@ -204,4 +204,20 @@ class CertifyCommandTest {
     void aBadProbeBudgetIsAUsageError() {
         assertEquals(2, certify("reference", "--probe-cap", "8", "--probe-budget", "later"));
     }
+
+    @Test
+    void outsideACheckoutTheBundledCorpusIsUsed() throws Exception {
+        // a separate JVM whose working directory has no conformance/: certify falls back to the bundled corpus
+        Path reports = dir.resolve("reports");
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                System.getProperty("java.class.path"), "org.fclcert.cli.Main", "certify", "--no-probe", "--case",
+                "B-COGS-001", "--out", reports.toString())
+                .directory(dir.toFile()).redirectErrorStream(true).start();
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(0, p.waitFor(), text);   // --fail-on none: a completed run exits 0
+        assertTrue(text.contains("1 cases, 1 passed, 0 failed"), text);
+        Report r = new com.fasterxml.jackson.databind.ObjectMapper().readValue(reports.resolve("report.json").toFile(),
+                Report.class);
+        assertEquals("bundled", r.corpus().dir());
+    }
 }
