@@ -332,7 +332,8 @@ final class ModelBuilder {
         WordContext word = ctx.getRuleContext(WordContext.class, 0);
         String text = word.getText().toUpperCase(Locale.ROOT);
         for (E value : type.getEnumConstants()) {
-            if (value.name().equals(text)) {
+            boolean dialectOnly = value instanceof AccumulationMethod a && !a.standard();
+            if (value.name().equals(text) && !dialectOnly) {
                 return Optional.of(new Located<>(value, at(ctx.start)));
             }
         }
