@@ -335,17 +335,10 @@ final class SmoothSet {
         for (int i = 0; i < 200 && hi - lo > Math.ulp(Math.abs(t)) * 4; i++) {
             kronrod(fromLeft ? a : t, fromLeft ? t : b);
             double g = panel[0] - target;         // increasing in t from the left, decreasing from the right
-            boolean tooFar = fromLeft ? g > 0 : g < 0;
-            if (tooFar) {
-                if (fromLeft) {
-                    hi = t;
-                } else {
-                    lo = t;
-                }
-            } else if (fromLeft) {
-                lo = t;
+            if ((g > 0) == fromLeft) {
+                hi = t;                           // from the left: too much area, t too far right
             } else {
-                hi = t;
+                lo = t;
             }
             if (Math.abs(g) <= Math.abs(target) * 1e-15) {
                 return t;

@@ -61,7 +61,7 @@ final class Giveaways {
                         out.add(new Giveaway("hedge '" + w + "'", tok.line()));
                     } else if ((w.equals("ENABLED") || w.equals("LOCK")) && next.kind() == Kind.COLON) {
                         out.add(new Giveaway("'" + w + "'", tok.line()));
-                    } else if (w.equals("nan") || w.endsWith("inf") && tok.kind() == Kind.NUMBER) {
+                    } else if (w.equals("nan") || w.endsWith("inf") && (tok.kind() == Kind.NUMBER || w.equals("inf"))) {
                         out.add(new Giveaway("'" + w + "'", tok.line()));
                     } else if (afterColon && w.equals("COGSS")) {
                         out.add(new Giveaway("METHOD COGSS", tok.line()));

@@ -225,7 +225,8 @@ final class LibraryDialectParser {
 
     private Literal number(boolean infinityAllowed) {
         Token t = peek();
-        if (t.kind() == Kind.WORD && t.text().equals("nan") || t.kind() == Kind.NUMBER && t.text().endsWith("inf")) {
+        if (t.kind() == Kind.WORD && (t.text().equals("nan") || t.text().equals("inf"))
+                || t.kind() == Kind.NUMBER && t.text().endsWith("inf")) {
             next();
             if (!fuzzylite || !infinityAllowed) {
                 error(t, LibraryDialectCode.BAD_NUMBER, "'" + t.text() + "' is not a number here");
@@ -1162,7 +1163,7 @@ final class LibraryDialectParser {
                     error(a.location().line(), a.location().column(), LibraryDialectCode.ACCUMULATION_CONFLICT,
                             "ACCU " + a.value() + " differs from ACCU " + accu.get().value() + " of another output"
                                     + " concluded by rule block '" + rb.name() + "'; fclcert holds one ACCU per rule block");
-                } else {
+                } else if (accu.isEmpty()) {
                     accu = Optional.of(a);
                 }
             }
