@@ -214,6 +214,14 @@ public enum Feature {
         return description;
     }
 
+    /**
+     * True for the features only a dialect reader produces (O-MOM and every entry after it): the strict
+     * reader rejects them, so the conformance corpus, which is standard FCL, cannot contain them.
+     */
+    public boolean dialectOnly() {
+        return ordinal() >= O_MOM.ordinal();
+    }
+
     public static Optional<Feature> byId(String id) {
         return Arrays.stream(values()).filter(f -> f.id.equals(id)).findFirst();
     }
