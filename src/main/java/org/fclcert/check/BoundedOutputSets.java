@@ -13,7 +13,7 @@ import org.fclcert.model.Point;
 import org.fclcert.model.Term;
 
 /**
- * FCL-C025: an output defuzzified with CoG, CoA, LM or RM and no RANGE has no point term with a
+ * FCL-C025: an output defuzzified with CoG, CoA, LM or RM (or the Open Level MoM) and no RANGE has no point term with a
  * non-zero constant degree at its first or last point. Such a term keeps that degree out to the
  * ends of the axis (5.2.2), so without a RANGE the accumulated set reaches the limits of the data
  * type (5.2.3) and the defuzzified value is meaningless. Variable degrees are not judged: their
@@ -21,7 +21,8 @@ import org.fclcert.model.Term;
  */
 public final class BoundedOutputSets implements FunctionBlockRule {
     private static final Set<DefuzzificationMethod> NEED_BOUNDS = EnumSet.of(
-            DefuzzificationMethod.COG, DefuzzificationMethod.COA, DefuzzificationMethod.LM, DefuzzificationMethod.RM);
+            DefuzzificationMethod.COG, DefuzzificationMethod.COA, DefuzzificationMethod.LM, DefuzzificationMethod.RM,
+            DefuzzificationMethod.MOM);
 
     @Override
     public String code() {

@@ -32,6 +32,8 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.probe.DataCheckEntry;
+import org.fclcert.probe.Prober;
 import org.fclcert.report.FailOn;
 import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
@@ -56,7 +58,7 @@ final class CertifyCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND (default: ${DEFAULT-VALUE})")
+            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
     String iut;
 
     @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found (jars or directories, separated as the platform's class path)")
@@ -90,6 +92,17 @@ final class CertifyCommand implements Callable<Integer> {
             description = "none | basic | claimed | any: exit 1 when this does not hold (default: ${DEFAULT-VALUE})")
     String failOn;
 
+    @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
+    boolean noProbe;
+
+    @Option(names = "--probe-cap", paramLabel = "N", defaultValue = "4096",
+            description = "Largest size the Table 11 probes try (default: ${DEFAULT-VALUE}; fclcert probe uses 100000)")
+    long probeCap;
+
+    @Option(names = "--probe-budget", paramLabel = "DURATION", defaultValue = "3m",
+            description = "Time budget of the Table 11 probes (default: ${DEFAULT-VALUE})")
+    String probeBudget;
+
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
@@ -107,18 +120,25 @@ final class CertifyCommand implements Callable<Integer> {
         CaseSelection selection = new CaseSelection(parseLevels(), parseFeatures(), cases);
         Duration requestTimeout = Durations.parse(timeout).orElseThrow(() -> new CannotRun(
                 "--timeout: '" + timeout + "' is not a duration (write e.g. 5s, 500ms or 2m)"));
+        Duration budget = Durations.parse(probeBudget).filter(d -> !d.isZero()).orElseThrow(() -> new CannotRun(
+                "--probe-budget: '" + probeBudget + "' is not a duration (write e.g. 3m, 90s)"));
+        if (probeCap < 1) {
+            throw new CannotRun("--probe-cap must be at least 1, not " + probeCap);
+        }
+        Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, budget, Set.of());
         Corpus loaded = loadCorpus();
         List<RunCase> all = RunCases.from(loaded.cases());
         List<RunCase> selected = selection.apply(all);
         if (selected.isEmpty()) {
             throw new CannotRun("no case of " + corpus + " matches the selection");
         }
-        try (ImplementationUnderTest impl = open(requestTimeout)) {
+        IutOptions options = options(requestTimeout);
+        try (ImplementationUnderTest impl = open(options)) {
             IutInfo info = hello(impl);
             RunHeader header = RunHeaders.of(info, iut, classpath, corpus.toString(), loaded.sha256(), all, selected,
                     List.of(levels, features, cases));
             Path dir = out != null ? out : Path.of("reports", OutDirs.forIut(iut, info.name()));
-            Report report = run(impl, header, selected, dir, err);
+            Report report = run(impl, header, selected, dir, err, probe, options);
             print(stdout, report, dir);
             if (!condition.holds(report)) {
                 err.println("fclcert certify: --fail-on " + failOn + ": " + condition.explain(report));
@@ -130,16 +150,21 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     private Report run(ImplementationUnderTest impl, RunHeader header, List<RunCase> selected, Path dir,
-            PrintWriter err) throws CannotRun {
+            PrintWriter err, Prober.Options probe, IutOptions options) throws CannotRun {
         Path resultsFile = dir.resolve("results.jsonl");
         Thread onInterrupt = new Thread(() -> reportInterruptedRun(impl, resultsFile, dir, err));
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             ProgressLine progress = new ProgressLine(err, System.console() != null);
             Runtime.getRuntime().addShutdownHook(onInterrupt);
             List<CaseResult> done = new Runner(progress).run(impl, header, selected, results);
-            Runtime.getRuntime().removeShutdownHook(onInterrupt);
             progress.finish();
-            Report report = ReportBuilder.build(header, done, List.of(), List.of(), Instant.now());
+            List<DataCheckEntry> dataCheckList = List.of();
+            if (probe != null) {
+                dataCheckList = dataCheckList(probe, options, err);
+                results.dataCheckList(dataCheckList);
+            }
+            Runtime.getRuntime().removeShutdownHook(onInterrupt);
+            Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
             ReportFiles.writeAll(report, dir);
             return report;
         } catch (IOException e) {
@@ -184,14 +209,11 @@ final class CertifyCommand implements Callable<Integer> {
         out.flush();
     }
 
-    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3}. */
-    /** Realised rows of a table; dialect-only features (no standard corpus case can test them) are not counted. */
+    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3} (the report has no rows for dialect-syntax features). */
     private static String realised(Report r, int table) {
-        List<Report.FeatureRow> rowsOfTable = r.features().stream().filter(f -> f.table() == table)
-                .filter(f -> org.fclcert.model.Feature.byId(f.id()).map(x -> !x.dialectOnly()).orElse(true)).toList();
-        List<String> ids = rowsOfTable.stream().filter(f -> f.status() == FeatureStatus.REALISED)
+        List<String> ids = r.features().stream().filter(f -> f.table() == table && f.status() == FeatureStatus.REALISED)
                 .map(Report.FeatureRow::id).toList();
-        long rows = rowsOfTable.size();
+        long rows = r.features().stream().filter(f -> f.table() == table).count();
         return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
     }
 
@@ -237,13 +259,37 @@ final class CertifyCommand implements Callable<Integer> {
         }
     }
 
-    private ImplementationUnderTest open(Duration requestTimeout) throws CannotRun {
+    private IutOptions options(Duration requestTimeout) {
+        IutOptions options = IutOptions.defaults().withTimeout(requestTimeout);
+        if (classpath != null) {
+            options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
+                    .filter(s -> !s.isBlank()).map(Path::of).toList());
+        }
+        return options;
+    }
+
+    /** The Table 11 probes on fresh sessions of the implementation, after the cases. */
+    private List<DataCheckEntry> dataCheckList(Prober.Options probe, IutOptions options, PrintWriter err) {
+        boolean terminal = System.console() != null;
         try {
-            IutOptions options = IutOptions.defaults().withTimeout(requestTimeout);
-            if (classpath != null) {
-                options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
-                        .filter(s -> !s.isBlank()).map(Path::of).toList());
+            List<DataCheckEntry> list = Prober.probe(() -> Iuts.open(iut, options), probe, (row, index, count) -> {
+                if (terminal) {
+                    err.print("\r\u001b[Kprobing Table 11, " + index + "/" + count + ": " + row.id());
+                    err.flush();
+                }
+            });
+            if (terminal) {
+                err.print("\r\u001b[K");
+                err.flush();
             }
+            return list;
+        } catch (IutException e) {
+            return Prober.notMeasured("the implementation could not be probed: " + e.getMessage());
+        }
+    }
+
+    private ImplementationUnderTest open(IutOptions options) throws CannotRun {
+        try {
             return Iuts.open(iut, options);
         } catch (IutException e) {
             throw new CannotRun("cannot start the implementation '" + iut + "': " + e.getMessage()

@@ -7,7 +7,6 @@ import java.util.concurrent.Callable;
 import org.fclcert.check.Analysis;
 import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.model.Diagnostic;
-import org.fclcert.syntax.StrictReader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -28,6 +27,9 @@ final class CheckCommand implements Callable<Integer> {
             description = "text or json (default: ${DEFAULT-VALUE})")
     OutputFormat format;
 
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    DialectName dialect;
+
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "FCL source files")
     List<String> files;
 
@@ -40,7 +42,8 @@ final class CheckCommand implements Callable<Integer> {
         boolean unreadable = false;
         for (String file : files) {
             try {
-                List<Diagnostic> found = Analysis.analyze(new StrictReader(), file, SourceFiles.read(file)).diagnostics();
+                String text = SourceFiles.read(file);
+                List<Diagnostic> found = Analysis.analyze(dialect.reader(file, text, err), file, text).diagnostics();
                 if (format == OutputFormat.text) {
                     DiagnosticPrinter.text(out, found);
                 }

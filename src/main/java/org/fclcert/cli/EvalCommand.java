@@ -17,7 +17,6 @@ import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Names;
 import org.fclcert.model.Program;
 import org.fclcert.model.Variable;
-import org.fclcert.syntax.StrictReader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -39,6 +38,9 @@ final class EvalCommand implements Callable<Integer> {
 
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
     String file;
+
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    DialectName dialect;
 
     @Option(names = "--block", paramLabel = "NAME", description = "function block to evaluate (default: the first)")
     String block;
@@ -111,7 +113,8 @@ final class EvalCommand implements Callable<Integer> {
 
     /** Reads and checks FILE; diagnostics go to stderr, and a program with errors is not evaluated. */
     private Optional<Program> checkedProgram(PrintWriter err) throws FileProblem {
-        Analysis analysis = Analysis.analyze(new StrictReader(), file, SourceFiles.read(file));
+        String text = SourceFiles.read(file);
+        Analysis analysis = Analysis.analyze(dialect.reader(file, text, err), file, text);
         DiagnosticPrinter.text(err, analysis.diagnostics());
         if (analysis.program().isEmpty()) {
             err.println("fclcert: " + file + " has errors; not evaluated");

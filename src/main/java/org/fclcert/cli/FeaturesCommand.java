@@ -15,7 +15,6 @@ import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.model.FeatureUse;
 import org.fclcert.model.SourceLocation;
-import org.fclcert.syntax.StrictReader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -40,6 +39,9 @@ final class FeaturesCommand implements Callable<Integer> {
             description = "text or json (default: ${DEFAULT-VALUE})")
     OutputFormat format;
 
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    DialectName dialect;
+
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
     String file;
 
@@ -53,7 +55,8 @@ final class FeaturesCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         Analysis analysis;
         try {
-            analysis = Analysis.analyze(new StrictReader(), file, SourceFiles.read(file));
+            String text = SourceFiles.read(file);
+            analysis = Analysis.analyze(dialect.reader(file, text, err), file, text);
         } catch (FileProblem e) {
             err.println("fclcert: " + e.getMessage());
             return ExitCodes.USAGE;

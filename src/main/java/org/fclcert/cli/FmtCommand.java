@@ -4,7 +4,10 @@ import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import org.fclcert.check.Analysis;
 import org.fclcert.cli.SourceFiles.FileProblem;
-import org.fclcert.syntax.StrictReader;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
+import org.fclcert.write.StandardConversion;
 import org.fclcert.write.CanonicalWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -30,6 +33,10 @@ final class FmtCommand implements Callable<Integer> {
     @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
     boolean dropComments;
 
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION
+            + "; a dialect program is written as standard FCL when it converts exactly (else see 'fclcert convert')")
+    DialectName dialect;
+
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
     String file;
 
@@ -39,13 +46,27 @@ final class FmtCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         try {
             String source = SourceFiles.read(file);
-            Analysis analysis = Analysis.analyze(new StrictReader(), file, source);
+            Dialect read = dialect.resolve(file, source, err);
+            Analysis analysis = Analysis.analyze(DialectReaders.reader(read), file, source);
             DiagnosticPrinter.text(err, analysis.diagnostics());
             if (analysis.program().isEmpty()) {
                 err.println("fclcert: " + file + " has errors; not formatted");
                 return ExitCodes.ERRORS;
             }
-            String canonical = new CanonicalWriter().write(analysis.program().get());
+            Program program = analysis.program().get();
+            if (read != Dialect.STRICT) {
+                StandardConversion.Result converted = new StandardConversion().convert(program);
+                if (!converted.exact()) {
+                    ConvertCommand.printFindings(err, converted.findings().stream()
+                            .filter(f -> !(f.kind() instanceof StandardConversion.Kind.Exact)).toList(), false);
+                    err.println("fclcert: " + file + " not formatted: as " + read.displayName() + " it does not convert"
+                            + " exactly to standard FCL; 'fclcert convert --allow-lossy' writes the nearest standard"
+                            + " program");
+                    return ExitCodes.ERRORS;
+                }
+                program = converted.program();
+            }
+            String canonical = new CanonicalWriter().write(program);
             int lostComments = occurrences(source, "(*") - occurrences(canonical, "(*");
             if (!write) {
                 out.print(canonical);

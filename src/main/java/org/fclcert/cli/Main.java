@@ -20,8 +20,10 @@ import picocli.CommandLine.Command;
             CheckCommand.class,
             FeaturesCommand.class,
             FmtCommand.class,
+            ConvertCommand.class,
             CorpusCommand.class,
             CertifyCommand.class,
+            ProbeCommand.class,
             ReportCommand.class,
             EvalCommand.class,
         })

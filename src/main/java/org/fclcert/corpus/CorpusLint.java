@@ -32,7 +32,7 @@ public final class CorpusLint {
     /** The file listing retired ids, one per line (text after the id is the reason; '#' starts a comment). */
     public static final String RETIRED_FILE = "RETIRED";
 
-    private final FclReader reader = new StrictReader();
+    private final FclReader reader = StrictReader.openLevel();   // the corpus is standard FCL plus the Open Level methods
     private final FeatureDetector detector = new FeatureDetector();
 
     /** Lints the corpus under {@code dir}. */

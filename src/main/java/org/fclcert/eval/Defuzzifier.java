@@ -127,6 +127,42 @@ final class Defuzzifier {
         return Double.NaN;
     }
 
+    /**
+     * Mean of maximum (Open Level, O-MOM; docs/semantics.md "Open Level (dialect) semantics"): the set of
+     * points where the degree is the supremum is a union of plateaus (pieces whose both vertices reach
+     * it) and isolated points. When the plateaus have a positive total length, the length-weighted mean
+     * of their midpoints, i.e. the centre of the argmax set; otherwise the mean of the distinct
+     * maximising vertices. NaN when no degree is positive.
+     */
+    static double meanOfMaximum(double[] px, double[] py, int np) {
+        double sup = supremum(py, np);
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        double level = sup * (1 - TIE);
+        double length = 0;
+        double moment = 0;
+        for (int j = 0; j + 1 < np; j++) {
+            double h = px[j + 1] - px[j];
+            if (h > 0 && py[j] >= level && py[j + 1] >= level) {
+                length += h;
+                moment += h * (px[j] + px[j + 1]) * 0.5;
+            }
+        }
+        if (length > 0) {
+            return moment / length;
+        }
+        double sum = 0;
+        int count = 0;
+        for (int j = 0; j < np; j++) {
+            if (py[j] >= level && (count == 0 || px[j] != px[j - 1] || py[j - 1] < level)) {
+                sum += px[j];
+                count++;
+            }
+        }
+        return sum / count;
+    }
+
     static double supremum(double[] py, int np) {
         double sup = 0;
         for (int j = 0; j < np; j++) {

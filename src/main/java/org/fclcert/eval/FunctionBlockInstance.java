@@ -360,7 +360,7 @@ public final class FunctionBlockInstance {
         return switch (o.method()) {
             case LM -> extremeSingleton(terms, true);
             case RM -> extremeSingleton(terms, false);
-            case MOM -> throw new IllegalStateException("MoM on singletons: not yet evaluated");
+            case MOM -> meanOfMaximalSingletons(terms);
             case COGSS -> weightedSumOfSingletons(terms);
             default -> centreOfGravityForSingletons(terms);
         };
@@ -402,6 +402,38 @@ public final class FunctionBlockInstance {
             }
         }
         return best;
+    }
+
+    /**
+     * MoM on singletons (Open Level, O-MOM): the mean of the distinct values of the singletons whose
+     * accumulated degree is the supremum (two terms at one value count once, as one point of the set).
+     */
+    private double meanOfMaximalSingletons(int terms) {
+        double sup = 0;
+        for (int t = 0; t < terms; t++) {
+            sup = Math.max(sup, singletonDegree[t]);
+        }
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        double sum = 0;
+        int count = 0;
+        for (int t = 0; t < terms; t++) {
+            if (singletonDegree[t] >= sup * (1 - Defuzzifier.TIE) && !maximalValueBefore(t, sup)) {
+                sum += singletonValue[t];
+                count++;
+            }
+        }
+        return sum / count;
+    }
+
+    private boolean maximalValueBefore(int t, double sup) {
+        for (int s = 0; s < t; s++) {
+            if (singletonValue[s] == singletonValue[t] && singletonDegree[s] >= sup * (1 - Defuzzifier.TIE)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
@@ -466,8 +498,9 @@ public final class FunctionBlockInstance {
             case COA -> Defuzzifier.centreOfArea(set.px, set.py, set.np);
             case LM -> Defuzzifier.leftmostMaximum(set.px, set.py, set.np);
             case RM -> Defuzzifier.rightmostMaximum(set.px, set.py, set.np);
-            case MOM -> throw new IllegalStateException("MoM: not yet evaluated");
-            case COGSS -> throw new IllegalStateException("COGSS needs singleton terms");
+            case MOM -> Defuzzifier.meanOfMaximum(set.px, set.py, set.np);
+            // BlockCompiler refuses COGSS (like CoGS) on an output with point terms, so no point set reaches here
+            case COGSS -> throw new AssertionError("COGSS on a point set: BlockCompiler admits it only on singletons");
             default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
         };
     }

@@ -24,6 +24,13 @@ import org.fclcert.model.DefuzzificationMethod;
  *     search around each sampled local maximum; then LM = inf{u : μ(u) ≥ S(1 − 1e-12)} by bisection,
  *     RM = sup of that set. A peak narrower than the sample spacing that is not at a shape's special
  *     point can be missed.</li>
+ * <li>MoM: S and the threshold S(1 − 1e-12) as for LM / RM; the set where μ reaches the threshold is
+ *     collected as intervals (runs of samples at or above it, and peaks found by the golden-section
+ *     refinement between two samples below it), each end located by bisection. As for a piece-wise
+ *     linear set (Defuzzifier#meanOfMaximum): when some intervals are plateaus, longer than
+ *     {@value #PLATEAU} of the interval [lo, hi], the length-weighted mean of the plateaus' midpoints;
+ *     otherwise (only isolated maxima, such as the peaks of Gaussians) the mean of the intervals'
+ *     midpoints, each counted once.</li>
  * </ul>
  * NSUM divides by one constant, which cancels in every method, so it is computed as SUM here.
  * Not thread-safe; one per output per instance; scratch arrays grow and are reused.
@@ -31,6 +38,8 @@ import org.fclcert.model.DefuzzificationMethod;
 final class SmoothSet {
     static final int SAMPLES = 2048;
     static final double TOLERANCE = 1e-13;
+    /** Shortest plateau for MoM, as a share of the defuzzification interval; shorter runs count as points. */
+    static final double PLATEAU = 1e-4;
     private static final int MAX_DEPTH = 50;
 
     private int k;
@@ -118,7 +127,9 @@ final class SmoothSet {
                 integrate(lo, hi);
                 yield area > 0 ? centreOfArea() : Double.NaN;
             }
-            case MOM -> throw new IllegalStateException("MoM on a set that is not piece-wise linear is not evaluated");
+            case MOM -> meanOfMaximum(lo, hi);
+            // BlockCompiler refuses COGSS on an output with point or shape terms, so none reaches a smooth set
+            case COGSS -> throw new AssertionError("COGSS on a smooth set: BlockCompiler admits it only on singletons");
             default -> {
                 integrate(lo, hi);
                 yield area > 0 ? centre + moment / area : Double.NaN;
@@ -358,8 +369,12 @@ final class SmoothSet {
     private double[] gv = new double[SAMPLES + 64];
     private double[] ga = new double[SAMPLES + 64];
 
-    private double extreme(double lo, double hi, boolean leftmost) {
+    private int nSamples;
+
+    /** Samples [lo, hi] into su / sv, refines next to each sampled local maximum; returns the supremum. */
+    private double sampledSupremum(double lo, double hi) {
         int n = samples(lo, hi);
+        nSamples = n;
         double sup = 0;
         for (int i = 0; i < n; i++) {
             sv[i] = degree(su[i]);
@@ -383,6 +398,12 @@ final class SmoothSet {
             }
             i = j;
         }
+        return sup;
+    }
+
+    private double extreme(double lo, double hi, boolean leftmost) {
+        double sup = sampledSupremum(lo, hi);
+        int n = nSamples;
         if (!(sup > 0)) {
             return Double.NaN;
         }
@@ -408,6 +429,68 @@ final class SmoothSet {
             }
         }
         return Double.NaN;
+    }
+
+    /**
+     * Mean of maximum on [lo, hi] (class comment): the set where μ reaches S(1 − 1e-12) as intervals; the
+     * length-weighted mean of the plateaus' midpoints, or, without plateaus, the mean of the midpoints.
+     */
+    private double meanOfMaximum(double lo, double hi) {
+        double sup = sampledSupremum(lo, hi);
+        int n = nSamples;
+        if (!(sup > 0)) {
+            return Double.NaN;
+        }
+        lastEmpty = false;
+        double threshold = sup * (1 - Defuzzifier.TIE);
+        double plateau = PLATEAU * (hi - lo);
+        double plateauLength = 0;
+        double plateauMoment = 0;
+        double pointSum = 0;
+        int points = 0;
+        double start = Double.NaN;
+        for (int i = 0; i < n; i++) {
+            double a = Double.NaN;
+            double b = Double.NaN;
+            if (sv[i] >= threshold) {
+                if (Double.isNaN(start)) {
+                    start = i == 0 ? su[0] : boundary(su[i - 1], su[i], threshold);
+                }
+                if (i == n - 1) {
+                    a = start;
+                    b = su[n - 1];
+                }
+            } else {
+                if (!Double.isNaN(start)) {
+                    a = start;
+                    b = boundary(su[i], su[i - 1], threshold);
+                    start = Double.NaN;
+                }
+                if (i + 1 < n && sv[i + 1] < threshold && gv[i] >= threshold) {
+                    // a peak between two samples below the threshold (the refinement found it)
+                    double pa = boundary(su[i], ga[i], threshold);
+                    double pb = boundary(su[i + 1], ga[i], threshold);
+                    if (pb - pa > plateau) {
+                        plateauLength += pb - pa;
+                        plateauMoment += (pb - pa) * (pa + pb) / 2;
+                    }
+                    pointSum += (pa + pb) / 2;
+                    points++;
+                }
+            }
+            if (!Double.isNaN(a)) {
+                if (b - a > plateau) {
+                    plateauLength += b - a;
+                    plateauMoment += (b - a) * (a + b) / 2;
+                }
+                pointSum += (a + b) / 2;
+                points++;
+            }
+        }
+        if (plateauLength > 0) {
+            return plateauMoment / plateauLength;
+        }
+        return points > 0 ? pointSum / points : Double.NaN;
     }
 
     /** SAMPLES + 1 uniform points and every split point, sorted, into su; returns their number. */

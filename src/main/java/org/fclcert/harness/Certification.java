@@ -5,12 +5,15 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutInfo;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
+import org.fclcert.probe.DataCheckEntry;
+import org.fclcert.probe.Prober;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
@@ -35,9 +38,16 @@ public final class Certification {
      * @param selection which cases run
      * @param outDir    where results and reports go; null for {@code <reportsRoot>/<iut-name>}
      * @param reportsRoot parent of the default output directory
+     * @param probe     how to measure the Table 11 data check list after the cases; null: not measured
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
-            CaseSelection selection, Path outDir, Path reportsRoot) {
+            CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe) {
+
+        /** A run without the data check list. */
+        public Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
+                CaseSelection selection, Path outDir, Path reportsRoot) {
+            this(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot, null);
+        }
     }
 
     /** The finished run: its report and the directory holding the files. */
@@ -68,19 +78,40 @@ public final class Certification {
                             s.features().stream().sorted().toList(), s.globs()));
             Path dir = request.outDir() != null ? request.outDir()
                     : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
-            return new Outcome(runAndReport(iut, header, selected, dir, listener), dir);
+            return new Outcome(runAndReport(iut, header, selected, dir, listener,
+                    () -> dataCheckList(request, Prober.Listener.NONE)), dir);
         }
     }
 
     private static Report runAndReport(ImplementationUnderTest iut, RunHeader header, List<RunCase> selected,
-            Path dir, RunListener listener) throws CannotCertify {
+            Path dir, RunListener listener, Supplier<List<DataCheckEntry>> probe) throws CannotCertify {
         try (ResultsWriter results = ResultsWriter.create(dir.resolve("results.jsonl"))) {
             List<CaseResult> done = new Runner(listener).run(iut, header, selected, results);
-            Report report = ReportBuilder.build(header, done, List.of(), List.of(), Instant.now());
+            List<DataCheckEntry> dataCheckList = probe.get();
+            if (!dataCheckList.isEmpty()) {
+                results.dataCheckList(dataCheckList);
+            }
+            Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
             ReportFiles.writeAll(report, dir);
             return report;
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * The Table 11 data check list of the request's implementation, measured on fresh sessions of it
+     * (empty when the request asks for none). An implementation that cannot be probed gets every row
+     * "not measured" with the reason, so that the certification itself still stands.
+     */
+    public static List<DataCheckEntry> dataCheckList(Request request, Prober.Listener listener) {
+        if (request.probe() == null) {
+            return List.of();
+        }
+        try {
+            return Prober.probe(() -> Iuts.open(request.iutSpec(), request.options()), request.probe(), listener);
+        } catch (IutException e) {
+            return Prober.notMeasured("the implementation could not be probed: " + e.getMessage());
         }
     }
 

@@ -12,7 +12,7 @@ import org.fclcert.model.Program;
 import org.fclcert.syntax.StrictReader;
 
 /**
- * The export check done with fclcert's own strict reader, checks and reference evaluator: the exported text
+ * The export check done with fclcert's own strict reader (Open Level reading: a MoM program exports as MoM), checks and reference evaluator: the exported text
  * is compared with the case's expected outputs (which the reference evaluator reproduces for the original
  * program, as corpus lint guarantees), step by step on one instance, within the case's tolerance.
  */
@@ -20,7 +20,7 @@ public final class ReferenceExportCheck implements ExportCheck {
 
     @Override
     public Verdict check(String exportedFcl, RunCase c) {
-        Analysis analysis = Analysis.analyze(new StrictReader(), c.id() + " (exported)", exportedFcl);
+        Analysis analysis = Analysis.analyze(StrictReader.openLevel(), c.id() + " (exported)", exportedFcl);
         if (analysis.program().isEmpty()) {
             String first = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
                     .map(Diagnostic::toString).orElse("no program");

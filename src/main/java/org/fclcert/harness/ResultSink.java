@@ -1,5 +1,6 @@
 package org.fclcert.harness;
 
+import org.fclcert.probe.DataCheckEntry;
 import java.io.IOException;
 import java.util.List;
 

@@ -1,5 +1,6 @@
 package org.fclcert.harness;
 
+import org.fclcert.probe.DataCheckEntry;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;

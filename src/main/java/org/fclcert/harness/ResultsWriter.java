@@ -1,5 +1,6 @@
 package org.fclcert.harness;
 
+import org.fclcert.probe.DataCheckEntry;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedWriter;
 import java.io.Closeable;

@@ -38,7 +38,7 @@ public final class RunCases {
         if (c.expectReject() || c.tolerance() == Tolerance.EXACT) {
             return new CorpusTolerance(c.tolerance(), OutputScales.none());
         }
-        Analysis analysis = Analysis.analyze(new StrictReader(), c.path().toString(), c.programText());
+        Analysis analysis = Analysis.analyze(StrictReader.openLevel(), c.path().toString(), c.programText());
         OutputScales scales = analysis.program().flatMap(p -> block(p, c.block())).map(OutputScales::of)
                 .orElse(OutputScales.none());
         return new CorpusTolerance(c.tolerance(), scales);

@@ -50,6 +50,14 @@ public interface ImplementationUnderTest extends AutoCloseable {
         return OptionalLong.empty();
     }
 
+    /**
+     * How long the last {@link #eval} took by the implementation's own clock, in milliseconds, when it
+     * says (a process IUT's optional {@code elapsedMs} in its eval reply); empty otherwise. Used by the probe.
+     */
+    default java.util.OptionalDouble lastEvalMillis() {
+        return java.util.OptionalDouble.empty();
+    }
+
     /** Ends the session and frees its resources; never throws. */
     @Override
     void close();

@@ -2,7 +2,10 @@ package org.fclcert.iut;
 
 import java.util.List;
 
-/** Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS} or {@code process:COMMAND}. */
+/**
+ * Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS}, {@code process:COMMAND},
+ * or the built-in adapter for fuzzylite 6.0, {@code fuzzylite} or {@code fuzzylite:PATH}.
+ */
 public final class Iuts {
     private Iuts() {}
 
@@ -24,12 +27,15 @@ public final class Iuts {
         if (spec.startsWith("java:")) {
             return JavaIut.open(spec, spec.substring("java:".length()).strip(), options);
         }
+        if (spec.equals(FuzzyliteIut.SPEC) || spec.startsWith(FuzzyliteIut.SPEC + ":")) {
+            return FuzzyliteIut.open(spec, options);
+        }
         if (spec.startsWith("process:")) {
             List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
             return new ProcessIut(spec, command, options);
         }
         throw new IutException(
                 IutException.Kind.INFRA,
-                "unknown implementation under test '" + spec + "': use reference, java:CLASS or process:COMMAND");
+                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND or fuzzylite[:PATH]");
     }
 }

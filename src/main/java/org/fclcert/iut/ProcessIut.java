@@ -9,6 +9,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import org.fclcert.iut.IutException.Kind;
 
@@ -41,6 +42,7 @@ final class ProcessIut implements ImplementationUnderTest {
     private String acceptedProgram;
     private long nextId;
     private long peakRss = -1;
+    private OptionalDouble lastElapsed = OptionalDouble.empty();
 
     ProcessIut(String spec, List<String> command, IutOptions options) {
         this.spec = spec;
@@ -66,7 +68,19 @@ final class ProcessIut implements ImplementationUnderTest {
 
     @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
-        return call(Protocol.eval(block, inputs), Protocol::outputs, true);
+        lastElapsed = OptionalDouble.empty();
+        return call(Protocol.eval(block, inputs), reply -> {
+            JsonNode elapsed = reply.path("elapsedMs");
+            if (elapsed.isNumber() && Double.isFinite(elapsed.asDouble()) && elapsed.asDouble() >= 0) {
+                lastElapsed = OptionalDouble.of(elapsed.asDouble());
+            }
+            return Protocol.outputs(reply);
+        }, true);
+    }
+
+    @Override
+    public OptionalDouble lastEvalMillis() {
+        return lastElapsed;
     }
 
     @Override

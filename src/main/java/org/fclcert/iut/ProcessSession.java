@@ -88,12 +88,24 @@ final class ProcessSession {
 
     /** Kills the process and every process it started (collected first, so none is orphaned unseen). */
     void kill() {
+        killTree(process);
+        writer.shutdownNow();
+        replies.stop();
+    }
+
+    /**
+     * Kills a process and every process it started (collected first, so none is orphaned unseen), and
+     * waits briefly for them to end.
+     */
+    static void killTree(Process process) {
         List<ProcessHandle> tree = process.descendants().toList();
         process.destroyForcibly();
         tree.forEach(ProcessHandle::destroyForcibly);
-        writer.shutdownNow();
-        replies.stop();
-        exitCode(1000);
+        try {
+            process.waitFor(1000, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         tree.forEach(ProcessSession::awaitExit);
     }
 

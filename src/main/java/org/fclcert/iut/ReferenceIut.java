@@ -23,7 +23,8 @@ import org.fclcert.write.CanonicalWriter;
 
 /**
  * fclcert's own front end and evaluator as an implementation under test, in process: a program is
- * rejected exactly when the strict reader or a check reports an error (the first error's code,
+ * rejected exactly when the strict reader (with the Open Level methods, ReaderOptions.OPEN_LEVEL) or a check
+ * reports an error (the first error's code,
  * message and line are the rejection), and evaluated by the reference evaluator otherwise. It
  * exports with the canonical writer. Any exception other than an evaluation error is a bug in
  * fclcert and is reported as a crash rather than thrown.
@@ -38,7 +39,7 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     @Override
     public IutInfo hello() {
-        List<String> claims = Arrays.stream(Feature.values()).map(Feature::id).toList();
+        List<String> claims = Arrays.stream(Feature.values()).filter(f -> !f.dialectSyntax()).map(Feature::id).toList();
         return new IutInfo("fclcert reference evaluator", Toolkit.version(), "reference", claims, Map.of());
     }
 
@@ -49,7 +50,7 @@ final class ReferenceIut implements ImplementationUnderTest {
         instances.clear();
         Analysis analysis;
         try {
-            analysis = Analysis.analyze(new StrictReader(), SOURCE_NAME, fcl);
+            analysis = Analysis.analyze(StrictReader.openLevel(), SOURCE_NAME, fcl);
         } catch (RuntimeException e) {
             throw crash("reading and checking", e);
         }

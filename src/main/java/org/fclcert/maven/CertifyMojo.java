@@ -20,6 +20,7 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
 import org.fclcert.harness.Certification;
+import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.report.Report;
@@ -61,6 +62,18 @@ public class CertifyMojo extends AbstractMojo {
     @Parameter(property = "fclcert.timeoutMillis", defaultValue = "5000")
     private long timeoutMillis;
 
+    /** Also measure the Table 11 data check list by probing (off by default: it takes up to probeBudgetSeconds). */
+    @Parameter(property = "fclcert.probe", defaultValue = "false")
+    private boolean probe;
+
+    /** Largest size the probes try. */
+    @Parameter(property = "fclcert.probeCap", defaultValue = "4096")
+    private long probeCap;
+
+    /** Time budget of the probes, in seconds. */
+    @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = "180")
+    private long probeBudgetSeconds;
+
     /** Skip this goal (also skipped with -DskipTests or -DskipITs). */
     @Parameter(property = "fclcert.skip", defaultValue = "false")
     private boolean skip;
@@ -90,7 +103,8 @@ public class CertifyMojo extends AbstractMojo {
                 classpath.isEmpty() ? null : "project test class path", corpus,
                 corpusDirectory == null ? BundledCorpus.NAME : corpusDirectory.toString(),
                 new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)),
-                reportsDirectory.toPath(), reportsDirectory.toPath());
+                reportsDirectory.toPath(), reportsDirectory.toPath(), probe ? new Prober.Options(probeCap,
+                        Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null);
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));

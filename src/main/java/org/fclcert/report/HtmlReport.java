@@ -75,6 +75,7 @@ public final class HtmlReport {
         table(8, "Table 8: Basic Level language elements (mandatory)");
         table(9, "Table 9: Extension Level, Standard Extensions");
         table(10, "Table 10: Open Level features");
+        dataCheckList();
         claimsAndInterpretation();
         cases();
         out.append("</main><script>").append(SCRIPT).append("</script></body></html>\n");
@@ -126,6 +127,26 @@ public final class HtmlReport {
                     .append(f.status().word()).append("\">").append(f.status().label()).append("</span></td><td>")
                     .append(f.passed()).append(" / ").append(f.cases().size()).append("</td><td>")
                     .append(links(f.notPassed())).append("</td></tr>\n");
+        }
+        out.append("</table>\n");
+    }
+
+    /** Table 11 as measured: one row per item, the declared limit beside the measured one. */
+    private void dataCheckList() {
+        out.append("<h2>Data check list (Table 11)</h2>\n");
+        if (r.dataCheckList().isEmpty()) {
+            out.append("<p>Not measured in this run.</p>\n");
+            return;
+        }
+        out.append("<table><tr><th>Technical data</th><th>Measured</th><th>Declared</th><th>Note</th>")
+                .append("<th>How</th></tr>\n");
+        for (org.fclcert.probe.DataCheckEntry d : r.dataCheckList()) {
+            String flag = d.note().contains("NOT MET") || d.note().contains("WRONG") || d.note().contains("NON-CONFORMANT")
+                    ? " class=\"st failed\"" : "";
+            out.append("<tr><td>").append(Texts.html(d.item())).append("</td><td><b>")
+                    .append(Texts.html(Texts.measured(d))).append("</b></td><td>").append(Texts.html(d.declared()))
+                    .append("</td><td><span").append(flag).append('>').append(Texts.html(d.note()))
+                    .append("</span></td><td><small>").append(Texts.html(d.method())).append("</small></td></tr>\n");
         }
         out.append("</table>\n");
     }

@@ -197,10 +197,12 @@ public final class MarkdownReport {
         if (r.dataCheckList().isEmpty()) {
             line("Not measured in this run.");
         } else {
-            line("| Item | Value | Unit | Bound | Method |");
-            line("| --- | --- | --- | --- | --- |");
-            r.dataCheckList().forEach(d -> line("| " + Texts.cell(d.item()) + " | " + Texts.cell(d.value()) + " | "
-                    + Texts.cell(d.unit()) + " | " + d.bound() + " | " + Texts.cell(d.method()) + " |"));
+            line("| Technical data | Measured | Declared | Note |");
+            line("| --- | --- | --- | --- |");
+            r.dataCheckList().forEach(d -> line("| " + Texts.cell(d.item()) + " | " + Texts.cell(Texts.measured(d))
+                    + " | " + Texts.cell(d.declared()) + " | " + Texts.cell(d.note()) + " |"));
+            line("");
+            line("How each row is measured: docs/data-check-list.md; the method of each row is in report.json.");
         }
         line("");
     }

@@ -3,7 +3,7 @@ package org.fclcert.report;
 import com.fasterxml.jackson.annotation.JsonInclude;
 import java.util.List;
 import org.fclcert.harness.CaseResult;
-import org.fclcert.harness.DataCheckEntry;
+import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.harness.RunHeader;
 
 /**

@@ -10,7 +10,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
-import org.fclcert.harness.DataCheckEntry;
+import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
@@ -96,6 +96,9 @@ public final class ReportBuilder {
     private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
         List<Report.FeatureRow> rows = new ArrayList<>();
         for (Feature f : Feature.values()) {
+            if (f.dialectSyntax()) {
+                continue;   // a dialect's own syntax: no corpus case can test it (Feature#dialectSyntax)
+            }
             List<CaseResult> evidence = counted.stream().filter(testing(f)).toList();
             int passed = count(evidence, CaseStatus.PASSED);
             int skipped = count(evidence, CaseStatus.SKIPPED);

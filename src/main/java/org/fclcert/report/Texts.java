@@ -77,4 +77,14 @@ final class Texts {
         }
         return b.append(" --case ").append(shellQuote(caseId)).toString();
     }
+
+    /** A data check list value as read: {@code ≥ 64 rules}, {@code 3 points}, {@code not measured}. */
+    static String measured(org.fclcert.probe.DataCheckEntry d) {
+        if (d.bound().equals(org.fclcert.probe.DataCheckEntry.NOT_MEASURED) || d.value().isEmpty()) {
+            return "not measured";
+        }
+        boolean number = d.value().chars().allMatch(Character::isDigit);
+        return (d.bound().equals(org.fclcert.probe.DataCheckEntry.AT_LEAST) && number ? "≥ " : "") + d.value()
+                + (number ? " " + d.unit() : "");
+    }
 }

@@ -48,10 +48,16 @@ import org.fclcert.syntax.FclParser.*;
 final class ModelBuilder {
     private final String sourceName;
     private final ReaderDiagnostics diagnostics;
+    private final ReaderOptions options;
 
     ModelBuilder(String sourceName, ReaderDiagnostics diagnostics) {
+        this(sourceName, diagnostics, ReaderOptions.STRICT);
+    }
+
+    ModelBuilder(String sourceName, ReaderDiagnostics diagnostics, ReaderOptions options) {
         this.sourceName = sourceName;
         this.diagnostics = diagnostics;
+        this.options = options;
     }
 
     Program program(ProgramContext ctx) {
@@ -185,7 +191,7 @@ final class ModelBuilder {
     // ---------------------------------------------------------------- defuzzification
 
     private Defuzzification defuzzification(DefuzzifyBlockContext ctx) {
-        if (ctx.end.getType() == FclLexer.END_FUZZIFY) {
+        if (ctx.end.getType() == FclLexer.END_FUZZIFY && !options.endFuzzifyClosesDefuzzify()) {
             diagnostics.error(ctx.end, SyntaxCode.WRONG_END_KEYWORD, "a DEFUZZIFY block is closed by END_DEFUZZIFY,"
                     + " not END_FUZZIFY (the 1996 draft's spelling) (5.2.3)");
         }
@@ -231,6 +237,9 @@ final class ModelBuilder {
         DefuzzifyItemContext last = items.get(items.size() - 1);
         boolean rangeLastOnly = last.range() != null && firstOutOfOrder(items.subList(0, items.size() - 1)) < 0
                 && items.stream().filter(i -> i.range() != null).count() == 1;
+        if (rangeLastOnly && options.draftFormsAccepted()) {
+            return;
+        }
         if (rangeLastOnly) {
             diagnostics.warning(last.start, SyntaxCode.DRAFT_DEFUZZIFY_ORDER, "RANGE after the other DEFUZZIFY items"
                     + " follows the 1996 draft; accepted, but " + DEFUZZIFY_ORDER);
@@ -270,7 +279,7 @@ final class ModelBuilder {
     }
 
     private Optional<Range> range(RangeContext ctx) {
-        if (ctx.ASSIGN() != null) {
+        if (ctx.ASSIGN() != null && !options.draftFormsAccepted()) {
             diagnostics.warning(ctx.ASSIGN().getSymbol(), SyntaxCode.RANGE_ASSIGNMENT, "'RANGE := (...)' is the form"
                     + " of 5.2.3's prose; the 5.4 production writes 'RANGE (min .. max);' without ':='");
         }
@@ -279,6 +288,10 @@ final class ModelBuilder {
 
     private Optional<Located<DefuzzificationMethod>> method(DefuzzificationMethodContext ctx) {
         Optional<DefuzzificationMethod> m = DefuzzificationMethod.byKeyword(ctx.word().getText());
+        if (m.isEmpty()) {
+            m = options.nonStandardMethods().stream().filter(x -> x.keyword().equalsIgnoreCase(ctx.word().getText()))
+                    .findFirst();
+        }
         if (m.isEmpty()) {
             diagnostics.error(ctx.word().start, SyntaxCode.METHOD, "'" + ctx.word().getText()
                     + "' is not a defuzzification method: METHOD takes CoG, CoGS, CoA, LM or RM (5.2.3, Table 1)");
@@ -332,8 +345,8 @@ final class ModelBuilder {
         WordContext word = ctx.getRuleContext(WordContext.class, 0);
         String text = word.getText().toUpperCase(Locale.ROOT);
         for (E value : type.getEnumConstants()) {
-            boolean dialectOnly = value instanceof AccumulationMethod a && !a.standard();
-            if (value.name().equals(text) && !dialectOnly) {
+            boolean nonStandard = value instanceof AccumulationMethod a && !a.standard();   // PROBOR, SUM: dialect readers only
+            if (value.name().equals(text) && !nonStandard) {
                 return Optional.of(new Located<>(value, at(ctx.start)));
             }
         }
@@ -460,11 +473,11 @@ final class ModelBuilder {
     // ---------------------------------------------------------------- options
 
     private OptionsBlock options(OptionBlockContext ctx) {
-        if (ctx.start.getType() == FclLexer.OPTION) {
+        if (ctx.start.getType() == FclLexer.OPTION && !options.draftFormsAccepted()) {
             diagnostics.warning(ctx.start, SyntaxCode.OPTION_SPELLING, "'OPTION' is how the 5.4 production spells it;"
                     + " 5.2.5 and Table 7 write OPTIONS ... END_OPTIONS");
         }
-        if (ctx.end.getType() == FclLexer.END_OPTION) {
+        if (ctx.end.getType() == FclLexer.END_OPTION && !options.draftFormsAccepted()) {
             diagnostics.warning(ctx.end, SyntaxCode.OPTION_SPELLING, "'END_OPTION' is how the 5.4 production spells"
                     + " it; 5.2.5 and Table 7 write END_OPTIONS");
         }

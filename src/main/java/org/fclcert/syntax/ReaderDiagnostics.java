@@ -42,17 +42,21 @@ final class ReaderDiagnostics {
     }
 
     void error(Token at, SyntaxCode code, String message) {
-        error(at(at), code, message);
+        error(at(at), code.code(), message);
+    }
+
+    void error(SourceLocation at, SyntaxCode code, String message) {
+        error(at, code.code(), message);
     }
 
     /** Reports an error, unless one is already reported at the same place (one message per place). */
-    void error(SourceLocation at, SyntaxCode code, String message) {
+    void error(SourceLocation at, String code, String message) {
         errors = true;
         if (errorCount >= STOP_AFTER_ERRORS) {
             errorCount++;
         } else if (errorPlaces.add(at)) {
             errorCount++;
-            all.add(Diagnostic.error(at, code.code(), message));
+            all.add(Diagnostic.error(at, code, message));
         }
     }
 
@@ -93,10 +97,34 @@ final class ReaderDiagnostics {
     }
 
     void warning(Token at, SyntaxCode code, String message) {
-        int n = warningCounts.merge(code.code(), 1, Integer::sum);
+        warning(at, code.code(), message);
+    }
+
+    void warning(Token at, String code, String message) {
+        int n = warningCounts.merge(code, 1, Integer::sum);
         if (n <= MAX_WARNINGS_PER_CODE + 1) {   // one more than shown marks where the summary goes
-            all.add(Diagnostic.warning(at(at), code.code(), message));
+            all.add(Diagnostic.warning(at(at), code, message));
         }
+    }
+
+    /** This collector as a token filter's report. */
+    ReaderOptions.Report asReport() {
+        return new ReaderOptions.Report() {
+            @Override
+            public SourceLocation at(Token token) {
+                return ReaderDiagnostics.this.at(token);
+            }
+
+            @Override
+            public void error(Token at, String code, String message) {
+                ReaderDiagnostics.this.error(ReaderDiagnostics.this.at(at), code, message);
+            }
+
+            @Override
+            public void warning(Token at, String code, String message) {
+                ReaderDiagnostics.this.warning(at, code, message);
+            }
+        };
     }
 
     boolean hasErrors() {

@@ -7,6 +7,7 @@ import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.ListTokenSource;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.TokenSource;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.ParseCancellationException;
 import org.fclcert.model.Diagnostic;
@@ -30,6 +31,23 @@ public final class StrictReader implements FclReader {
     private static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
 
+    private final ReaderOptions options;
+
+    /** The reader of the standard exactly. */
+    public StrictReader() {
+        this(ReaderOptions.STRICT);
+    }
+
+    /** The strict pipeline with the given changes (dialect readers, the Open Level reading of the corpus). */
+    public StrictReader(ReaderOptions options) {
+        this.options = java.util.Objects.requireNonNull(options, "options");
+    }
+
+    /** Standard FCL plus the Open Level methods that fit its syntax ({@link ReaderOptions#OPEN_LEVEL}). */
+    public static StrictReader openLevel() {
+        return new StrictReader(ReaderOptions.OPEN_LEVEL);
+    }
+
     @Override
     public ReadResult read(String sourceName, String text) {
         if (sourceName == null) {
@@ -37,7 +55,7 @@ public final class StrictReader implements FclReader {
         }
         ReaderDiagnostics diagnostics = new ReaderDiagnostics(sourceName);
         try {
-            Optional<Program> program = readProgram(sourceName, text, diagnostics);
+            Optional<Program> program = readProgram(sourceName, text, diagnostics, options);
             return new ReadResult(diagnostics.hasErrors() ? Optional.empty() : program, diagnostics.finish());
         } catch (RuntimeException | StackOverflowError e) {
             // A bug in fclcert, not in the program: still a diagnostic, never a stack trace.
@@ -48,25 +66,36 @@ public final class StrictReader implements FclReader {
         }
     }
 
-    private static Optional<Program> readProgram(String sourceName, String text, ReaderDiagnostics diagnostics) {
+    private static Optional<Program> readProgram(String sourceName, String text, ReaderDiagnostics diagnostics,
+            ReaderOptions options) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
         FclLexer lexer = new FclLexer(CharStreams.fromString(body, sourceName));
         lexer.removeErrorListeners();   // the lexer cannot fail: unknown characters are ANY tokens
-        TokenPreScan.Result scan = TokenPreScan.scan(lexer, diagnostics);
+        TokenSource source = lexer;
+        if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
+            List<Token> lexed = new java.util.ArrayList<>();
+            Token t;
+            do {
+                t = lexer.nextToken();
+                lexed.add(t);
+            } while (t.getType() != Token.EOF);
+            source = new ListTokenSource(options.tokenFilter().filter(lexed, diagnostics.asReport()));
+        }
+        TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics);
         if (scan.tooDeep() || diagnostics.tooMany()) {
             return Optional.empty();    // never hand the recursive parser a nesting it may not survive
         }
         if (scan.maxDepth() <= SHALLOW_NESTING) {
-            return parseAndBuild(sourceName, scan, diagnostics);
+            return parseAndBuild(sourceName, scan, diagnostics, options);
         }
-        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics));
+        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options));
     }
 
     private static Optional<Program> parseAndBuild(String sourceName, TokenPreScan.Result scan,
-            ReaderDiagnostics diagnostics) {
+            ReaderDiagnostics diagnostics, ReaderOptions options) {
         ReservedNames reservedNames = new ReservedNames();
-        ModelBuilder builder = new ModelBuilder(sourceName, diagnostics);
+        ModelBuilder builder = new ModelBuilder(sourceName, diagnostics, options);
         Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder);
         reservedNames.report(diagnostics);
         if (parsed.tree() == null) {

@@ -13,7 +13,7 @@ import org.fclcert.model.SourceLocation;
  * Linear shapes convert exactly; smooth ones approximately, with their largest membership error
  * computed (not guessed). Hedges have no standard equivalent, except {@code not} as the outermost hedge
  * (the standard's IS NOT, which the readers already produce) and {@code any} (degree 1: the subcondition
- * can be dropped from an AND chain; elsewhere it has no equivalent). docs/dialects-jfuzzylogic-fuzzylite.md.
+ * can be dropped from an AND chain; elsewhere it has no equivalent). docs/dialects.md.
  */
 public final class ShapePoints {
     /** Sub-samples per approximation segment used to measure the error. */

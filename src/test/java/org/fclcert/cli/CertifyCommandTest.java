@@ -54,6 +54,9 @@ class CertifyCommandTest {
     private int certify(String iut, String... more) {
         List<String> args = new java.util.ArrayList<>(List.of("certify", "--iut", iut, "--corpus", CORPUS,
                 "--out", dir.toString()));
+        if (!List.of(more).contains("--probe-cap")) {
+            args.add("--no-probe");   // the probes have their own tests (ProberTest); keep these quick
+        }
         args.addAll(List.of(more));
         return Main.run(args.toArray(String[]::new));
     }
@@ -179,5 +182,26 @@ class CertifyCommandTest {
             assertTrue(Files.size(dir.resolve("cut").resolve(f)) > 0, f);
         }
         assertEquals(2, Main.run("report", "--from", dir.resolve("missing.jsonl").toString()));
+    }
+
+    @Test
+    void certifyFillsTheDataCheckListOfResultsAndReports() throws Exception {
+        assertEquals(0, certify("reference", "--probe-cap", "8"));
+        List<String> lines = java.nio.file.Files.readAllLines(dir.resolve("results.jsonl"));
+        assertTrue(lines.get(lines.size() - 1).startsWith("{\"type\":\"dataCheckList\",\"entries\":[{\"id\":\"data-types\""),
+                lines.get(lines.size() - 1));
+        org.fclcert.report.Report r = org.fclcert.report.JsonReport.read(dir.resolve("report.json"));
+        assertEquals(22, r.dataCheckList().size());
+        assertEquals("8", r.dataCheckList().get(17).value());
+        String md = java.nio.file.Files.readString(dir.resolve("report.md"));
+        assertTrue(md.contains("| max. number of rules per block | ≥ 8 rules |  | reached the cap of 8 (--probe-cap) |"), md);
+        String html = java.nio.file.Files.readString(dir.resolve("report.html"));
+        assertTrue(html.contains("<h2>Data check list (Table 11)</h2>"), "a Table 11 section");
+        assertTrue(html.contains("<td>max. number of rules per block</td><td><b>≥ 8 rules</b></td>"), "readable rows");
+    }
+
+    @Test
+    void aBadProbeBudgetIsAUsageError() {
+        assertEquals(2, certify("reference", "--probe-cap", "8", "--probe-budget", "later"));
     }
 }

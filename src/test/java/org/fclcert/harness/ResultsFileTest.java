@@ -1,5 +1,6 @@
 package org.fclcert.harness;
 
+import org.fclcert.probe.DataCheckEntry;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;

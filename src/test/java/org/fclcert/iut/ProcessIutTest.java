@@ -108,7 +108,7 @@ class ProcessIutTest {
     }
 
     /** Whether the process still runs after at most that wait (a killed process may take a moment to go). */
-    private static boolean runningAfter(long pid, long millis) {
+    static boolean runningAfter(long pid, long millis) {
         long until = System.nanoTime() + millis * 1_000_000;
         while (System.nanoTime() < until) {
             Optional<ProcessHandle> p = ProcessHandle.of(pid);

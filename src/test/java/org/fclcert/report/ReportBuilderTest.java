@@ -40,7 +40,7 @@ class ReportBuilderTest {
     @Test
     void everyCatalogueFeatureHasARowWithItsTable() {
         Report r = report(List.of());
-        assertEquals(Arrays.stream(Feature.values()).map(Feature::id).toList(),
+        assertEquals(Arrays.stream(Feature.values()).filter(f -> !f.dialectSyntax()).map(Feature::id).toList(),
                 r.features().stream().map(Report.FeatureRow::id).toList());
         assertEquals(8, row(r, "B-COGS").table());
         assertEquals(9, row(r, "E-NOT").table());

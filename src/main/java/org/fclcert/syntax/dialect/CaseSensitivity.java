@@ -22,7 +22,7 @@ import org.fclcert.model.Variable;
  */
 final class CaseSensitivity {
     interface Sink {
-        void warn(SourceLocation at, LibraryDialectCode code, String message);
+        void warn(SourceLocation at, DialectCode code, String message);
     }
 
     private CaseSensitivity() {
@@ -86,7 +86,7 @@ final class CaseSensitivity {
     private static void declare(Map<String, String> seen, String name, SourceLocation at, String what, Sink sink) {
         String first = seen.putIfAbsent(Names.key(name), name);
         if (first != null && !first.equals(name)) {
-            sink.warn(at, LibraryDialectCode.NAMES_DIFFER_IN_CASE, "the " + what + " '" + name + "' differs from '"
+            sink.warn(at, DialectCode.NAMES_DIFFER_IN_CASE, "the " + what + " '" + name + "' differs from '"
                     + first + "' only in case: two names in jFuzzyLogic, one in FCL");
         }
     }
@@ -94,7 +94,7 @@ final class CaseSensitivity {
     private static void use(Map<String, String> declared, String name, SourceLocation at, String what, Sink sink) {
         String decl = declared.get(Names.key(name));
         if (decl != null && !decl.equals(name)) {
-            sink.warn(at, LibraryDialectCode.NAMES_DIFFER_IN_CASE, "'" + name + "' is spelled '" + decl
+            sink.warn(at, DialectCode.NAMES_DIFFER_IN_CASE, "'" + name + "' is spelled '" + decl
                     + "' where the " + what + " is declared; jFuzzyLogic's names are case-sensitive, so it would not"
                     + " find it (fclcert does)");
         }

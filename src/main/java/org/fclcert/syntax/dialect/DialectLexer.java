@@ -18,7 +18,7 @@ final class DialectLexer {
         }
     }
 
-    record Problem(LibraryDialectCode code, int line, int column, String message) {
+    record Problem(DialectCode code, int line, int column, String message) {
     }
 
     /** A non-standard comment, for the O-COMMENT-STYLE feature and the giveaways. */
@@ -76,7 +76,7 @@ final class DialectLexer {
             } else if (c == '/' && at(i + 1) == '*' || c == '(' && at(i + 1) == '*') {
                 String end = c == '/' ? "*/" : "*)";
                 if (fuzzylite) {
-                    problems.add(new Problem(LibraryDialectCode.COMMENT_STYLE, l0, c0, "fuzzylite does not accept '"
+                    problems.add(new Problem(DialectCode.COMMENT_STYLE, l0, c0, "fuzzylite does not accept '"
                             + c + "*' comments; it comments with '//' or '#'"));
                 }
                 if (c == '/') {
@@ -95,7 +95,7 @@ final class DialectLexer {
                     advance();
                 }
                 if (!closed) {
-                    problems.add(new Problem(LibraryDialectCode.UNTERMINATED_COMMENT, l0, c0,
+                    problems.add(new Problem(DialectCode.UNTERMINATED_COMMENT, l0, c0,
                             "the comment starting here is never closed by '" + end + "'"));
                 }
             } else if (Character.isLetter(c) || c == '_') {
@@ -126,7 +126,7 @@ final class DialectLexer {
                     default -> null;
                 };
                 if (k == null) {
-                    problems.add(new Problem(LibraryDialectCode.UNEXPECTED_CHARACTER, l0, c0,
+                    problems.add(new Problem(DialectCode.UNEXPECTED_CHARACTER, l0, c0,
                             "unexpected character '" + printable(c) + "'"));
                 } else {
                     tokens.add(new Token(k, String.valueOf(c), l0, c0));
@@ -150,7 +150,7 @@ final class DialectLexer {
             }
             String word = s.substring(w, i);
             if (!word.equals("inf")) {
-                problems.add(new Problem(LibraryDialectCode.BAD_NUMBER, l0, c0, "'" + s.substring(start, i)
+                problems.add(new Problem(DialectCode.BAD_NUMBER, l0, c0, "'" + s.substring(start, i)
                         + "' is not a number"));
             }
             tokens.add(new Token(Kind.NUMBER, s.substring(start, i), l0, c0));
@@ -163,7 +163,7 @@ final class DialectLexer {
         if (at(i) == '.' && at(i + 1) != '.') {
             advance();
             if (!Character.isDigit(at(i))) {
-                problems.add(new Problem(LibraryDialectCode.BAD_NUMBER, l0, c0, "a number needs digits after '.'"));
+                problems.add(new Problem(DialectCode.BAD_NUMBER, l0, c0, "a number needs digits after '.'"));
             }
             while (Character.isDigit(at(i))) {
                 advance();
@@ -181,7 +181,7 @@ final class DialectLexer {
         }
         String text = s.substring(start, i);
         if (leadingDot && !fuzzylite) {
-            problems.add(new Problem(LibraryDialectCode.BAD_NUMBER, l0, c0,
+            problems.add(new Problem(DialectCode.BAD_NUMBER, l0, c0,
                     "jFuzzyLogic rejects '" + text + "': write a digit before the '.'"));
         }
         if (Character.isLetter(at(i)) || at(i) == '_') {
@@ -189,7 +189,7 @@ final class DialectLexer {
             while (i < s.length() && (Character.isLetterOrDigit(s.charAt(i)) || s.charAt(i) == '_')) {
                 advance();
             }
-            problems.add(new Problem(LibraryDialectCode.BAD_NUMBER, l0, c0,
+            problems.add(new Problem(DialectCode.BAD_NUMBER, l0, c0,
                     "'" + text + s.substring(w, i) + "' is not a number"));
         }
         tokens.add(new Token(Kind.NUMBER, text, l0, c0));

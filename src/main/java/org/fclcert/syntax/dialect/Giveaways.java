@@ -93,7 +93,9 @@ final class Giveaways {
         for (int j = i + 1; j < t.size(); j++) {
             Token x = t.get(j);
             if (x.line() != line || x.kind() == Kind.EOF) {
-                return j > i + 1;
+                // the rule really ends with its line only when the next line starts the next rule or ends the
+                // block; a standard rule continued on the next line ('AND ...', 'THEN ...') is no giveaway
+                return j > i + 1 && (x.kind() == Kind.EOF || x.is("RULE") || x.is("END_RULEBLOCK"));
             }
             if (x.kind() == Kind.SEMI) {
                 return false;

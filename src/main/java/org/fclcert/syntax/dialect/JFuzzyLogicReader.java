@@ -10,7 +10,7 @@ import org.fclcert.syntax.ReadResult;
  * {@code singletons}), ACCU PROBOR and SUM, METHOD COGF and MM, and the settings it supplies when left
  * out (ACCU SUM, METHOD CoG, DEFAULT NC, each with FCL-W304). Where jFuzzyLogic gives a program another
  * meaning (coupled AND/OR, one priority for AND and OR, case-sensitive names, NSUM as BSUM) it warns.
- * docs/dialects-jfuzzylogic-fuzzylite.md lists what is read and its Open Level features.
+ * docs/dialects.md lists what is read and its Open Level features.
  */
 public final class JFuzzyLogicReader implements DialectReader {
     @Override

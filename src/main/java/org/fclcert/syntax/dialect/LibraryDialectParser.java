@@ -92,7 +92,7 @@ final class LibraryDialectParser {
             return new org.fclcert.syntax.ReadResult(failed ? Optional.empty() : Optional.of(program), list);
         } catch (RuntimeException | StackOverflowError e) {
             List<Diagnostic> list = new ArrayList<>(parser == null ? List.of() : parser.diagnostics);
-            list.add(Diagnostic.error(SourceLocation.of(name, 1, 1), LibraryDialectCode.TOO_MANY_ERRORS.code(),
+            list.add(Diagnostic.error(SourceLocation.of(name, 1, 1), DialectCode.TOO_MANY_ERRORS.code(),
                     "internal error of the " + (fuzzylite ? "fuzzylite" : "jFuzzyLogic") + " reader ("
                             + e.getClass().getSimpleName() + "); please report this"));
             return new org.fclcert.syntax.ReadResult(Optional.empty(), list);
@@ -115,12 +115,12 @@ final class LibraryDialectParser {
         return at(t.line(), t.column());
     }
 
-    private void error(int line, int column, LibraryDialectCode code, String message) {
+    private void error(int line, int column, DialectCode code, String message) {
         if (stopped) {
             return;
         }
         if (++errors > MAX_ERRORS) {
-            diagnostics.add(Diagnostic.error(at(line, column), LibraryDialectCode.TOO_MANY_ERRORS.code(),
+            diagnostics.add(Diagnostic.error(at(line, column), DialectCode.TOO_MANY_ERRORS.code(),
                     "more than " + MAX_ERRORS + " errors; the rest are not reported"));
             stopped = true;
             return;
@@ -128,11 +128,11 @@ final class LibraryDialectParser {
         diagnostics.add(Diagnostic.error(at(line, column), code.code(), message));
     }
 
-    private void error(Token t, LibraryDialectCode code, String message) {
+    private void error(Token t, DialectCode code, String message) {
         error(t.line(), t.column(), code, message);
     }
 
-    private void warn(SourceLocation where, LibraryDialectCode code, String message) {
+    private void warn(SourceLocation where, DialectCode code, String message) {
         diagnostics.add(Diagnostic.warning(where, code.code(), message));
     }
 
@@ -161,7 +161,7 @@ final class LibraryDialectParser {
     }
 
     private Skip fail(Token t, String expected) {
-        error(t, LibraryDialectCode.SYNTAX, "expected " + expected + " but found " + describe(t));
+        error(t, DialectCode.SYNTAX, "expected " + expected + " but found " + describe(t));
         return new Skip();
     }
 
@@ -176,7 +176,7 @@ final class LibraryDialectParser {
             throw fail(t, "'" + word + "'");
         }
         if (fuzzylite && !t.text().equals(word) && !t.text().equals(word.toLowerCase(Locale.ROOT))) {
-            error(t, LibraryDialectCode.NOT_IN_DIALECT, "fuzzylite reads '" + word + "' only in upper case");
+            error(t, DialectCode.NOT_IN_DIALECT, "fuzzylite reads '" + word + "' only in upper case");
         }
         return next();
     }
@@ -218,7 +218,7 @@ final class LibraryDialectParser {
             throw fail(t, "a name");
         }
         if (!fuzzylite && t.text().startsWith("_")) {
-            error(t, LibraryDialectCode.NOT_IN_DIALECT, "jFuzzyLogic rejects names starting with '_'");
+            error(t, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic rejects names starting with '_'");
         }
         return next().text();
     }
@@ -229,7 +229,7 @@ final class LibraryDialectParser {
                 || t.kind() == Kind.NUMBER && t.text().endsWith("inf")) {
             next();
             if (!fuzzylite || !infinityAllowed) {
-                error(t, LibraryDialectCode.BAD_NUMBER, "'" + t.text() + "' is not a number here");
+                error(t, DialectCode.BAD_NUMBER, "'" + t.text() + "' is not a number here");
                 return new Literal(0, true, at(t));
             }
             double v = t.text().equals("nan") ? Double.NaN : t.text().startsWith("-") ? Double.NEGATIVE_INFINITY
@@ -245,7 +245,7 @@ final class LibraryDialectParser {
             double v = Double.parseDouble(text);
             boolean integral = !text.contains(".") && !text.contains("e") && !text.contains("E");
             if (!Double.isFinite(v)) {
-                error(t, LibraryDialectCode.BAD_NUMBER, "'" + text + "' is out of range");
+                error(t, DialectCode.BAD_NUMBER, "'" + text + "' is out of range");
                 v = 0;
             }
             return new Literal(v, integral, at(t));
@@ -263,7 +263,7 @@ final class LibraryDialectParser {
             if (isKeyword(peek(), "FUNCTION_BLOCK")) {
                 blocks.add(functionBlock());
             } else {
-                error(peek(), LibraryDialectCode.SYNTAX, "text outside FUNCTION_BLOCK ... END_FUNCTION_BLOCK: "
+                error(peek(), DialectCode.SYNTAX, "text outside FUNCTION_BLOCK ... END_FUNCTION_BLOCK: "
                         + describe(peek()));
                 while (peek().kind() != Kind.EOF && !isKeyword(peek(), "FUNCTION_BLOCK")) {
                     next();
@@ -274,7 +274,7 @@ final class LibraryDialectParser {
             }
         }
         if (blocks.isEmpty() && errors == 0) {
-            error(peek(), LibraryDialectCode.SYNTAX, "the text holds no FUNCTION_BLOCK");
+            error(peek(), DialectCode.SYNTAX, "the text holds no FUNCTION_BLOCK");
         }
         return new Program(source, blocks, features);
     }
@@ -308,7 +308,7 @@ final class LibraryDialectParser {
             int from = p;
             try {
                 if (t.kind() == Kind.EOF) {
-                    error(t, LibraryDialectCode.SYNTAX, "the text ends inside FUNCTION_BLOCK " + fbName
+                    error(t, DialectCode.SYNTAX, "the text ends inside FUNCTION_BLOCK " + fbName
                             + " (END_FUNCTION_BLOCK missing)");
                     break;
                 } else if (isKeyword(t, "END_FUNCTION_BLOCK")) {
@@ -317,10 +317,10 @@ final class LibraryDialectParser {
                 } else if (isKeyword(t, "VAR_INPUT") || isKeyword(t, "VAR_OUTPUT")) {
                     varSection();
                 } else if (isKeyword(t, "VAR")) {
-                    error(t, LibraryDialectCode.NOT_IN_DIALECT, library + " has no VAR section (local variables)");
+                    error(t, DialectCode.NOT_IN_DIALECT, library + " has no VAR section (local variables)");
                     skipBlock("END_VAR");
                 } else if (isKeyword(t, "OPTIONS")) {
-                    error(t, LibraryDialectCode.NOT_IN_DIALECT, library + " has no OPTIONS block");
+                    error(t, DialectCode.NOT_IN_DIALECT, library + " has no OPTIONS block");
                     skipBlock("END_OPTIONS");
                 } else if (isKeyword(t, "FUZZIFY")) {
                     fuzzify();
@@ -371,14 +371,14 @@ final class LibraryDialectParser {
             }
             if (t.kind() == Kind.EOF || isKeyword(t, "END_FUNCTION_BLOCK") || isKeyword(t, "FUZZIFY")
                     || isKeyword(t, "DEFUZZIFY") || isKeyword(t, "RULEBLOCK")) {
-                error(t, LibraryDialectCode.SYNTAX, "END_VAR missing before " + describe(t));
+                error(t, DialectCode.SYNTAX, "END_VAR missing before " + describe(t));
                 return;
             }
             try {
                 Token nameToken = peek();
                 String n = name();
                 if (peek().kind() == Kind.COMMA) {
-                    error(peek(), LibraryDialectCode.NOT_IN_DIALECT, library
+                    error(peek(), DialectCode.NOT_IN_DIALECT, library
                             + " declares one variable per declaration");
                     throw new Skip();
                 }
@@ -387,10 +387,10 @@ final class LibraryDialectParser {
                 String typeName = name();
                 Optional<DataType> dt = DataType.byKeyword(typeName);
                 if (dt.isEmpty()) {
-                    error(type, LibraryDialectCode.SYNTAX, "'" + typeName + "' is not an elementary numeric type");
+                    error(type, DialectCode.SYNTAX, "'" + typeName + "' is not an elementary numeric type");
                 }
                 if (peek().kind() == Kind.ASSIGN) {
-                    error(peek(), LibraryDialectCode.NOT_IN_DIALECT, library + " rejects initial values");
+                    error(peek(), DialectCode.NOT_IN_DIALECT, library + " rejects initial values");
                     throw new Skip();
                 }
                 expect(Kind.SEMI, "';'");
@@ -429,7 +429,7 @@ final class LibraryDialectParser {
                 } else if (isKeyword(t, "ENABLED") && fuzzylite) {
                     enabled();
                 } else if (isKeyword(t, "LOCK") && fuzzylite) {
-                    error(t, LibraryDialectCode.UNSUPPORTED, "fclcert does not evaluate LOCK on an input");
+                    error(t, DialectCode.UNSUPPORTED, "fclcert does not evaluate LOCK on an input");
                     throw new Skip();
                 } else {
                     throw fail(t, "TERM, RANGE or END_FUZZIFY");
@@ -447,7 +447,7 @@ final class LibraryDialectParser {
     private boolean endOfBlock(Token t, String end) {
         if (t.kind() == Kind.EOF || isKeyword(t, "END_FUNCTION_BLOCK") || isKeyword(t, "FUZZIFY")
                 || isKeyword(t, "DEFUZZIFY") || isKeyword(t, "RULEBLOCK")) {
-            error(t, LibraryDialectCode.SYNTAX, end + " missing before " + describe(t));
+            error(t, DialectCode.SYNTAX, end + " missing before " + describe(t));
             return true;
         }
         return false;
@@ -460,9 +460,9 @@ final class LibraryDialectParser {
         String value = name();
         expect(Kind.SEMI, "';'");
         if (value.equals("FALSE") || value.equals("false")) {
-            error(v, LibraryDialectCode.UNSUPPORTED, "fclcert does not evaluate disabled parts (ENABLED : FALSE)");
+            error(v, DialectCode.UNSUPPORTED, "fclcert does not evaluate disabled parts (ENABLED : FALSE)");
         } else if (!value.equals("TRUE") && !value.equals("true")) {
-            error(v, LibraryDialectCode.SYNTAX, "ENABLED takes TRUE or FALSE, not '" + value + "'");
+            error(v, DialectCode.SYNTAX, "ENABLED takes TRUE or FALSE, not '" + value + "'");
         }
         feature(Feature.O_ENABLED, at(kw));
     }
@@ -471,7 +471,7 @@ final class LibraryDialectParser {
     private Optional<Range> range() {
         Token kw = next();
         if (peek().kind() != Kind.ASSIGN) {
-            error(peek(), LibraryDialectCode.NOT_IN_DIALECT, library + " needs ':=' after RANGE");
+            error(peek(), DialectCode.NOT_IN_DIALECT, library + " needs ':=' after RANGE");
             throw new Skip();
         }
         next();
@@ -482,7 +482,7 @@ final class LibraryDialectParser {
         expect(Kind.RPAREN, "')'");
         expect(Kind.SEMI, "';'");
         if (Double.isNaN(lo.value()) || Double.isNaN(hi.value())) {
-            error(kw, LibraryDialectCode.BAD_NUMBER, "a RANGE needs numbers, not nan");
+            error(kw, DialectCode.BAD_NUMBER, "a RANGE needs numbers, not nan");
             return Optional.empty();
         }
         if (Double.isInfinite(lo.value()) || Double.isInfinite(hi.value())) {
@@ -526,7 +526,7 @@ final class LibraryDialectParser {
                 } else if (isKeyword(t, "ACCU")) {
                     Optional<Located<AccumulationMethod>> a = accumulation();
                     if (!fuzzylite) {
-                        error(t, LibraryDialectCode.NOT_IN_DIALECT, "jFuzzyLogic takes ACCU in the RULEBLOCK");
+                        error(t, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic takes ACCU in the RULEBLOCK");
                     } else if (a.isPresent()) {
                         outputAccu.put(Names.key(variable), a.get());
                         feature(Feature.O_ACCU_IN_DEFUZZIFY, at(t));
@@ -546,7 +546,7 @@ final class LibraryDialectParser {
                         } else if (what.equals("RANGE")) {
                             feature(Feature.O_LOCK_RANGE, at(w));
                         } else {
-                            error(w, LibraryDialectCode.SYNTAX, "LOCK takes PREVIOUS and/or RANGE, not '" + what + "'");
+                            error(w, DialectCode.SYNTAX, "LOCK takes PREVIOUS and/or RANGE, not '" + what + "'");
                         }
                     } while (peek().kind() == Kind.COMMA && next() != null);
                     expect(Kind.SEMI, "';'");
@@ -561,18 +561,18 @@ final class LibraryDialectParser {
             }
         }
         if (lockPrevious) {
-            warn(lockAt, LibraryDialectCode.LOCK_PREVIOUS, "LOCK : PREVIOUS is read as DEFAULT NC: fuzzylite keeps the"
+            warn(lockAt, DialectCode.LOCK_PREVIOUS, "LOCK : PREVIOUS is read as DEFAULT NC: fuzzylite keeps the"
                     + " previous result but gives the DEFAULT before the first one, fclcert the initial value (0)");
             defaultValue = Optional.of(new DefaultValue.NoChange(lockAt));
         }
         if (!fuzzylite) {
             if (method.isEmpty()) {
-                warn(at(start), LibraryDialectCode.SUPPLIED_SETTING, "no METHOD: jFuzzyLogic uses CoG, and so does fclcert");
+                warn(at(start), DialectCode.SUPPLIED_SETTING, "no METHOD: jFuzzyLogic uses CoG, and so does fclcert");
                 feature(Feature.O_IMPLICIT_SETTING, at(start));
                 method = Optional.of(new Located<>(DefuzzificationMethod.COG, at(start)));
             }
             if (defaultValue.isEmpty()) {
-                warn(at(start), LibraryDialectCode.SUPPLIED_SETTING,
+                warn(at(start), DialectCode.SUPPLIED_SETTING,
                         "no DEFAULT: jFuzzyLogic keeps the previous value when no rule fires; read as DEFAULT NC");
                 feature(Feature.O_IMPLICIT_SETTING, at(start));
                 defaultValue = Optional.of(new DefaultValue.NoChange(at(start)));
@@ -589,7 +589,7 @@ final class LibraryDialectParser {
         expect(Kind.SEMI, "';'");
         String upper = word.toUpperCase(Locale.ROOT);
         if (fuzzylite && !word.equals(upper)) {
-            error(w, LibraryDialectCode.NOT_IN_DIALECT, "fuzzylite reads methods in upper case only, not '" + word + "'");
+            error(w, DialectCode.NOT_IN_DIALECT, "fuzzylite reads methods in upper case only, not '" + word + "'");
         }
         DefuzzificationMethod m;
         switch (upper) {
@@ -621,7 +621,7 @@ final class LibraryDialectParser {
     }
 
     private Skip unknownMethod(Token w, String word) {
-        error(w, LibraryDialectCode.SYNTAX, "'" + word + "' is not a method of " + library + " that fclcert reads ("
+        error(w, DialectCode.SYNTAX, "'" + word + "' is not a method of " + library + " that fclcert reads ("
                 + (fuzzylite ? "COG, COA, LM, RM, MM, COGS, COGSS" : "COG, COGF, COGS, COA, LM, RM, MM") + ")");
         return new Skip();
     }
@@ -638,7 +638,7 @@ final class LibraryDialectParser {
         Literal value = number(true);
         expect(Kind.SEMI, "';'");
         if (Double.isInfinite(value.value())) {
-            error(v, LibraryDialectCode.BAD_NUMBER, "a DEFAULT of " + v.text() + " is not evaluated by fclcert");
+            error(v, DialectCode.BAD_NUMBER, "a DEFAULT of " + v.text() + " is not evaluated by fclcert");
         }
         if (Double.isNaN(value.value())) {
             feature(Feature.O_DEFAULT_NAN, at(v));
@@ -655,7 +655,7 @@ final class LibraryDialectParser {
         MembershipFunction f = membershipFunction();
         Token end = expect(Kind.SEMI, "';' after the term");
         if (fuzzylite && end.line() != kw.line()) {
-            error(end, LibraryDialectCode.STATEMENT_SPANS_LINES, "fuzzylite reads a TERM from one line;"
+            error(end, DialectCode.STATEMENT_SPANS_LINES, "fuzzylite reads a TERM from one line;"
                     + " this one continues on line " + end.line());
         }
         return new Term(termName, f, at(kw));
@@ -676,7 +676,7 @@ final class LibraryDialectParser {
         if (!fuzzylite && t.is("singletons")) {
             List<Point> pts = points();
             if (pts.size() != 1 || ((Literal) pts.get(0).degree()).value() != 1) {
-                error(t, LibraryDialectCode.UNSUPPORTED, "fclcert reads 'singletons' only as one singleton (x, 1)");
+                error(t, DialectCode.UNSUPPORTED, "fclcert reads 'singletons' only as one singleton (x, 1)");
                 throw new Skip();
             }
             feature(Feature.O_SHAPE_SINGLETONS, at(t));
@@ -699,7 +699,7 @@ final class LibraryDialectParser {
         Optional<ShapeKind> kind = fuzzylite ? fuzzyliteShape(t.text()) : jfuzzylogicShape(t.text());
         if (kind.isEmpty()) {
             boolean known = fuzzylite && FUZZYLITE_UNSUPPORTED.contains(t.text());
-            error(t, known ? LibraryDialectCode.UNSUPPORTED : LibraryDialectCode.UNKNOWN_SHAPE, known
+            error(t, known ? DialectCode.UNSUPPORTED : DialectCode.UNKNOWN_SHAPE, known
                     ? "fclcert does not evaluate fuzzylite's '" + t.text() + "' terms"
                     : "'" + t.text() + "' is not a membership function of " + library);
             throw new Skip();
@@ -777,7 +777,7 @@ final class LibraryDialectParser {
             expect(Kind.RPAREN, "')'");
             pts.add(new Point(x, y, at(open)));
             if (peek().kind() == Kind.COMMA) {
-                error(peek(), LibraryDialectCode.NOT_IN_DIALECT, library + " rejects ',' between points");
+                error(peek(), DialectCode.NOT_IN_DIALECT, library + " rejects ',' between points");
                 next();
             }
         }
@@ -803,12 +803,12 @@ final class LibraryDialectParser {
             default -> null;
         };
         if (m == null) {
-            error(w, LibraryDialectCode.UNSUPPORTED, "'" + word + "' is not an accumulation fclcert reads in " + library
+            error(w, DialectCode.UNSUPPORTED, "'" + word + "' is not an accumulation fclcert reads in " + library
                     + " (" + (fuzzylite ? "MAX, BSUM, NSUM, ASUM, SUM" : "MAX, BSUM, NSUM, PROBOR, SUM") + ")");
             return Optional.empty();
         }
         if (m == AccumulationMethod.NSUM) {
-            warn(at(w), LibraryDialectCode.NSUM_AS_BSUM, library + " computes NSUM as BSUM; fclcert divides by the"
+            warn(at(w), DialectCode.NSUM_AS_BSUM, library + " computes NSUM as BSUM; fclcert divides by the"
                     + " largest sum (Table 5), which differs once the sum exceeds 1");
         }
         return Optional.of(new Located<>(m, at(kw)));
@@ -866,12 +866,12 @@ final class LibraryDialectParser {
                 boolean orLast = "OR".equals(lastOperator);
                 SourceLocation later = orLast ? or.get().location() : and.get().location();
                 String effective = orLast ? "AND as " + or.get().value().pair() : "OR as " + and.get().value().pair();
-                warn(later, LibraryDialectCode.COUPLED_AND_OR, "jFuzzyLogic couples AND and OR: the later declaration"
+                warn(later, DialectCode.COUPLED_AND_OR, "jFuzzyLogic couples AND and OR: the later declaration"
                         + " makes it evaluate " + effective + "; fclcert reads AND " + and.get().value() + " and OR "
                         + or.get().value() + " as written");
             }
             if (accu.isEmpty()) {
-                warn(at(start), LibraryDialectCode.SUPPLIED_SETTING,
+                warn(at(start), DialectCode.SUPPLIED_SETTING,
                         "no ACCU: jFuzzyLogic accumulates by a plain sum; read as ACCU SUM");
                 feature(Feature.O_IMPLICIT_SETTING, at(start));
                 accu = Optional.of(new Located<>(AccumulationMethod.SUM, at(start)));
@@ -895,7 +895,7 @@ final class LibraryDialectParser {
                 return value;
             }
         }
-        error(w, LibraryDialectCode.UNSUPPORTED, "'" + word + "' is not an algorithm fclcert reads for "
+        error(w, DialectCode.UNSUPPORTED, "'" + word + "' is not an algorithm fclcert reads for "
                 + kw.text().toUpperCase(Locale.ROOT) + " (" + allowed + ")");
         throw new Skip();
     }
@@ -917,7 +917,7 @@ final class LibraryDialectParser {
             return false;
         }
         if (fuzzylite && !t.text().equals(word.toLowerCase(Locale.ROOT))) {
-            error(t, LibraryDialectCode.NOT_IN_DIALECT, "fuzzylite silently drops a rule that writes '" + t.text()
+            error(t, DialectCode.NOT_IN_DIALECT, "fuzzylite silently drops a rule that writes '" + t.text()
                     + "': its rule keywords are lower case ('" + word.toLowerCase(Locale.ROOT) + "')");
         }
         return true;
@@ -933,7 +933,7 @@ final class LibraryDialectParser {
     private Skip ruleFail(String expected) {
         Token t = ruleToken();
         if (t == null) {
-            error(peek(), LibraryDialectCode.STATEMENT_SPANS_LINES, "fuzzylite reads a rule from one line; expected "
+            error(peek(), DialectCode.STATEMENT_SPANS_LINES, "fuzzylite reads a rule from one line; expected "
                     + expected + " before the end of line " + ruleLine);
             return new Skip();
         }
@@ -988,7 +988,7 @@ final class LibraryDialectParser {
             Token at = ruleToken();
             Condition operand = andCondition(depth);
             if (!fuzzylite && operand instanceof Condition.And && at != null) {
-                warn(at(at), LibraryDialectCode.AND_OR_PRIORITY, "jFuzzyLogic reads '... OR " + at.text()
+                warn(at(at), DialectCode.AND_OR_PRIORITY, "jFuzzyLogic reads '... OR " + at.text()
                         + " AND ...' as '(... OR ...) AND ...' (one priority, left to right); fclcert binds AND"
                         + " tighter (Table 6)");
             }
@@ -1014,7 +1014,7 @@ final class LibraryDialectParser {
             throw ruleFail("a condition");
         }
         if (depth > MAX_NESTING) {
-            error(t, LibraryDialectCode.UNSUPPORTED, "parentheses nested deeper than " + MAX_NESTING);
+            error(t, DialectCode.UNSUPPORTED, "parentheses nested deeper than " + MAX_NESTING);
             throw new Skip();
         }
         if (!fuzzylite && t.is("NOT")) {
@@ -1037,7 +1037,7 @@ final class LibraryDialectParser {
         }
         String variable = next().text();
         if (!ruleWord("IS")) {
-            error(t, LibraryDialectCode.NOT_IN_DIALECT, library + " does not take a bare variable as a condition;"
+            error(t, DialectCode.NOT_IN_DIALECT, library + " does not take a bare variable as a condition;"
                     + " write 'variable " + (fuzzylite ? "is" : "IS") + " term'");
             throw new Skip();
         }
@@ -1061,7 +1061,7 @@ final class LibraryDialectParser {
             }
             if (hedge.get() == Hedge.ANY) {
                 if (negated || hedges.size() > 1) {
-                    error(h, LibraryDialectCode.UNSUPPORTED, "fclcert reads 'any' only alone ('" + variable + " is any')");
+                    error(h, DialectCode.UNSUPPORTED, "fclcert reads 'any' only alone ('" + variable + " is any')");
                     throw new Skip();
                 }
                 return new Condition.TermSubcondition(variable, "", false, hedges, at(t));
@@ -1094,7 +1094,7 @@ final class LibraryDialectParser {
             }
             next();
             if (!ruleWord("IS")) {
-                error(v, LibraryDialectCode.NOT_IN_DIALECT, library + " does not take a bare variable as a conclusion;"
+                error(v, DialectCode.NOT_IN_DIALECT, library + " does not take a bare variable as a conclusion;"
                         + " write 'variable " + (fuzzylite ? "is" : "IS") + " term'");
                 throw new Skip();
             }
@@ -1104,7 +1104,7 @@ final class LibraryDialectParser {
                 throw ruleFail("a term");
             }
             if (fuzzylite && hedge(term).isPresent()) {
-                error(term, LibraryDialectCode.UNSUPPORTED, "fclcert does not evaluate hedges in conclusions");
+                error(term, DialectCode.UNSUPPORTED, "fclcert does not evaluate hedges in conclusions");
                 throw new Skip();
             }
             next();
@@ -1127,7 +1127,7 @@ final class LibraryDialectParser {
             Token w = ruleToken();
             if (w == null || w.kind() != Kind.NUMBER) {
                 if (w != null && w.kind() == Kind.WORD) {
-                    error(w, LibraryDialectCode.NOT_IN_DIALECT, library + " takes a number after WITH, not a variable");
+                    error(w, DialectCode.NOT_IN_DIALECT, library + " takes a number after WITH, not a variable");
                     throw new Skip();
                 }
                 throw ruleFail("a weight");
@@ -1160,7 +1160,7 @@ final class LibraryDialectParser {
             Optional<Located<AccumulationMethod>> accu = rb.accumulation();
             for (Located<AccumulationMethod> a : seen.values()) {
                 if (accu.isPresent() && accu.get().value() != a.value()) {
-                    error(a.location().line(), a.location().column(), LibraryDialectCode.ACCUMULATION_CONFLICT,
+                    error(a.location().line(), a.location().column(), DialectCode.ACCUMULATION_CONFLICT,
                             "ACCU " + a.value() + " differs from ACCU " + accu.get().value() + " of another output"
                                     + " concluded by rule block '" + rb.name() + "'; fclcert holds one ACCU per rule block");
                 } else if (accu.isEmpty()) {
@@ -1186,7 +1186,7 @@ final class LibraryDialectParser {
                 }
             }
             if (count.values().stream().anyMatch(c -> c > 1)) {
-                warn(e.getValue(), LibraryDialectCode.COGS_PER_RULE, "fuzzylite's COGS counts every rule's degree"
+                warn(e.getValue(), DialectCode.COGS_PER_RULE, "fuzzylite's COGS counts every rule's degree"
                         + " separately; here a term is concluded by several rules, so fuzzylite's result differs from"
                         + " fclcert's (which accumulates per term first, Table 5)");
             }

@@ -65,7 +65,7 @@ public class EvaluatorIut implements ImplementationUnderTest {
 
     @Override
     public LoadOutcome load(String fcl) {
-        Analysis analysis = Analysis.analyze(new StrictReader(), "case.fcl", fcl);
+        Analysis analysis = Analysis.analyze(StrictReader.openLevel(), "case.fcl", fcl);   // the corpus language (Open Level methods)
         instance = null;
         loaded = null;
         Optional<LoadOutcome> vetoed = veto(fcl, analysis);

@@ -103,8 +103,22 @@ final class Shapes {
             case LM -> u[first(mu, max)];
             case RM -> u[last(mu, max)];
             case COA -> u[half(mu, total)];
+            case MOM -> meanOfMaximum(u, mu, max);
             default -> weighted(u, mu, total);
         });
+    }
+
+    /** The mean of the samples at the maximum (how sampling implementations compute MoM). */
+    private static double meanOfMaximum(double[] u, double[] mu, double max) {
+        double sum = 0;
+        int n = 0;
+        for (int i = 0; i < u.length; i++) {
+            if (mu[i] >= max) {
+                sum += u[i];
+                n++;
+            }
+        }
+        return sum / n;
     }
 
     private static double weighted(double[] u, double[] mu, double total) {

@@ -233,22 +233,4 @@ class LibraryDialectReadersTest {
         assertEquals(1800, programs);
         assertTrue(System.nanoTime() - start < 60_000_000_000L, "mutation run took too long");
     }
-
-    @Test
-    void diagnosticsDocumentListsEveryDialectCode() throws IOException {
-        String doc = Files.readString(Path.of("docs/diagnostics.md"));
-        int start = doc.indexOf("## jFuzzyLogic and fuzzylite reader diagnostics");
-        assertTrue(start >= 0, "section missing");
-        List<String> documented = new ArrayList<>();
-        Matcher m = Pattern.compile("\\| (FCL-[SW]3\\d\\d) \\| (.*) \\|").matcher(doc.substring(start));
-        while (m.find()) {
-            documented.add(m.group(1));
-            String code = m.group(1);
-            LibraryDialectCode c = java.util.Arrays.stream(LibraryDialectCode.values())
-                    .filter(x -> x.code().equals(code)).findFirst().orElseThrow();
-            assertEquals(c.meaning(), m.group(2), code);
-        }
-        assertEquals(java.util.Arrays.stream(LibraryDialectCode.values()).map(LibraryDialectCode::code).toList(),
-                documented);
-    }
 }

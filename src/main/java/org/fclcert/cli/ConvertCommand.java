@@ -1,0 +1,127 @@
+package org.fclcert.cli;
+
+import java.io.PrintWriter;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.fclcert.check.Analysis;
+import org.fclcert.cli.SourceFiles.FileProblem;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
+import org.fclcert.write.CanonicalWriter;
+import org.fclcert.write.StandardConversion;
+import org.fclcert.write.StandardConversion.Finding;
+import org.fclcert.write.StandardConversion.Kind;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert convert}: a dialect program written as standard FCL, with what converted how. */
+@Command(name = "convert", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
+        description = "Convert an FCL program written in a library's dialect (FFLL, jFuzzyLogic, fuzzylite) to "
+                + "standard IEC 61131-7 FCL in canonical layout. Every non-standard construct is listed on stderr "
+                + "with its place and how it converted: exactly, approximated (with the largest membership error) "
+                + "or not expressible. A conversion that is not exact is refused unless --allow-lossy is given.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = {"0:the program converted (exactly, or with --allow-lossy)",
+            "1:the program has errors, or the conversion is not exact and --allow-lossy was not given",
+            ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
+final class ConvertCommand implements Callable<Integer> {
+    static final String NOT_EXPRESSIBLE = "FCL-X001";
+    static final String APPROXIMATED = "FCL-X002";
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--from", defaultValue = "auto", paramLabel = "DIALECT",
+            description = "the dialect FILE is written in: strict, ffll, jfuzzylogic, fuzzylite or auto"
+                    + " (default: ${DEFAULT-VALUE})")
+    DialectName from;
+
+    @Option(names = "--approximate-points", defaultValue = "0", paramLabel = "N",
+            description = "approximate curved membership functions by N points (default: do not approximate)")
+    int approximatePoints;
+
+    @Option(names = "--allow-lossy", description = "write the result even when it does not mean exactly the same")
+    boolean allowLossy;
+
+    @Option(names = "--out", paramLabel = "FILE", description = "write the standard FCL here instead of stdout")
+    String outFile;
+
+    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    String file;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        if (approximatePoints != 0 && approximatePoints < 2) {
+            err.println("fclcert: --approximate-points must be at least 2 (got " + approximatePoints + ")");
+            return ExitCodes.USAGE;
+        }
+        try {
+            String text = SourceFiles.read(file);
+            Dialect dialect = from.resolve(file, text, err);
+            Analysis analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
+            DiagnosticPrinter.text(err, analysis.diagnostics());
+            if (analysis.program().isEmpty()) {
+                err.println("fclcert: " + file + " has errors; not converted");
+                return ExitCodes.ERRORS;
+            }
+            StandardConversion.Result result = new StandardConversion()
+                    .convert(analysis.program().get(), new StandardConversion.Options(approximatePoints));
+            printFindings(err, result.findings(), allowLossy);
+            String standard = new CanonicalWriter().write(result.program());
+            Analysis back = Analysis.analyze(new StrictReader(), file + " (converted)", standard);
+            if (back.hasErrors()) {
+                err.println("fclcert: internal error: the converted program is not valid standard FCL: "
+                        + back.diagnostics().stream().filter(Diagnostic::isError).findFirst().orElseThrow());
+                return ExitCodes.INTERNAL;
+            }
+            err.println("fclcert: " + summary(dialect, result));
+            if (!result.exact() && !allowLossy) {
+                err.println("fclcert: " + file + " not converted: standard FCL cannot say exactly what it says;"
+                        + " add --allow-lossy to write the nearest standard program anyway");
+                return ExitCodes.ERRORS;
+            }
+            if (outFile != null) {
+                SourceFiles.write(outFile, standard);
+                err.println("fclcert: wrote " + outFile);
+            } else {
+                out.print(standard);
+                out.flush();
+            }
+            return ExitCodes.OK;
+        } catch (FileProblem e) {
+            err.println("fclcert: " + e.getMessage());
+            return ExitCodes.USAGE;
+        }
+    }
+
+    /** One located line per finding: exact ones as notes, the others as errors (warnings with --allow-lossy). */
+    static void printFindings(PrintWriter err, List<Finding> findings, boolean lossyAllowed) {
+        for (Finding f : findings) {
+            if (f.kind() instanceof Kind.Exact) {
+                err.println(f.location() + ": note " + f.construct() + ": converted exactly: " + f.message());
+            } else if (f.kind() instanceof Kind.Approximated a) {
+                err.println(f.location() + ": warning " + APPROXIMATED + ": " + f.construct() + ": approximated, largest"
+                        + " membership error " + a.maxError() + ": " + f.message());
+            } else {
+                err.println(f.location() + ": " + (lossyAllowed ? "warning " : "error ") + NOT_EXPRESSIBLE + ": "
+                        + f.construct() + " is not expressible in standard FCL: " + f.message());
+            }
+        }
+    }
+
+    static String summary(Dialect dialect, StandardConversion.Result result) {
+        long exact = result.findings().stream().filter(f -> f.kind() instanceof Kind.Exact).count();
+        long approximated = result.findings().stream().filter(f -> f.kind() instanceof Kind.Approximated).count();
+        long lost = result.findings().size() - exact - approximated;
+        return "converted from " + dialect.displayName() + ": " + DiagnosticPrinter.count(result.findings().size(),
+                "non-standard construct") + ", " + exact + " exact, " + approximated + " approximated, " + lost
+                + " not expressible";
+    }
+}

@@ -1,0 +1,122 @@
+package org.fclcert.cli;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutOptions;
+import org.fclcert.iut.Iuts;
+import org.fclcert.probe.DataCheckEntry;
+import org.fclcert.probe.Prober;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code fclcert probe}: measures the Table 11 data check list of an implementation and prints it. */
+@Command(name = "probe", mixinStandardHelpOptions = true,
+        description = {"Measure the Table 11 data check list (clause 6.2) of an implementation under test with "
+                + "generated programs judged by the reference evaluator, and print it.",
+            "Exit 0: measured; 2: the implementation could not be probed or an option is wrong."})
+final class ProbeCommand implements Callable<Integer> {
+    static final String FILE = "data-check-list.json";
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
+            description = "reference | java:CLASS | process:COMMAND (default: ${DEFAULT-VALUE})")
+    String iut;
+
+    @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found")
+    String classpath;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "Also write the list to DIR/" + FILE)
+    Path out;
+
+    @Option(names = "--cap", paramLabel = "N", defaultValue = "100000",
+            description = "Largest size probed for each limit (default: ${DEFAULT-VALUE})")
+    long cap;
+
+    @Option(names = "--budget", paramLabel = "DURATION", defaultValue = "3m",
+            description = "Time for the whole probe, e.g. 3m, 90s (default: ${DEFAULT-VALUE})")
+    String budget;
+
+    @Option(names = "--timeout", paramLabel = "DURATION", defaultValue = "5s",
+            description = "Per-request timeout for the implementation (default: ${DEFAULT-VALUE})")
+    String timeout;
+
+    @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text", description = "text | json")
+    OutputFormat format;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        Duration total = Durations.parse(budget).orElse(null);
+        Duration request = Durations.parse(timeout).orElse(null);
+        if (total == null || total.isZero() || request == null || request.isZero() || cap < 1) {
+            err.println("fclcert probe: " + (cap < 1 ? "--cap must be at least 1"
+                    : "--budget and --timeout take a duration such as 3m, 90s or 500ms"));
+            err.flush();
+            return ExitCodes.USAGE;
+        }
+        IutOptions options = IutOptions.defaults().withTimeout(request);
+        if (classpath != null) {
+            options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
+                    .filter(s -> !s.isBlank()).map(Path::of).toList());
+        }
+        IutOptions opened = options;
+        List<DataCheckEntry> entries;
+        try {
+            entries = Prober.probe(() -> Iuts.open(iut, opened), new Prober.Options(cap, total, Set.of()),
+                    (row, index, count) -> progress(err, row.id(), index, count));
+        } catch (IutException e) {
+            clearProgress(err);
+            err.println("fclcert probe: cannot probe '" + iut + "': " + e.getMessage()
+                    + (e.stderrTail().isBlank() ? "" : "\n--- its stderr ---\n" + e.stderrTail().strip()));
+            err.flush();
+            return ExitCodes.USAGE;
+        }
+        clearProgress(err);
+        if (format == OutputFormat.json) {
+            stdout.println(DataCheckPrinter.json(entries));
+            stdout.flush();
+        } else {
+            DataCheckPrinter.text(stdout, entries);
+        }
+        if (out != null) {
+            try {
+                Files.createDirectories(out);
+                Files.writeString(out.resolve(FILE), DataCheckPrinter.json(entries) + "\n", StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                err.println("fclcert probe: cannot write " + out.resolve(FILE) + ": " + e.getMessage());
+                err.flush();
+                return ExitCodes.USAGE;
+            }
+        }
+        return ExitCodes.OK;
+    }
+
+    private static void progress(PrintWriter err, String id, int index, int count) {
+        if (System.console() != null) {
+            err.print("\r\u001b[Kprobing " + index + "/" + count + ": " + id);
+            err.flush();
+        }
+    }
+
+    private static void clearProgress(PrintWriter err) {
+        if (System.console() != null) {
+            err.print("\r\u001b[K");
+            err.flush();
+        }
+    }
+}

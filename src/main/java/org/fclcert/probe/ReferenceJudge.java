@@ -1,0 +1,63 @@
+package org.fclcert.probe;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.fclcert.check.Analysis;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.syntax.StrictReader;
+
+/** The expected outputs of a probe program: the reference evaluator run on the same sequence of vectors. */
+final class ReferenceJudge {
+    private ReferenceJudge() {
+    }
+
+    /** The reference's answer: the outputs after each vector, or why it cannot judge the program. */
+    record Expected(Optional<List<Map<String, Double>>> outputs, String whyNot) {
+    }
+
+    static Expected expected(ProbeProgram p) {
+        Analysis analysis = Analysis.analyze(new StrictReader(), "<probe>", p.expectedFrom());
+        if (analysis.program().isEmpty()) {
+            String why = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
+                    .map(d -> d.code() + ": " + d.message()).orElse("the program could not be read");
+            return new Expected(Optional.empty(), why);
+        }
+        try {
+            FunctionBlockInstance instance = Evaluator.load(analysis.program().get()).newInstance();
+            List<Map<String, Double>> out = new ArrayList<>();
+            for (Map<String, Double> v : p.vectors()) {
+                for (Map.Entry<String, Double> in : v.entrySet()) {
+                    instance.set(in.getKey(), in.getValue());
+                }
+                instance.evaluate();
+                out.add(new LinkedHashMap<>(instance.outputs()));
+            }
+            return new Expected(Optional.of(out), "");
+        } catch (EvaluationException e) {
+            return new Expected(Optional.empty(), e.getMessage());
+        }
+    }
+
+    /** Empty when {@code actual} has every expected output within 1e-6 (relative above 1); else what differs. */
+    static Optional<String> compare(Map<String, Double> expected, Map<String, Double> actual) {
+        Map<String, Double> byKey = new LinkedHashMap<>();
+        actual.forEach((k, v) -> byKey.put(k.toLowerCase(java.util.Locale.ROOT), v));
+        for (Map.Entry<String, Double> e : expected.entrySet()) {
+            Double a = byKey.get(e.getKey().toLowerCase(java.util.Locale.ROOT));
+            double want = e.getValue();
+            if (a == null) {
+                return Optional.of("output " + e.getKey() + " is missing (expected " + want + ")");
+            }
+            if (!(Math.abs(a - want) <= 1e-6 * Math.max(1, Math.abs(want)))) {
+                return Optional.of(e.getKey() + " = " + a + " where " + want + " is right");
+            }
+        }
+        return Optional.empty();
+    }
+}

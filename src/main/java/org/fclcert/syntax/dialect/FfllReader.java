@@ -1,0 +1,108 @@
+package org.fclcert.syntax.dialect;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Optional;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Feature;
+import org.fclcert.model.FeatureUse;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Program;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.syntax.ReadResult;
+import org.fclcert.syntax.ReaderOptions;
+import org.fclcert.syntax.StrictReader;
+
+/**
+ * The reader of the Free Fuzzy Logic Library's FCL dialect (FFLL; its grammar notes are
+ * ../shared/standard/004, its behaviour ../shared/notes/peers.md; docs/dialects.md lists every construct).
+ *
+ * <p>It is the strict pipeline with three changes: a token filter ({@link FfllTokens}: ACCUM, declarations
+ * without ':', RETAIN, RANGE comments, END_FUZZIFY closing DEFUZZIFY), builder options (MoM accepted,
+ * END_FUZZIFY closing DEFUZZIFY and the draft's forms without warnings) and a model pass ({@link FfllModel}:
+ * term-only subconditions and subconclusions bound by position, output terms in FUZZIFY blocks, missing
+ * METHOD and DEFAULT, output ranges from comments). The program it yields is the standard model of what FFLL
+ * means, with each FFLL construct in {@link Program#dialectFeatures()} where it was written; the usual checks
+ * then run on it. Thread-safe: every read has its own state.
+ */
+public final class FfllReader implements DialectReader {
+
+    @Override
+    public Dialect dialect() {
+        return Dialect.FFLL;
+    }
+
+    @Override
+    public ReadResult read(String sourceName, String text) {
+        return read(sourceName, text, new FfllTokens());
+    }
+
+    private static ReadResult read(String sourceName, String text, FfllTokens tokens) {
+        String name = sourceName == null ? "<input>" : sourceName;
+        ReaderOptions options = new ReaderOptions(EnumSet.of(DefuzzificationMethod.MOM), true, true, tokens);
+        ReadResult strict = new StrictReader(options).read(name, text == null ? "" : text);
+        List<Diagnostic> diagnostics = new ArrayList<>(strict.diagnostics());
+        if (strict.program().isEmpty()) {
+            return new ReadResult(Optional.empty(), diagnostics);
+        }
+        try {
+            FfllModel model = new FfllModel(tokens);
+            Program read = strict.program().get();
+            List<FunctionBlock> blocks = new ArrayList<>();
+            for (int i = 0; i < read.functionBlocks().size(); i++) {
+                blocks.add(model.functionBlock(read.functionBlocks().get(i), i));
+            }
+            List<FeatureUse> features = new ArrayList<>(tokens.features());
+            features.addAll(model.features());
+            features.sort(Comparator.comparing(FeatureUse::location));
+            diagnostics.addAll(model.diagnostics());
+            diagnostics.sort(Comparator.comparing(Diagnostic::location));
+            boolean errors = diagnostics.stream().anyMatch(Diagnostic::isError);
+            return new ReadResult(errors ? Optional.empty() : Optional.of(new Program(name, blocks, features)),
+                    diagnostics);
+        } catch (RuntimeException | StackOverflowError e) {
+            diagnostics.add(Diagnostic.error(SourceLocation.of(name, 1, 1), "FCL-S999", "internal error of the FFLL"
+                    + " reader (" + e.getClass().getSimpleName() + "); please report this"));
+            return new ReadResult(Optional.empty(), diagnostics);
+        }
+    }
+
+    /**
+     * The FFLL constructs in the text, in source order: those of a successful read (plus METHOD MoM, which
+     * the standard model holds as a method), or, when the text does not read, those the token filter saw.
+     */
+    @Override
+    public List<Giveaway> giveaways(String text) {
+        try {
+            FfllTokens tokens = new FfllTokens();
+            Optional<Program> program = read("<auto>", text, tokens).program();
+            List<FeatureUse> uses = new ArrayList<>(program.map(Program::dialectFeatures).orElse(tokens.features()));
+            uses.addAll(tokens.momMethods());
+            uses.sort(Comparator.comparing(FeatureUse::location));
+            return uses.stream().map(u -> new Giveaway(construct(u.feature()), u.location().line())).toList();
+        } catch (RuntimeException | StackOverflowError e) {
+            return List.of();
+        }
+    }
+
+    /** A construct in a few words, as {@code --dialect auto} shows it. */
+    static String construct(Feature f) {
+        return switch (f) {
+            case O_ACCUM -> "ACCUM:";
+            case O_FFLL_TERM_ONLY_CONDITION -> "term-only subcondition";
+            case O_FFLL_TERM_ONLY_CONCLUSION -> "term-only subconclusion";
+            case O_FFLL_OUTPUT_FUZZIFY -> "FUZZIFY of an output";
+            case O_END_FUZZIFY -> "END_FUZZIFY closing DEFUZZIFY";
+            case O_RANGE_COMMENT -> "RANGE comment";
+            case O_FFLL_NO_DEFAULT -> "no DEFAULT";
+            case O_FFLL_NO_METHOD -> "no METHOD";
+            case O_DECLARATION_WITHOUT_COLON -> "declaration without ':'";
+            case O_VAR_RETAIN -> "RETAIN";
+            case O_MOM -> "METHOD: MoM";
+            default -> f.id();
+        };
+    }
+}
