@@ -410,6 +410,7 @@ final class LibraryDialectParser {
         Token start = expectKeyword("FUZZIFY");
         String variable = name();
         List<Term> terms = new ArrayList<>();
+        Optional<Range> declaredRange = Optional.empty();
         while (!stopped) {
             Token t = peek();
             int from = p;
@@ -424,7 +425,8 @@ final class LibraryDialectParser {
                 if (isKeyword(t, "TERM")) {
                     terms.add(term());
                 } else if (isKeyword(t, "RANGE")) {
-                    range();   // an input's RANGE has no effect on evaluation
+                    // an input's RANGE has no effect on evaluation; kept for the conversion to standard FCL
+                    declaredRange = range();
                     feature(Feature.O_INPUT_RANGE, at(t));
                 } else if (isKeyword(t, "ENABLED") && fuzzylite) {
                     enabled();
@@ -441,7 +443,7 @@ final class LibraryDialectParser {
                 next();
             }
         }
-        fuzzifications.add(new Fuzzification(variable, terms, at(start)));
+        fuzzifications.add(new Fuzzification(variable, terms, at(start), declaredRange));
     }
 
     private boolean endOfBlock(Token t, String end) {
