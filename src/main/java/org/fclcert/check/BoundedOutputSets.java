@@ -31,7 +31,8 @@ public final class BoundedOutputSets implements FunctionBlockRule {
 
     @Override
     public String asserts() {
-        return "an output using CoG, CoA, LM or RM without RANGE has no term that is non-zero at an outer end";
+        return "an output using CoG, CoA, LM or RM without RANGE has no term that is non-zero at an outer end"
+                + " (and no smooth named shape)";
     }
 
     @Override
@@ -43,6 +44,15 @@ public final class BoundedOutputSets implements FunctionBlockRule {
             for (Term t : d.terms()) {
                 if (t.function() instanceof MembershipFunction.Points p && !p.points().isEmpty()) {
                     check(d, t, p.points(), sink);
+                } else if (t.function() instanceof MembershipFunction.NamedShape shape) {
+                    java.util.Optional<List<Point>> points = shape.points();
+                    if (points.isPresent()) {
+                        check(d, t, points.get(), sink);
+                    } else if (shape.parameters().size() == shape.kind().arity()) {
+                        sink.report(finding(t.location(), "DEFUZZIFY " + d.variable() + ": term '" + t.name()
+                                + "' is a " + shape.kind() + " shape, which fclcert integrates only over a RANGE;"
+                                + " add a finite RANGE (5.2.3)"));
+                    }
                 }
             }
         }

@@ -21,16 +21,18 @@ public final class CogsOnlyOnSingletons implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         for (Defuzzification d : block.defuzzifications()) {
-            if (d.method().isEmpty() || d.method().get().value() != DefuzzificationMethod.COGS) {
+            if (d.method().isEmpty() || d.method().get().value() != DefuzzificationMethod.COGS
+                    && d.method().get().value() != DefuzzificationMethod.COGSS) {
                 continue;
             }
-            d.terms().stream().filter(t -> t.function() instanceof MembershipFunction.Points).findFirst()
+            d.terms().stream().filter(t -> !(t.function() instanceof MembershipFunction.Singleton)).findFirst()
                     .ifPresent(t -> report(d, t, sink));
         }
     }
 
     private void report(Defuzzification d, Term t, DiagnosticSink sink) {
-        sink.report(finding(d.method().get().location(), "DEFUZZIFY " + d.variable() + ": METHOD CoGS needs singleton"
+        sink.report(finding(d.method().get().location(), "DEFUZZIFY " + d.variable() + ": METHOD "
+                + d.method().get().value().keyword() + " needs singleton"
                 + " terms, but term '" + t.name() + "' (line " + t.location().line() + ") is given by points;"
                 + " use CoG for point terms (5.2.3, Table 1)"));
     }

@@ -57,6 +57,10 @@ import org.fclcert.model.VariableRef;
  * <li>B-ONE-SUBCONCLUSION at the subconclusion of a rule whose conclusion is one {@code v IS t};
  *     otherwise E-SUBCONCLUSIONS at every subconclusion after the first and at every bare variable.</li>
  * <li>E-WITH-CONST at every constant WITH, E-WITH-VAR at every variable WITH.</li>
+ * <li>Dialect constructs visible in the model: O-SHAPE-... at every named-shape term (and no B/E term
+ *     feature for it), O-HEDGE-... at every subcondition with that hedge, O-ACCU-PROBOR / O-ACCU-SUM
+ *     and O-COGSS at their declarations. Constructs of the text only (comments, spellings, settings a
+ *     dialect moves or supplies) are recorded by the dialect reader in {@code Program.dialectFeatures}.</li>
  * </ul>
  */
 public final class FeatureDetector {
@@ -111,8 +115,17 @@ public final class FeatureDetector {
             }
         }
 
+        /** A named shape (dialects only): its O-SHAPE-... feature at the term; true when the term is one. */
+        private boolean namedShape(Term term) {
+            if (term.function() instanceof MembershipFunction.NamedShape shape) {
+                Feature.byId(shape.kind().featureId()).ifPresent(f -> use(f, term.location()));
+                return true;
+            }
+            return false;
+        }
+
         private void inputTerm(Term term) {
-            if (!(term.function() instanceof MembershipFunction.Points p)) {
+            if (namedShape(term) || !(term.function() instanceof MembershipFunction.Points p)) {
                 return;
             }
             List<Point> points = p.points();
@@ -129,6 +142,9 @@ public final class FeatureDetector {
         }
 
         private void outputTerm(Term term) {
+            if (namedShape(term)) {
+                return;
+            }
             if (term.function() instanceof MembershipFunction.Singleton s) {
                 use(s.value() instanceof VariableRef ? Feature.E_TERM_VARIABLE_POINT : Feature.B_OUT_SINGLETON,
                         term.location());
@@ -183,6 +199,9 @@ public final class FeatureDetector {
                     use(Feature.B_SUBCONDITIONS, t.location());
                     if (t.negated()) {
                         use(Feature.E_NOT, t.location());
+                    }
+                    for (org.fclcert.model.Hedge h : t.hedges()) {
+                        Feature.byId(h.featureId()).ifPresent(f -> use(f, t.location()));
                     }
                 } else if (c instanceof Condition.VariableSubcondition) {
                     use(Feature.E_COND_VARIABLE, c.location());
@@ -242,6 +261,8 @@ public final class FeatureDetector {
             case MAX -> Feature.B_ACCU_MAX;
             case BSUM -> Feature.E_ACCU_BSUM;
             case NSUM -> Feature.E_ACCU_NSUM;
+            case PROBOR -> Feature.O_ACCU_PROBOR;
+            case SUM -> Feature.O_ACCU_SUM;
         };
     }
 
@@ -253,6 +274,7 @@ public final class FeatureDetector {
             case LM -> Feature.E_LM;
             case RM -> Feature.E_RM;
             case MOM -> Feature.O_MOM;
+            case COGSS -> Feature.O_COGSS;
         };
     }
 }

@@ -38,7 +38,7 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
-                    if (c instanceof Condition.TermSubcondition t) {
+                    if (c instanceof Condition.TermSubcondition t && !t.any()) {
                         inCondition.add(key(t.variable(), t.term()));
                     }
                 }

@@ -62,7 +62,10 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
             out.add(new OperandUse(s.value(), Role.SINGLETON, () -> "the value of singleton " + of));
             return;
         }
-        List<Point> points = ((MembershipFunction.Points) term.function()).points();
+        if (!(term.function() instanceof MembershipFunction.Points pts)) {
+            return;   // a named shape has literal parameters only
+        }
+        List<Point> points = pts.points();
         for (int i = 0; i < points.size(); i++) {
             Point p = points.get(i);
             int number = i + 1;

@@ -36,7 +36,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
-                    if (c instanceof Condition.TermSubcondition t) {
+                    if (c instanceof Condition.TermSubcondition t && !t.any()) {   // 'x is any' names no term
                         check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
                                 () -> Describe.subcondition(t), t.location(), sink);
                     }

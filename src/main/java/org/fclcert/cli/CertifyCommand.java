@@ -222,7 +222,7 @@ final class CertifyCommand implements Callable<Integer> {
         out.flush();
     }
 
-    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3}. */
+    /** {@code 3 of 25: E-NOT, E-COG, E-LM} or {@code 0 of 3} (the report has no rows for dialect-syntax features). */
     private static String realised(Report r, int table) {
         List<String> ids = r.features().stream().filter(f -> f.table() == table && f.status() == FeatureStatus.REALISED)
                 .map(Report.FeatureRow::id).toList();

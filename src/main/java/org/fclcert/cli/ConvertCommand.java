@@ -24,10 +24,11 @@ import picocli.CommandLine.Spec;
         description = "Convert an FCL program written in a library's dialect (FFLL, jFuzzyLogic, fuzzylite) to "
                 + "standard IEC 61131-7 FCL in canonical layout. Every non-standard construct is listed on stderr "
                 + "with its place and how it converted: exactly, approximated (with the largest membership error) "
-                + "or not expressible. A conversion that is not exact is refused unless --allow-lossy is given.",
+                + "or not expressible. Curves are approximated only when --approximate-points is given; a construct "
+                + "that is not expressible makes the conversion refused unless --allow-lossy is given.",
         exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = {"0:the program converted (exactly, or with --allow-lossy)",
-            "1:the program has errors, or the conversion is not exact and --allow-lossy was not given",
+            "1:the program has errors, or a construct is not expressible and --allow-lossy was not given",
             ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
 final class ConvertCommand implements Callable<Integer> {
     static final String NOT_EXPRESSIBLE = "FCL-X001";
@@ -82,7 +83,7 @@ final class ConvertCommand implements Callable<Integer> {
                 return ExitCodes.INTERNAL;
             }
             err.println("fclcert: " + summary(dialect, result));
-            if (!result.exact() && !allowLossy) {
+            if (!result.expressible() && !allowLossy) {
                 err.println("fclcert: " + file + " not converted: standard FCL cannot say exactly what it says;"
                         + " add --allow-lossy to write the nearest standard program anyway");
                 return ExitCodes.ERRORS;
@@ -108,12 +109,21 @@ final class ConvertCommand implements Callable<Integer> {
                 err.println(f.location() + ": note " + f.construct() + ": converted exactly: " + f.message());
             } else if (f.kind() instanceof Kind.Approximated a) {
                 err.println(f.location() + ": warning " + APPROXIMATED + ": " + f.construct() + ": approximated, largest"
-                        + " membership error " + a.maxError() + ": " + f.message());
+                        + " membership error at most " + upTo3Digits(a.maxError()) + ": " + f.message());
             } else {
                 err.println(f.location() + ": " + (lossyAllowed ? "warning " : "error ") + NOT_EXPRESSIBLE + ": "
                         + f.construct() + " is not expressible in standard FCL: " + f.message());
             }
         }
+    }
+
+    /** The bound rounded up to 3 significant digits, so that the printed number is still a bound. */
+    static String upTo3Digits(double bound) {
+        if (!Double.isFinite(bound) || bound == 0) {
+            return Double.toString(bound);
+        }
+        return new java.math.BigDecimal(bound).round(new java.math.MathContext(3, java.math.RoundingMode.UP))
+                .stripTrailingZeros().toString();
     }
 
     static String summary(Dialect dialect, StandardConversion.Result result) {

@@ -62,6 +62,15 @@ final class BlockCompiler {
         inputTerms(b);
         b.ruleBlocks = fb.ruleBlocks().stream().map(this::ruleBlock).toArray(RuleBlockPlan[]::new);
         b.outputs = fb.defuzzifications().stream().map(this::output).toArray(OutputPlan[]::new);
+        b.smoothOutputs = new boolean[b.outputs.length];
+        for (int i = 0; i < b.outputs.length; i++) {
+            OutputPlan o = b.outputs[i];
+            boolean smooth = !o.singletons() && o.accumulation() == AccumulationMethod.PROBOR;
+            for (int s : o.termShapes()) {
+                smooth |= shapes.get(s).kind != null;
+            }
+            b.smoothOutputs[i] = smooth;
+        }
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
         return new BlockPlan(b);
@@ -122,6 +131,19 @@ final class BlockCompiler {
     private int addShape(Term t) {
         MembershipFunction f = t.function();
         Shape s;
+        if (f instanceof MembershipFunction.NamedShape named) {
+            if (named.parameters().size() != named.kind().arity()) {
+                throw new IllegalArgumentException("term " + t.name() + ": " + named.kind() + " takes "
+                        + named.kind().arity() + " parameters");
+            }
+            java.util.Optional<List<Point>> linear = named.points();
+            if (linear.isPresent()) {
+                f = new MembershipFunction.Points(linear.get());
+            } else {
+                shapes.add(new Shape(named.kind(), named.values()));
+                return shapes.size() - 1;
+            }
+        }
         if (f instanceof MembershipFunction.Singleton single) {
             s = new Shape(true, new double[] {constant(single.value())}, new int[] {slotOrNone(single.value())},
                     new double[] {1.0}, new int[] {-1});
@@ -194,7 +216,7 @@ final class BlockCompiler {
         int slot = slot(d.variable());
         boolean singletons = !d.terms().isEmpty()
                 && d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton);
-        boolean points = d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Points);
+        boolean points = d.terms().stream().allMatch(t -> !(t.function() instanceof MembershipFunction.Singleton));
         if (!singletons && !points) {
             throw new IllegalArgumentException("output " + d.variable() + " mixes singleton and point terms");
         }
@@ -203,7 +225,7 @@ final class BlockCompiler {
         if (singletons && method == DefuzzificationMethod.COA) {
             throw new IllegalArgumentException("CoA is not applicable to the singletons of " + d.variable());
         }
-        if (!singletons && method == DefuzzificationMethod.COGS) {
+        if (!singletons && (method == DefuzzificationMethod.COGS || method == DefuzzificationMethod.COGSS)) {
             throw new IllegalArgumentException("CoGS needs singleton terms on " + d.variable());
         }
         int[] termShapes = d.terms().stream().mapToInt(this::addShape).toArray();
@@ -226,6 +248,9 @@ final class BlockCompiler {
     }
 
     private static int pointCount(Term t) {
+        if (t.function() instanceof MembershipFunction.NamedShape named) {
+            return named.points().map(List::size).orElse(0);
+        }
         return t.function() instanceof MembershipFunction.Points p ? p.points().size() : 1;
     }
 

@@ -35,6 +35,8 @@ final class BlockPlan {
 
     final RuleBlockPlan[] ruleBlocks;
     final OutputPlan[] outputs;
+    /** Per output: true when its accumulated set is not piece-wise linear (smooth shapes, PROBOR): SmoothSet. */
+    final boolean[] smoothOutputs;
     /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
     final int contributionCount;
     final int maxStack;
@@ -57,6 +59,7 @@ final class BlockPlan {
         termName = b.termName;
         ruleBlocks = b.ruleBlocks;
         outputs = b.outputs;
+        smoothOutputs = b.smoothOutputs;
         contributionCount = b.contributionCount;
         int stack = 1;
         int bare = 0;
@@ -88,6 +91,7 @@ final class BlockPlan {
         String[] termName;
         RuleBlockPlan[] ruleBlocks;
         OutputPlan[] outputs;
+        boolean[] smoothOutputs;
         int contributionCount;
     }
 

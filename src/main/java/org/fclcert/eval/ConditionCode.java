@@ -17,6 +17,10 @@ final class ConditionCode {
     static final int NOT = 3;
     static final int AND = 4;
     static final int OR = 5;
+    /** A hedge (dialects) applied to the top of the stack; arg is its Hedge ordinal. */
+    static final int HEDGE = 6;
+    /** {@code x is any} (dialects): degree 1. */
+    static final int ONE = 7;
 
     final int[] ops;
     final int[] args;
@@ -52,7 +56,19 @@ final class ConditionCode {
         int max;
 
         void emit(Condition c, TermIndex termIndex, ToIntFunction<String> slot) {
-            if (c instanceof Condition.TermSubcondition t) {
+            if (c instanceof Condition.TermSubcondition t && !t.hedges().isEmpty()) {
+                if (t.any()) {
+                    push(ONE, 0, 1);
+                } else {
+                    push(TERM, termIndex.of(t.variable(), t.term()), 1);
+                    for (int i = t.hedges().size() - 1; i >= 0; i--) {
+                        push(HEDGE, t.hedges().get(i).ordinal(), 0);
+                    }
+                }
+                if (t.negated()) {
+                    push(NOT, 0, 0);
+                }
+            } else if (c instanceof Condition.TermSubcondition t) {
                 push(t.negated() ? TERM_NOT : TERM, termIndex.of(t.variable(), t.term()), 1);
             } else if (c instanceof Condition.VariableSubcondition v) {
                 push(VARIABLE, slot.applyAsInt(v.variable()), 1);

@@ -35,6 +35,9 @@ public final class FunctionBlockInstance {
     private final double[] singletonDegree;
     private final double[] singletonValue;
     private final SetBuilder set = new SetBuilder();
+    /** Per output: the smooth-set integrator when its set is not piece-wise linear, else null. */
+    private final SmoothSet[] smoothSets;
+    private static final org.fclcert.model.Hedge[] HEDGES = org.fclcert.model.Hedge.values();
     /** Shapes with points from variables, re-read at each evaluation. */
     private final int[] variableShapes;
 
@@ -62,6 +65,10 @@ public final class FunctionBlockInstance {
         this.contributionWeight = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
         this.singletonValue = new double[terms];
+        this.smoothSets = new SmoothSet[plan.outputs.length];
+        for (int i = 0; i < smoothSets.length; i++) {
+            smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
+        }
     }
 
     /** The function block's name as declared. */
@@ -129,8 +136,8 @@ public final class FunctionBlockInstance {
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
-        for (OutputPlan o : plan.outputs) {
-            defuzzify(o, trace);
+        for (int i = 0; i < plan.outputs.length; i++) {
+            defuzzify(plan.outputs[i], smoothSets[i], trace);
         }
     }
 
@@ -171,7 +178,8 @@ public final class FunctionBlockInstance {
             int s = termShape[t];
             double u = values[plan.termVariableSlot[t]];
             Shape shape = plan.shapes[s];
-            termDegrees[t] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0) : Pwl.degree(curX[s], curY[s], shape.n, u);
+            termDegrees[t] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0)
+                    : shape.kind == null ? Pwl.degree(curX[s], curY[s], shape.n, u) : shape.kind.degree(shape.params, u);
             if (trace != null) {
                 trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
             }
@@ -222,7 +230,8 @@ public final class FunctionBlockInstance {
         return switch (accu) {
             case MAX -> Math.max(a, b);
             case BSUM -> Math.min(1.0, a + b);
-            case NSUM -> a + b;
+            case NSUM, SUM -> a + b;
+            case PROBOR -> a + b - a * b;
         };
     }
 
@@ -239,6 +248,8 @@ public final class FunctionBlockInstance {
                 case ConditionCode.VARIABLE -> st[sp++] = clamp01(values[args[i]]);
                 case ConditionCode.NOT -> st[sp - 1] = 1.0 - st[sp - 1];
                 case ConditionCode.AND -> sp = fold(st, sp, args[i], true, and, or);
+                case ConditionCode.HEDGE -> st[sp - 1] = HEDGES[args[i]].apply(st[sp - 1]);
+                case ConditionCode.ONE -> st[sp++] = 1.0;
                 default -> sp = fold(st, sp, args[i], false, and, or);
             }
         }
@@ -276,10 +287,11 @@ public final class FunctionBlockInstance {
     }
 
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
-    private void defuzzify(OutputPlan o, Trace trace) throws EvaluationException {
-        double result = o.singletons() ? singletons(o, trace) : pointSet(o, trace);
+    private void defuzzify(OutputPlan o, SmoothSet smooth, Trace trace) throws EvaluationException {
+        double result = o.singletons() ? singletons(o, trace) : smooth != null ? smoothSet(o, smooth, trace)
+                : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
-        if (Double.isNaN(result) && !nothingFired(o)) {
+        if (Double.isNaN(result) && !(smooth != null ? smooth.empty() : nothingFired(o))) {
             throw new EvaluationException(EvaluationException.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
         }
@@ -287,7 +299,8 @@ public final class FunctionBlockInstance {
             outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
             result = o.noChange() ? values[o.slot()] : o.defaultValue();
         }
-        if (!Double.isFinite(result)) {
+        boolean nanDefault = Double.isNaN(result) && outcome == Trace.Outcome.DEFAULT;   // DEFAULT := nan (fuzzylite)
+        if (!Double.isFinite(result) && !nanDefault) {
             throw new EvaluationException(EvaluationException.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
         }
@@ -348,8 +361,20 @@ public final class FunctionBlockInstance {
             case LM -> extremeSingleton(terms, true);
             case RM -> extremeSingleton(terms, false);
             case MOM -> meanOfMaximalSingletons(terms);
+            case COGSS -> weightedSumOfSingletons(terms);
             default -> centreOfGravityForSingletons(terms);
         };
+    }
+
+    /** fuzzylite's COGSS: Σ u·μ, not divided by Σ μ; NaN when every degree is 0 (nothing fired). */
+    private double weightedSumOfSingletons(int terms) {
+        double num = 0;
+        boolean any = false;
+        for (int t = 0; t < terms; t++) {
+            num += singletonValue[t] * singletonDegree[t];
+            any |= singletonDegree[t] != 0;
+        }
+        return any ? num : Double.NaN;
     }
 
     private double centreOfGravityForSingletons(int terms) {
@@ -443,12 +468,39 @@ public final class FunctionBlockInstance {
         return defuzzifySet(o.method());
     }
 
+    /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
+    private double smoothSet(OutputPlan o, SmoothSet smooth, Trace trace) {
+        smooth.clear();
+        int[] cs = o.contributions();
+        for (int i = 0; i < cs.length; i++) {
+            double d = contributionDegree[cs[i]];
+            double w = contributionWeight[cs[i]];
+            if (d * w > 0) {
+                smooth.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
+            }
+        }
+        double result = smooth.defuzzify(o.method(), o.accumulation(), o.rangeMin(), o.rangeMax(), plan.shapes,
+                curX, curY);
+        if (trace != null) {
+            List<Trace.Breakpoint> pts = new ArrayList<>();
+            int n = 64;
+            for (int j = 0; j <= n && smooth.contributions() > 0; j++) {
+                double u = o.rangeMin() + (o.rangeMax() - o.rangeMin()) * j / n;
+                pts.add(new Trace.Breakpoint(u, smooth.degree(u)));
+            }
+            trace.add(new Trace.AccumulatedSet(o.variable(), false, pts));
+        }
+        return result;
+    }
+
     private double defuzzifySet(DefuzzificationMethod method) {
         return switch (method) {
             case COA -> Defuzzifier.centreOfArea(set.px, set.py, set.np);
             case LM -> Defuzzifier.leftmostMaximum(set.px, set.py, set.np);
             case RM -> Defuzzifier.rightmostMaximum(set.px, set.py, set.np);
             case MOM -> Defuzzifier.meanOfMaximum(set.px, set.py, set.np);
+            // BlockCompiler refuses COGSS (like CoGS) on an output with point terms, so no point set reaches here
+            case COGSS -> throw new AssertionError("COGSS on a point set: BlockCompiler admits it only on singletons");
             default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
         };
     }

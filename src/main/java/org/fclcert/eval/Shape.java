@@ -18,6 +18,24 @@ final class Shape {
     /** The sorted points of a constant shape (shared, never written after construction). */
     final double[] sortedX;
     final double[] sortedY;
+    /** A smooth named shape (dialects): its kind and parameters; null for points and singletons. */
+    final org.fclcert.model.ShapeKind kind;
+    final double[] params;
+
+    /** A smooth named shape: degrees from its formula (no points). */
+    Shape(org.fclcert.model.ShapeKind kind, double[] params) {
+        this.singleton = false;
+        this.n = 0;
+        this.xConst = new double[0];
+        this.xSlot = new int[0];
+        this.yConst = new double[0];
+        this.ySlot = new int[0];
+        this.constant = true;
+        this.sortedX = new double[0];
+        this.sortedY = new double[0];
+        this.kind = kind;
+        this.params = params.clone();
+    }
 
     Shape(boolean singleton, double[] xConst, int[] xSlot, double[] yConst, int[] ySlot) {
         this.singleton = singleton;
@@ -26,6 +44,8 @@ final class Shape {
         this.xSlot = xSlot;
         this.yConst = yConst;
         this.ySlot = ySlot;
+        this.kind = null;
+        this.params = null;
         boolean c = true;
         for (int i = 0; i < n; i++) {
             c &= xSlot[i] < 0 && ySlot[i] < 0;

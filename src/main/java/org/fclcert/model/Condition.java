@@ -12,9 +12,26 @@ import java.util.List;
 public sealed interface Condition {
     SourceLocation location();
 
-    /** {@code variable IS term} or {@code variable IS NOT term}. */
-    record TermSubcondition(String variable, String term, boolean negated, SourceLocation location)
+    /**
+     * {@code variable IS term} or {@code variable IS NOT term}; in the fuzzylite dialect with hedges
+     * written before the term (outermost first; NOT, when it is the standard's IS NOT, is {@code negated},
+     * applied after the hedges). {@code x is any} (hedge ANY alone) names no term: {@code term} is empty.
+     */
+    record TermSubcondition(String variable, String term, boolean negated, List<Hedge> hedges, SourceLocation location)
             implements Condition {
+        public TermSubcondition {
+            hedges = List.copyOf(hedges);
+        }
+
+        /** A standard subcondition, without hedges. */
+        public TermSubcondition(String variable, String term, boolean negated, SourceLocation location) {
+            this(variable, term, negated, List.of(), location);
+        }
+
+        /** True for {@code x is any}: no term, degree 1. */
+        public boolean any() {
+            return hedges.contains(Hedge.ANY);
+        }
     }
 
     /** A bare input variable whose value is used as a degree of membership (5.2.4, Table 9). */

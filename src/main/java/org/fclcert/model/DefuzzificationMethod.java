@@ -14,7 +14,9 @@ public enum DefuzzificationMethod {
     LM("LM", true),
     RM("RM", true),
     /** Mean of maximum (FFLL's MoM, jFuzzyLogic's and fuzzylite's MM): Open Level, O-MOM. */
-    MOM("MoM", false);
+    MOM("MoM", false),
+    /** Weighted sum of singletons, Σ u·μ without the division (fuzzylite's COGSS): Open Level, O-COGSS. */
+    COGSS("COGSS", false);
 
     private final String keyword;
     private final boolean standard;

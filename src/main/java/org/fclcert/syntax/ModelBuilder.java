@@ -345,7 +345,8 @@ final class ModelBuilder {
         WordContext word = ctx.getRuleContext(WordContext.class, 0);
         String text = word.getText().toUpperCase(Locale.ROOT);
         for (E value : type.getEnumConstants()) {
-            if (value.name().equals(text)) {
+            boolean nonStandard = value instanceof AccumulationMethod a && !a.standard();   // PROBOR, SUM: dialect readers only
+            if (value.name().equals(text) && !nonStandard) {
                 return Optional.of(new Located<>(value, at(ctx.start)));
             }
         }

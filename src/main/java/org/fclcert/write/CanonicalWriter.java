@@ -34,6 +34,10 @@ import org.fclcert.model.VariableRef;
  * items in the 5.4 order (RANGE, terms, METHOD, DEFAULT), RANGE in the 5.4 form {@code RANGE (a .. b);}
  * (the prose form {@code RANGE := (...)} draws a reader warning); a rule's second and later
  * subconclusions on their own lines. OPTIONS content is written verbatim. Numbers are spelled by {@link LiteralText}.
+ *
+ * <p>Dialect models: a linear named shape (triangle, trapezoid, rectangle, ramp) is written as its exact
+ * points; a smooth named shape or a hedge has no standard spelling and is refused with
+ * IllegalArgumentException (convert the program first, see {@link ShapePoints}).
  */
 public final class CanonicalWriter {
     static final String INDENT = "    ";
@@ -114,6 +118,12 @@ public final class CanonicalWriter {
     private static String membershipFunction(MembershipFunction f) {
         if (f instanceof Singleton s) {
             return operand(s.value());
+        }
+        if (f instanceof MembershipFunction.NamedShape named) {
+            // a linear shape is exactly its points; a smooth one has no standard spelling (ShapePoints.approximate)
+            return String.join(" ", ShapePoints.exact(named).orElseThrow(() -> new IllegalArgumentException(
+                    "a " + named.kind() + " shape is not expressible in standard FCL; convert it first"
+                            + " (ShapePoints.approximate)")).stream().map(CanonicalWriter::point).toList());
         }
         List<String> points = ((Points) f).points().stream().map(CanonicalWriter::point).toList();
         return String.join(" ", points);

@@ -43,6 +43,10 @@ final class ConditionText {
     /** Writes a leaf directly; pushes the parts of a compound node, last part first. */
     private static void expand(Condition c, StringBuilder out, Deque<Object> work) {
         if (c instanceof TermSubcondition t) {
+            if (!t.hedges().isEmpty()) {
+                throw new IllegalArgumentException("the hedges " + t.hedges() + " on '" + t.variable()
+                        + "' are not expressible in standard FCL; convert the program first");
+            }
             out.append(t.variable()).append(t.negated() ? " IS NOT " : " IS ").append(t.term());
         } else if (c instanceof VariableSubcondition v) {
             out.append(v.variable());

@@ -20,6 +20,20 @@ final class DialectSyntaxText {
             case O_FFLL_NO_METHOD -> "written as METHOD : CoG";
             case O_DECLARATION_WITHOUT_COLON -> "written with ':'";
             case O_VAR_RETAIN -> "left out (it has no effect on evaluation)";
+            case O_SHAPE_SINGLETONS -> "written as a singleton";
+            case O_SHAPE_DISCRETE -> "written as its points";
+            case O_METHOD_MM -> "the spelling MM is MoM (whose conversion is judged at METHOD)";
+            case O_METHOD_COGF -> "written as CoG (what the reader takes COGF for)";
+            case O_COMMENT_STYLE -> "left out (a comment carries no meaning)";
+            case O_INPUT_RANGE -> "left out (an input's RANGE has no effect on evaluation; the standard has none)";
+            case O_INFINITE_RANGE -> "left out (a RANGE with an infinite end is read as no RANGE)";
+            case O_ACCU_IN_DEFUZZIFY -> "written as the ACCU of the rule blocks concluding the output";
+            case O_IMPLICIT_SETTING -> "the setting the library supplies is written out";
+            case O_ENABLED -> "left out (ENABLED : TRUE has no effect)";
+            case O_LOCK_PREVIOUS -> "written as DEFAULT NC (how fclcert reads it; see FCL-W305)";
+            case O_LOCK_RANGE -> "left out (fclcert's CoG, CoA, LM, RM and MoM on point and shape terms stay in the RANGE)";
+            case O_RULE_WITHOUT_SEMICOLON -> "written with ';'";
+            case O_CONCLUSION_AND -> "written with ',' between the subconclusions";
             default -> "written in standard syntax";
         };
     }

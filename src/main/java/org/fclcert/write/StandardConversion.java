@@ -4,14 +4,25 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Optional;
+import java.util.Locale;
+import java.util.Set;
+import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.Condition;
+import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Feature;
 import org.fclcert.model.FeatureUse;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Hedge;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Point;
 import org.fclcert.model.Program;
+import org.fclcert.model.Range;
+import org.fclcert.model.Rule;
+import org.fclcert.model.RuleBlock;
 import org.fclcert.model.SourceLocation;
 import org.fclcert.model.Term;
 
@@ -22,12 +33,16 @@ import org.fclcert.model.Term;
  *
  * <p>The conversion is a list of {@link ConstructConversion}s ({@link #CONVERSIONS}), one per kind of
  * construct, applied in order; each rewrites what it knows and reports a {@link Finding} per construct. To
- * teach the converter a new construct (a named shape, a hedge), add a conversion to that list, or a case to
- * {@link #convertTerm} for a new kind of membership function.
+ * teach the converter a new construct, add a conversion to that list, or a case to {@link #convertTerm} for a
+ * new kind of membership function. docs/dialects.md, "Conversion to standard FCL", lists what converts how.
  */
 public final class StandardConversion {
 
-    /** How to convert: {@code approximatePoints} is the number of points for curves (0: do not approximate). */
+    /**
+     * How to convert: {@code approximatePoints} is the number of equally spaced points a curved membership
+     * function (Gaussian, bell, ...) is approximated by, over its variable's RANGE (0: do not approximate;
+     * curves are then not expressible).
+     */
     public record Options(int approximatePoints) {
         public static final Options DEFAULT = new Options(0);
     }
@@ -61,6 +76,14 @@ public final class StandardConversion {
         public boolean exact() {
             return findings.stream().allMatch(f -> f.kind() instanceof Kind.Exact);
         }
+
+        /**
+         * True when every construct converted exactly or approximately (with its largest error stated), none
+         * is not expressible: what {@code fclcert convert} writes without {@code --allow-lossy}.
+         */
+        public boolean expressible() {
+            return findings.stream().noneMatch(f -> f.kind() instanceof Kind.NotExpressible);
+        }
     }
 
     /** One kind of construct: rewrites it to standard FCL in the program, adding a finding per use. */
@@ -72,7 +95,13 @@ public final class StandardConversion {
     static final List<ConstructConversion> CONVERSIONS = List.of(
             StandardConversion::dialectSyntax,
             StandardConversion::terms,
-            StandardConversion::methods);
+            StandardConversion::hedges,
+            StandardConversion::accumulations,
+            StandardConversion::methods,
+            StandardConversion::defaults);
+
+    /** Reader-recorded constructs another conversion judges (their finding comes from there). */
+    private static final Set<Feature> JUDGED_ELSEWHERE = Set.of(Feature.O_DEFAULT_NAN);
 
     public Result convert(Program program) {
         return convert(program, Options.DEFAULT);
@@ -96,6 +125,9 @@ public final class StandardConversion {
      */
     private static Program dialectSyntax(Program program, Options options, List<Finding> findings) {
         for (FeatureUse u : program.dialectFeatures()) {
+            if (JUDGED_ELSEWHERE.contains(u.feature())) {
+                continue;
+            }
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
                     DialectSyntaxText.standardForm(u.feature())));
         }
@@ -108,13 +140,14 @@ public final class StandardConversion {
         for (FunctionBlock fb : program.functionBlocks()) {
             List<Fuzzification> fuzzifications = new ArrayList<>();
             for (Fuzzification f : fb.fuzzifications()) {
-                fuzzifications.add(new Fuzzification(f.variable(), convertTerms(f.terms(), options, findings),
-                        f.location()));
+                fuzzifications.add(new Fuzzification(f.variable(), convertTerms(f.terms(), f.declaredRange(),
+                        "input " + f.variable(), options, findings), f.location()));
             }
             List<Defuzzification> defuzzifications = new ArrayList<>();
             for (Defuzzification d : fb.defuzzifications()) {
                 defuzzifications.add(new Defuzzification(d.variable(), d.range(),
-                        convertTerms(d.terms(), options, findings), d.method(), d.defaultValue(), d.location()));
+                        convertTerms(d.terms(), d.range(), "output " + d.variable(), options, findings), d.method(),
+                        d.defaultValue(), d.location()));
             }
             blocks.add(new FunctionBlock(fb.name(), fb.variables(), fuzzifications, defuzzifications,
                     fb.ruleBlocks(), fb.options(), fb.location()));
@@ -122,35 +155,224 @@ public final class StandardConversion {
         return new Program(program.sourceName(), blocks, program.dialectFeatures());
     }
 
-    private static List<Term> convertTerms(List<Term> terms, Options options, List<Finding> findings) {
+    private static List<Term> convertTerms(List<Term> terms, Optional<Range> range, String owner, Options options,
+            List<Finding> findings) {
         List<Term> out = new ArrayList<>(terms.size());
         for (Term t : terms) {
-            out.add(convertTerm(t, options, findings));
+            out.add(convertTerm(t, range, owner, options, findings));
         }
         return out;
     }
 
     /**
-     * One term. Points and singletons are standard already. EXTENSION POINT for named shapes: a new kind of
-     * {@link MembershipFunction} gets a branch here returning exact points (triangle, trapezoid, rectangle,
-     * ramp: no finding needed beyond Exact) or, with {@code options.approximatePoints() > 0}, a polyline with
-     * a {@link Kind.Approximated} finding carrying the largest membership error; without points, a
-     * {@link Kind.NotExpressible} finding.
+     * One term. Points and singletons are standard already. A named shape: triangle, trapezoid, rectangle and
+     * ramp are their exact points ({@link ShapePoints#exact}, finding Exact); a curve, with
+     * {@code options.approximatePoints() > 0} and a finite interval (the output's RANGE; an input's RANGE as
+     * the dialect wrote it in FUZZIFY), becomes the polyline of {@link ShapePoints#approximate} over it with
+     * an {@link Kind.Approximated} finding carrying the proven largest membership error on that interval;
+     * otherwise it is not expressible (and kept, so only {@code --allow-lossy} writes the program, with the
+     * curve replaced by the points of its value at the interval's ends or at its special points).
      */
-    static Term convertTerm(Term t, Options options, List<Finding> findings) {
+    static Term convertTerm(Term t, Optional<Range> range, String owner, Options options, List<Finding> findings) {
         MembershipFunction f = t.function();
         if (f instanceof MembershipFunction.Points || f instanceof MembershipFunction.Singleton) {
             return t;
+        }
+        if (f instanceof MembershipFunction.NamedShape shape) {
+            String id = shape.kind().featureId();
+            Optional<List<Point>> exact = ShapePoints.exact(shape);
+            if (exact.isPresent()) {
+                findings.add(new Finding(id, t.location(), new Kind.Exact(), "term '" + t.name() + "' of " + owner
+                        + " written as its points " + pointsText(exact.get())));
+                return new Term(t.name(), new MembershipFunction.Points(exact.get()), t.location());
+            }
+            Optional<double[]> interval = range.map(r -> new double[] {r.min().value(), r.max().value()})
+                    .filter(i -> Double.isFinite(i[0]) && Double.isFinite(i[1]) && i[0] < i[1]);
+            int n = options.approximatePoints() > 0 ? options.approximatePoints() : 64;
+            double[] over = interval.orElse(null);
+            ShapePoints.Approximation a = over == null ? null : ShapePoints.approximate(shape, over[0], over[1], n);
+            if (options.approximatePoints() > 0 && a != null && Double.isFinite(a.maxError())) {
+                findings.add(new Finding(id, t.location(), new Kind.Approximated(a.maxError()), "term '" + t.name()
+                        + "' of " + owner + " written as " + a.points().size() + " points over [" + num(over[0])
+                        + ", " + num(over[1]) + "] (outside it the points continue flat)"));
+                return new Term(t.name(), new MembershipFunction.Points(a.points()), t.location());
+            }
+            String why = options.approximatePoints() == 0
+                    ? "standard FCL has only points and singletons; --approximate-points N approximates it"
+                    : over == null ? owner + " has no finite RANGE to approximate over"
+                            + (owner.startsWith("input") ? " (write RANGE := (lo .. hi); in its FUZZIFY block)" : "")
+                    : "its slope is unbounded, so no error bound holds for points";
+            if (a == null) {
+                a = ShapePoints.approximate(shape, fallbackLo(shape), fallbackHi(shape), 2);
+            }
+            findings.add(new Finding(id, t.location(), new Kind.NotExpressible("points approximating it"),
+                    "term '" + t.name() + "' of " + owner + " is a " + shape.kind().name().toLowerCase(Locale.ROOT).replace('_', ' ') + " curve: " + why));
+            return new Term(t.name(), new MembershipFunction.Points(a.points()), t.location());
         }
         findings.add(new Finding("term '" + t.name() + "'", t.location(), new Kind.NotExpressible("kept as read"),
                 "term '" + t.name() + "': no conversion to points is known for its membership function"));
         return t;
     }
 
+    /** An interval for a lossy stand-in when the variable has none: around the shape's special points. */
+    private static double fallbackLo(MembershipFunction.NamedShape shape) {
+        double[] sp = shape.kind().specialPoints(shape.values());
+        double lo = java.util.Arrays.stream(sp).min().orElse(0);
+        double hi = java.util.Arrays.stream(sp).max().orElse(1);
+        return lo - Math.max(1, hi - lo);
+    }
+
+    private static double fallbackHi(MembershipFunction.NamedShape shape) {
+        double[] sp = shape.kind().specialPoints(shape.values());
+        double lo = java.util.Arrays.stream(sp).min().orElse(0);
+        double hi = java.util.Arrays.stream(sp).max().orElse(1);
+        return hi + Math.max(1, hi - lo);
+    }
+
+    private static String pointsText(List<Point> points) {
+        StringBuilder b = new StringBuilder();
+        for (Point p : points) {
+            b.append(b.length() == 0 ? "" : " ").append('(').append(num(p.x())).append(", ").append(num(p.degree()))
+                    .append(')');
+        }
+        return b.toString();
+    }
+
+    private static String num(org.fclcert.model.Operand o) {
+        return o instanceof org.fclcert.model.Literal l ? num(l.value()) : o.toString();
+    }
+
+    static String num(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    // ---------------------------------------------------------------- hedges
+
+    /**
+     * Hedges (fuzzylite). {@code x is any} has degree 1, the unit of every AND algorithm (MIN, PROD, BDIF):
+     * dropped from an AND chain it converts exactly. Anywhere else, and every other hedge ({@code very},
+     * {@code somewhat}, {@code extremely}, {@code seldom}, a {@code not} after another hedge) has no standard
+     * form: not expressible; the converted program leaves the hedge out ({@code any}: the subcondition; a
+     * rule left with no condition: the rule). A leading {@code not} is the standard's IS NOT already.
+     */
+    private static Program hedges(Program program, Options options, List<Finding> findings) {
+        List<FunctionBlock> blocks = new ArrayList<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<RuleBlock> ruleBlocks = new ArrayList<>();
+            for (RuleBlock rb : fb.ruleBlocks()) {
+                List<Rule> rules = new ArrayList<>();
+                for (Rule r : rb.rules()) {
+                    Optional<Condition> c = withoutHedges(r.condition(), false, findings);
+                    if (c.isPresent()) {
+                        rules.add(new Rule(r.name(), c.get(), r.conclusion(), r.location()));
+                    } else {
+                        findings.add(new Finding("RULE " + r.name(), r.location(), new Kind.NotExpressible("left out"),
+                                "rule " + r.name() + " has no condition left in standard FCL (it is always 1 or"
+                                        + " made only of hedged 'any'); the converted program leaves it out"));
+                    }
+                }
+                ruleBlocks.add(new RuleBlock(rb.name(), rb.and(), rb.or(), rb.activation(), rb.accumulation(), rules,
+                        rb.location()));
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(),
+                    ruleBlocks, fb.options(), fb.location()));
+        }
+        return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    /** The condition without hedges; empty when nothing is left (the condition was 'any'). */
+    private static Optional<Condition> withoutHedges(Condition c, boolean inAnd, List<Finding> findings) {
+        if (c instanceof Condition.TermSubcondition t) {
+            if (t.hedges().isEmpty()) {
+                return Optional.of(t);
+            }
+            String subcondition = "'" + t.variable() + " is " + hedgeWords(t) + (t.any() ? "" : " " + t.term()) + "'";
+            if (t.hedges().equals(List.of(Hedge.ANY)) && !t.negated() && inAnd) {
+                findings.add(new Finding(Hedge.ANY.featureId(), t.location(), new Kind.Exact(), subcondition
+                        + " (degree 1, the unit of AND) left out of its AND chain"));
+                return Optional.empty();
+            }
+            for (Hedge h : t.hedges()) {
+                findings.add(new Finding(h.featureId(), t.location(), new Kind.NotExpressible(t.any()
+                        ? "the subcondition left out" : "the term without the hedge"), "hedge '" + h.word() + "' in "
+                        + subcondition + " has no standard form; the converted program "
+                        + (t.any() ? "leaves the subcondition out" : "writes '" + t.variable() + " IS "
+                                + (t.negated() ? "NOT " : "") + t.term() + "'")));
+            }
+            return t.any() ? Optional.empty()
+                    : Optional.of(new Condition.TermSubcondition(t.variable(), t.term(), t.negated(), t.location()));
+        }
+        if (c instanceof Condition.And a) {
+            return chain(a.operands(), true, findings).map(ops -> ops.size() == 1 ? ops.get(0)
+                    : new Condition.And(ops, a.location()));
+        }
+        if (c instanceof Condition.Or o) {
+            return chain(o.operands(), false, findings).map(ops -> ops.size() == 1 ? ops.get(0)
+                    : new Condition.Or(ops, o.location()));
+        }
+        if (c instanceof Condition.Parenthesized p) {
+            return withoutHedges(p.inner(), inAnd, findings).map(inner -> inner instanceof Condition.And
+                    || inner instanceof Condition.Or ? new Condition.Parenthesized(inner, p.location()) : inner);
+        }
+        if (c instanceof Condition.Not n) {
+            return withoutHedges(n.operand(), false, findings).map(x -> new Condition.Not(x, n.location()));
+        }
+        return Optional.of(c);
+    }
+
+    private static Optional<List<Condition>> chain(List<Condition> operands, boolean and, List<Finding> findings) {
+        List<Condition> out = new ArrayList<>();
+        for (Condition op : operands) {
+            withoutHedges(op, and, findings).ifPresent(out::add);
+        }
+        return out.isEmpty() ? Optional.empty() : Optional.of(out);
+    }
+
+    private static String hedgeWords(Condition.TermSubcondition t) {
+        StringBuilder b = new StringBuilder(t.negated() ? "not" : "");
+        for (Hedge h : t.hedges()) {
+            b.append(b.length() == 0 ? "" : " ").append(h.word());
+        }
+        return b.toString();
+    }
+
+    // ---------------------------------------------------------------- accumulation
+
+    /**
+     * ACCU PROBOR and SUM (Open Level): no method of Table 5 computes them. Not expressible; the converted
+     * program uses MAX for PROBOR and BSUM for SUM (each equal to it where at most one contribution is
+     * non-zero, and BSUM where the sum stays at most 1).
+     */
+    private static Program accumulations(Program program, Options options, List<Finding> findings) {
+        List<FunctionBlock> blocks = new ArrayList<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<RuleBlock> ruleBlocks = new ArrayList<>();
+            for (RuleBlock rb : fb.ruleBlocks()) {
+                Optional<Located<AccumulationMethod>> accu = rb.accumulation();
+                if (accu.isPresent() && !accu.get().value().standard()) {
+                    AccumulationMethod m = accu.get().value();
+                    AccumulationMethod replacement = m == AccumulationMethod.SUM ? AccumulationMethod.BSUM
+                            : AccumulationMethod.MAX;
+                    String id = m == AccumulationMethod.SUM ? Feature.O_ACCU_SUM.id() : Feature.O_ACCU_PROBOR.id();
+                    findings.add(new Finding(id, accu.get().location(), new Kind.NotExpressible("ACCU : "
+                            + replacement), "ACCU " + m + " of rule block " + rb.name() + " has no equivalent among"
+                            + " the methods of Table 5; the converted program uses " + replacement
+                            + ", which gives other values where contributions overlap"));
+                    accu = Optional.of(new Located<>(replacement, accu.get().location()));
+                }
+                ruleBlocks.add(new RuleBlock(rb.name(), rb.and(), rb.or(), rb.activation(), accu, rb.rules(),
+                        rb.location()));
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(),
+                    ruleBlocks, fb.options(), fb.location()));
+        }
+        return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
     /**
      * Defuzzification methods outside Table 1. MoM has no standard equivalent (CoG, CoA, LM and RM all
-     * give other values on a plateau): not expressible; the converted program uses CoG, the method FFLL
-     * itself falls back to.
+     * give other values on a plateau), nor has COGSS (Σ u·μ without the division): not expressible; the
+     * converted program uses CoG (CoGS on singletons), the method FFLL itself falls back to.
      */
     private static Program methods(Program program, Options options, List<Finding> findings) {
         List<FunctionBlock> blocks = new ArrayList<>();
@@ -162,15 +384,44 @@ public final class StandardConversion {
                     DefuzzificationMethod replacement = d.terms().stream()
                             .allMatch(t -> t.function() instanceof MembershipFunction.Singleton)
                             ? DefuzzificationMethod.COGS : DefuzzificationMethod.COG;
-                    findings.add(new Finding("METHOD " + method.get().value().keyword(), method.get().location(),
+                    DefuzzificationMethod m = method.get().value();
+                    String what = m == DefuzzificationMethod.COGSS ? "O-COGSS, the weighted sum of singletons"
+                            : "O-MOM, mean of maximum";
+                    findings.add(new Finding("METHOD " + m.keyword(), method.get().location(),
                             new Kind.NotExpressible("METHOD : " + replacement.keyword()),
-                            "METHOD " + method.get().value().keyword() + " of " + d.variable() + " (O-MOM, mean of"
-                                    + " maximum) has no equivalent among the methods of Table 1; the converted"
-                                    + " program uses " + replacement.keyword() + ", which gives other values"));
+                            "METHOD " + m.keyword() + " of " + d.variable() + " (" + what + ") has no equivalent"
+                                    + " among the methods of Table 1; the converted program uses "
+                                    + replacement.keyword() + ", which gives other values"));
                     method = Optional.of(new Located<>(replacement, method.get().location()));
                 }
                 defuzzifications.add(new Defuzzification(d.variable(), d.range(), d.terms(), method,
                         d.defaultValue(), d.location()));
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), defuzzifications,
+                    fb.ruleBlocks(), fb.options(), fb.location()));
+        }
+        return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    /**
+     * {@code DEFAULT := nan} (fuzzylite, O-DEFAULT-NAN): the standard's DEFAULT is a number (or NC). Not
+     * expressible; the converted program uses {@code DEFAULT := 0}.
+     */
+    private static Program defaults(Program program, Options options, List<Finding> findings) {
+        List<FunctionBlock> blocks = new ArrayList<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<Defuzzification> defuzzifications = new ArrayList<>();
+            for (Defuzzification d : fb.defuzzifications()) {
+                Optional<DefaultValue> def = d.defaultValue();
+                if (def.isPresent() && def.get() instanceof DefaultValue.Constant c && Double.isNaN(c.value().value())) {
+                    findings.add(new Finding(Feature.O_DEFAULT_NAN.id(), c.location(),
+                            new Kind.NotExpressible("DEFAULT := 0"), "DEFAULT := nan of " + d.variable()
+                                    + ": a standard DEFAULT is a number or NC; the converted program uses 0"));
+                    def = Optional.of(new DefaultValue.Constant(new org.fclcert.model.Literal(0, true,
+                            c.value().location()), c.location()));
+                }
+                defuzzifications.add(new Defuzzification(d.variable(), d.range(), d.terms(), d.method(), def,
+                        d.location()));
             }
             blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), defuzzifications,
                     fb.ruleBlocks(), fb.options(), fb.location()));

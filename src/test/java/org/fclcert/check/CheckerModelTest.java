@@ -34,6 +34,8 @@ class CheckerModelTest {
         for (int i = 1; i <= 4; i++) {
             expected.add(String.format("FCL-W%03d", i));
         }
+        expected.add("FCL-C040");   // named shapes (dialect readers): parameter count
+        expected.add("FCL-C041");   // named shapes: parameter order and signs
         assertEquals(expected, codes);
     }
 

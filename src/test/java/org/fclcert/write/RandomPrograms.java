@@ -94,7 +94,7 @@ final class RandomPrograms {
     private RuleBlock ruleBlock() {
         return new RuleBlock(name("rb"), optional(0.7, () -> pick(AndAlgorithm.values())),
                 optional(0.4, () -> pick(OrAlgorithm.values())), optional(0.4, () -> pick(ActivationMethod.values())),
-                optional(0.8, () -> pick(AccumulationMethod.values())), list(0, 5, this::rule), AT);
+                optional(0.8, () -> pick(Arrays.stream(AccumulationMethod.values()).filter(AccumulationMethod::standard).toArray(AccumulationMethod[]::new))), list(0, 5, this::rule), AT);
     }
 
     private Rule rule() {

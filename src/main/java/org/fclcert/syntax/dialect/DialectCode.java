@@ -3,10 +3,10 @@ package org.fclcert.syntax.dialect;
 import org.fclcert.model.Severity;
 
 /**
- * The stable diagnostic codes of the dialect readers, {@code FCL-Dnnn}: FFLL owns D101-D199 (the jFuzzyLogic and
- * fuzzylite readers take D2nn and D3nn). Errors are FFLL programs fclcert cannot give a meaning to; warnings
- * mark places where FFLL itself gives the program another meaning than fclcert's (standard) reading, or where
- * FFLL would not load the program. docs/diagnostics.md lists the same table; a test keeps the two in step.
+ * The stable diagnostic codes of the dialect readers, in one place: FFLL's {@code FCL-D101..D199}, and the
+ * jFuzzyLogic and fuzzylite readers' {@code FCL-S301..S399} (errors) and {@code FCL-W301..W399} (warnings).
+ * Errors are texts fclcert cannot give a meaning to in the dialect; warnings mark places where the library
+ * itself gives the program another meaning than fclcert's (standard) reading, or would not load it. docs/diagnostics.md lists the same table; a test keeps the two in step.
  */
 public enum DialectCode {
     FFLL_NO_INPUT_IN_POSITION("FCL-D101", Severity.ERROR,
@@ -34,7 +34,46 @@ public enum DialectCode {
     FFLL_POINT_COUNT("FCL-D119", Severity.WARNING,
             "a term of a number of points FFLL does not load (it takes 1, 3, 4 or 7)"),
     FFLL_RANGES_DISAGREE("FCL-D120", Severity.WARNING,
-            "an output whose RANGE and RANGE comment disagree; fclcert uses the RANGE");
+            "an output whose RANGE and RANGE comment disagree; fclcert uses the RANGE"),
+
+    // the jFuzzyLogic and fuzzylite readers (one shared reader, LibraryDialectParser): FCL-S3nn errors, FCL-W3nn
+    // warnings where the library gives the program another meaning than fclcert reads
+    UNEXPECTED_CHARACTER("FCL-S301", Severity.ERROR,
+            "a character the dialect does not accept"),
+    UNTERMINATED_COMMENT("FCL-S302", Severity.ERROR,
+            "a comment never closed"),
+    COMMENT_STYLE("FCL-S303", Severity.ERROR,
+            "a comment style the dialect rejects (e.g. '(* *)' in fuzzylite)"),
+    BAD_NUMBER("FCL-S304", Severity.ERROR,
+            "a malformed number, or inf / nan where the dialect takes none"),
+    SYNTAX("FCL-S305", Severity.ERROR,
+            "text that does not fit the dialect's grammar (what was expected is named)"),
+    NOT_IN_DIALECT("FCL-S306", Severity.ERROR,
+            "a construct the library itself rejects or silently drops (VAR, initial values, upper-case rule keywords in fuzzylite, ...)"),
+    UNKNOWN_SHAPE("FCL-S307", Severity.ERROR,
+            "a membership-function name the dialect does not define"),
+    UNSUPPORTED("FCL-S308", Severity.ERROR,
+            "a construct of the library fclcert does not evaluate (ENABLED : FALSE, other norms, hedges in conclusions, ...)"),
+    ACCUMULATION_CONFLICT("FCL-S309", Severity.ERROR,
+            "outputs concluded by one rule block with different ACCU in their DEFUZZIFY blocks (fuzzylite)"),
+    STATEMENT_SPANS_LINES("FCL-S310", Severity.ERROR,
+            "a rule or term continued on another line; fuzzylite reads one statement per line"),
+    TOO_MANY_ERRORS("FCL-S399", Severity.ERROR,
+            "more errors than the reader reports, or an internal error of the reader"),
+    COUPLED_AND_OR("FCL-W301", Severity.WARNING,
+            "jFuzzyLogic couples AND and OR: the later declaration replaces the other by its pair"),
+    AND_OR_PRIORITY("FCL-W302", Severity.WARNING,
+            "jFuzzyLogic gives AND and OR one priority, left to right; fclcert binds AND tighter (Table 6)"),
+    NAMES_DIFFER_IN_CASE("FCL-W303", Severity.WARNING,
+            "two spellings of one name that differ only in case: one name in FCL, two in jFuzzyLogic"),
+    SUPPLIED_SETTING("FCL-W304", Severity.WARNING,
+            "a setting left out that the library supplies (jFuzzyLogic: ACCU SUM, METHOD CoG, DEFAULT NC)"),
+    LOCK_PREVIOUS("FCL-W305", Severity.WARNING,
+            "LOCK : PREVIOUS read as DEFAULT NC: before the first result fclcert gives the initial value"),
+    COGS_PER_RULE("FCL-W306", Severity.WARNING,
+            "fuzzylite's COGS counts every rule separately; fclcert accumulates per term first (Table 5)"),
+    NSUM_AS_BSUM("FCL-W307", Severity.WARNING,
+            "the library computes NSUM as BSUM; fclcert normalises (Table 5)");
 
     private final String code;
     private final Severity severity;

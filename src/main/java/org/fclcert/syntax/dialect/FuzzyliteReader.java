@@ -1,15 +1,16 @@
 package org.fclcert.syntax.dialect;
 
 import java.util.List;
-import java.util.Optional;
-import org.fclcert.model.Diagnostic;
-import org.fclcert.model.SourceLocation;
 import org.fclcert.syntax.ReadResult;
 
 /**
- * PLACEHOLDER on the dialect-core branch: the fuzzylite reader is written on the dialect-shapes branch and
- * replaces this class (same name, public no-arg constructor) when the branches are merged. Until then every
- * read is one located error saying so, and it claims no giveaways.
+ * Reads the FCL dialect of fuzzylite 6 (../shared/notes/peers.md): {@code //} and {@code #} comments, one
+ * statement per line, lower-case rule keywords ({@code if … is … and … then … with}), rules without
+ * {@code ;}, conclusions joined by {@code and}, ACCU inside DEFUZZIFY, shapes by name
+ * ({@code Triangle a b c}, {@code Gaussian mean sd}, …, {@code Discrete}), {@code RANGE := (-inf .. inf)},
+ * {@code ENABLED}, {@code LOCK}, {@code DEFAULT := nan}, hedges ({@code very}, {@code somewhat},
+ * {@code extremely}, {@code seldom}, {@code any}, {@code not}), ACCU ASUM (probabilistic OR) and SUM,
+ * METHOD MM and COGSS. A construct fuzzylite drops silently (an upper-case {@code IF}) is an error here.
  */
 public final class FuzzyliteReader implements DialectReader {
     @Override
@@ -19,13 +20,11 @@ public final class FuzzyliteReader implements DialectReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
-        return new ReadResult(Optional.empty(), List.of(Diagnostic.error(
-                SourceLocation.of(sourceName == null ? "<input>" : sourceName, 1, 1), "FCL-S999",
-                "the fuzzylite dialect reader is not on this branch")));
+        return LibraryDialectParser.read(sourceName, text, true);
     }
 
     @Override
     public List<Giveaway> giveaways(String text) {
-        return List.of();
+        return Giveaways.find(text, true);
     }
 }

@@ -1,15 +1,16 @@
 package org.fclcert.syntax.dialect;
 
 import java.util.List;
-import java.util.Optional;
-import org.fclcert.model.Diagnostic;
-import org.fclcert.model.SourceLocation;
 import org.fclcert.syntax.ReadResult;
 
 /**
- * PLACEHOLDER on the dialect-core branch: the jFuzzyLogic reader is written on the dialect-shapes branch and
- * replaces this class (same name, public no-arg constructor) when the branches are merged. Until then every
- * read is one located error saying so, and it claims no giveaways.
+ * Reads the FCL dialect of jFuzzyLogic (../shared/notes/peers.md): the standard's grammar plus
+ * {@code //} and {@code /* *\/} comments, RANGE in FUZZIFY, named shapes ({@code trian}, {@code trape},
+ * {@code gauss}, {@code gauss2}, {@code gbell}, {@code sigm}, {@code dsigm}, {@code cosine},
+ * {@code singletons}), ACCU PROBOR and SUM, METHOD COGF and MM, and the settings it supplies when left
+ * out (ACCU SUM, METHOD CoG, DEFAULT NC, each with FCL-W304). Where jFuzzyLogic gives a program another
+ * meaning (coupled AND/OR, one priority for AND and OR, case-sensitive names, NSUM as BSUM) it warns.
+ * docs/dialects.md lists what is read and its Open Level features.
  */
 public final class JFuzzyLogicReader implements DialectReader {
     @Override
@@ -19,13 +20,11 @@ public final class JFuzzyLogicReader implements DialectReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
-        return new ReadResult(Optional.empty(), List.of(Diagnostic.error(
-                SourceLocation.of(sourceName == null ? "<input>" : sourceName, 1, 1), "FCL-S999",
-                "the jfuzzylogic dialect reader is not on this branch")));
+        return LibraryDialectParser.read(sourceName, text, false);
     }
 
     @Override
     public List<Giveaway> giveaways(String text) {
-        return List.of();
+        return Giveaways.find(text, false);
     }
 }

@@ -17,7 +17,7 @@ class DialectCodeDocTest {
     void everyDialectCodeIsDocumented() throws IOException {
         String doc = Files.readString(Path.of("docs/diagnostics.md"));
         Map<String, String> documented = new LinkedHashMap<>();
-        Matcher m = Pattern.compile("\\| (FCL-D\\d{3}) \\| (error|warning) \\| (.*) \\|").matcher(doc);
+        Matcher m = Pattern.compile("\\| (FCL-D\\d{3}|FCL-[SW]3\\d{2}) \\| (error|warning) \\| (.*) \\|").matcher(doc);
         while (m.find()) {
             documented.put(m.group(1), m.group(2) + " " + m.group(3));
         }

@@ -1,0 +1,88 @@
+package org.fclcert.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code fclcert convert}: exit codes, what goes to stdout and stderr, --out, --from, --approximate-points. */
+class ConvertCommandTest {
+    @Test
+    void anExactConversionExitsZeroAndPrintsStandardFcl() {
+        Cli c = Cli.run("convert", "examples/jfuzzylogic/fan.fcl");
+        assertEquals(0, c.exitCode(), c.err());
+        assertTrue(c.out().startsWith("FUNCTION_BLOCK fan\n"), c.out());
+        assertTrue(c.out().contains("    TERM warm := (10, 0) (20, 1) (30, 0);\n"), c.out());
+        assertTrue(c.out().contains("    METHOD : CoG;\n"), c.out());
+        assertTrue(c.err().contains("fclcert: converted from jFuzzyLogic: 10 non-standard constructs, 10 exact,"
+                + " 0 approximated, 0 not expressible"), c.err());
+        assertTrue(c.errLines().get(0).startsWith("fclcert: examples/jfuzzylogic/fan.fcl: read as jFuzzyLogic: "),
+                c.err());
+    }
+
+    @Test
+    void aLossyConversionExitsOneUnlessAllowed() {
+        Cli refused = Cli.run("convert", "--from", "fuzzylite",
+                "src/test/resources/org/fclcert/syntax/dialect/fuzzylite/obstacle.fcl");
+        assertEquals(1, refused.exitCode(), refused.err());
+        assertEquals("", refused.out());
+        assertTrue(refused.err().contains("obstacle.fcl:47:15: error FCL-X001: O-HEDGE-VERY is not expressible"),
+                refused.err());
+        Cli allowed = Cli.run("convert", "--from", "fuzzylite", "--allow-lossy",
+                "src/test/resources/org/fclcert/syntax/dialect/fuzzylite/obstacle.fcl");
+        assertEquals(0, allowed.exitCode(), allowed.err());
+        assertTrue(allowed.err().contains("obstacle.fcl:47:15: warning FCL-X001: O-HEDGE-VERY"), allowed.err());
+        assertTrue(allowed.out().contains("METHOD : CoGS;"), allowed.out());
+    }
+
+    @Test
+    void approximationsAskedForAreWrittenWithTheirBound(@TempDir Path dir) {
+        Cli without = Cli.run("convert", "examples/jfuzzylogic/tipper.fcl");
+        assertEquals(1, without.exitCode(), without.err());
+        Path out = dir.resolve("tipper.fcl");
+        Cli with = Cli.run("convert", "--approximate-points", "21", "--out", out.toString(),
+                "examples/jfuzzylogic/tipper.fcl");
+        assertEquals(0, with.exitCode(), with.err());
+        assertEquals("", with.out());
+        assertTrue(with.err().contains("tipper.fcl:16:5: warning FCL-X002: O-SHAPE-GAUSSIAN: approximated, largest"
+                + " membership error at most "), with.err());
+        assertTrue(with.err().contains("5 approximated, 0 not expressible"), with.err());
+        assertTrue(Cli.read(out).startsWith("FUNCTION_BLOCK tipper\n"));
+        Cli check = Cli.run("check", out.toString());
+        assertEquals(0, check.exitCode(), check.out() + check.err());
+    }
+
+    @Test
+    void badInputGetsLocatedErrorsAndNonZeroExits(@TempDir Path dir) throws Exception {
+        Cli missing = Cli.run("convert", dir.resolve("nope.fcl").toString());
+        assertEquals(2, missing.exitCode());
+        assertTrue(missing.err().startsWith("fclcert: "), missing.err());
+
+        Path broken = Cli.write(dir, "broken.fcl", "FUNCTION_BLOCK b\nFUZZIFY x\n  TERM a := Triangle 0 1;\n"
+                + "END_FUZZIFY\nEND_FUNCTION_BLOCK\n");
+        Cli errors = Cli.run("convert", "--from", "fuzzylite", broken.toString());
+        assertEquals(1, errors.exitCode(), errors.err());
+        assertTrue(errors.err().contains("broken.fcl:"), errors.err());
+        assertTrue(errors.err().contains("has errors; not converted"), errors.err());
+        assertTrue(!errors.err().contains("Exception"), errors.err());
+
+        Cli usage = Cli.run("convert", "--approximate-points", "1", "examples/jfuzzylogic/tipper.fcl");
+        assertEquals(2, usage.exitCode());
+        assertTrue(Files.exists(Path.of("examples/jfuzzylogic/tipper.fcl")));
+    }
+
+    @Test
+    void featuresListsTheOpenLevelConstructsWithTheirLines() {
+        Cli f = Cli.run("features", "--dialect", "fuzzylite", "examples/fuzzylite/parking.fcl");
+        assertEquals(0, f.exitCode(), f.err());
+        assertTrue(f.out().matches("(?s).*\\n  O-SHAPE-RECTANGLE +named shape: rectangle +at 34:3\\n.*"), f.out());
+        assertTrue(f.out().matches("(?s).*\\n  O-HEDGE-ANY +'x is any': degree 1, no term +at 56:36\\n.*"), f.out());
+        Cli j = Cli.run("features", "--dialect", "jfuzzylogic", "examples/jfuzzylogic/fan.fcl");
+        assertTrue(j.out().matches("(?s).*\\n  O-METHOD-COGF +jFuzzyLogic's 'COGF', read as CoG +at 31:14\\n.*"),
+                j.out());
+        assertTrue(j.out().matches("(?s).*\\n  O-INPUT-RANGE .* at 15:5\\n.*"), j.out());
+    }
+}
