@@ -274,32 +274,8 @@ final class SmoothSet {
     private double centreOfArea() {
         double half = area / 2;
         double tol = area * 1e-14;
-        double left = Double.NaN;
-        double cum = 0;
-        for (int p = 0; p < nPanels; p++) {
-            if (Math.abs(cum + panelArea[p] - half) <= tol) {
-                left = panelB[p];
-                break;
-            }
-            if (cum + panelArea[p] > half) {
-                left = solve(panelA[p], panelB[p], half - cum, true);
-                break;
-            }
-            cum += panelArea[p];
-        }
-        double right = Double.NaN;
-        cum = 0;
-        for (int p = nPanels - 1; p >= 0; p--) {
-            if (Math.abs(cum + panelArea[p] - half) <= tol) {
-                right = panelA[p];
-                break;
-            }
-            if (cum + panelArea[p] > half) {
-                right = solve(panelA[p], panelB[p], half - cum, false);
-                break;
-            }
-            cum += panelArea[p];
-        }
+        double left = halfArea(half, tol, true);
+        double right = halfArea(half, tol, false);
         if (Double.isNaN(left)) {
             left = panelB[nPanels - 1];
         }
@@ -307,6 +283,26 @@ final class SmoothSet {
             right = panelA[0];
         }
         return (left + right) / 2;
+    }
+
+    /**
+     * The place where the area accumulated from the left (fromLeft) or from the right reaches half: a
+     * panel end when a panel ends within tol of it, else solved inside the panel that reaches it; NaN when
+     * none does.
+     */
+    private double halfArea(double half, double tol, boolean fromLeft) {
+        double cum = 0;
+        for (int i = 0; i < nPanels; i++) {
+            int p = fromLeft ? i : nPanels - 1 - i;
+            if (Math.abs(cum + panelArea[p] - half) <= tol) {
+                return fromLeft ? panelB[p] : panelA[p];
+            }
+            if (cum + panelArea[p] > half) {
+                return solve(panelA[p], panelB[p], half - cum, fromLeft);
+            }
+            cum += panelArea[p];
+        }
+        return Double.NaN;
     }
 
     /**
