@@ -1,6 +1,5 @@
 package org.fclcert.cli;
 
-import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -142,7 +141,7 @@ final class CertifyCommand implements Callable<Integer> {
         if (selected.isEmpty()) {
             throw new CannotRun("no case of " + corpusName() + " matches the selection");
         }
-        IutOptions options = options(requestTimeout);
+        IutOptions options = IutArguments.options(requestTimeout, classpath);
         try (ImplementationUnderTest impl = open(options)) {
             IutInfo info = hello(impl);
             RunHeader header = RunHeaders.of(info, iut, classpath, corpusName(), loaded.sha256(), all, selected,
@@ -275,15 +274,6 @@ final class CertifyCommand implements Callable<Integer> {
         }
     }
 
-    private IutOptions options(Duration requestTimeout) {
-        IutOptions options = IutOptions.defaults().withTimeout(requestTimeout);
-        if (classpath != null) {
-            options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
-                    .filter(s -> !s.isBlank()).map(Path::of).toList());
-        }
-        return options;
-    }
-
     /** The Table 11 probes on fresh sessions of the implementation, after the cases. */
     private List<DataCheckEntry> dataCheckList(Prober.Options probe, IutOptions options, PrintWriter err) {
         boolean terminal = System.console() != null;
@@ -309,7 +299,7 @@ final class CertifyCommand implements Callable<Integer> {
             return Iuts.open(iut, options);
         } catch (IutException e) {
             throw new CannotRun("cannot start the implementation '" + iut + "': " + e.getMessage()
-                    + tail(e.stderrTail()));
+                    + IutArguments.stderrTail(e));
         }
     }
 
@@ -318,12 +308,8 @@ final class CertifyCommand implements Callable<Integer> {
             return impl.hello();
         } catch (IutException e) {
             throw new CannotRun("the implementation '" + iut + "' did not answer hello: " + e.getMessage()
-                    + tail(e.stderrTail()));
+                    + IutArguments.stderrTail(e));
         }
-    }
-
-    private static String tail(String stderrTail) {
-        return stderrTail == null || stderrTail.isBlank() ? "" : "\n--- its stderr ---\n" + stderrTail.strip();
     }
 
     /** The run cannot be done; the message says why. */

@@ -8,7 +8,6 @@ import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.syntax.StrictReader;
 import org.fclcert.syntax.dialect.Dialect;
-import org.fclcert.syntax.dialect.DialectReaders;
 import org.fclcert.write.CanonicalWriter;
 import org.fclcert.write.StandardConversion;
 import org.fclcert.write.StandardConversion.Finding;
@@ -64,16 +63,13 @@ final class ConvertCommand implements Callable<Integer> {
             return ExitCodes.USAGE;
         }
         try {
-            String text = SourceFiles.read(file);
-            Dialect dialect = from.resolve(file, text, err);
-            Analysis analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
-            DiagnosticPrinter.text(err, analysis.diagnostics());
-            if (analysis.program().isEmpty()) {
-                err.println("fclcert: " + file + " has errors; not converted");
+            CheckedSource source = CheckedSource.read(file, from, "converted", err);
+            if (source.program().isEmpty()) {
                 return ExitCodes.ERRORS;
             }
+            Dialect dialect = source.dialect();
             StandardConversion.Result result = new StandardConversion()
-                    .convert(analysis.program().get(), new StandardConversion.Options(approximatePoints));
+                    .convert(source.program().get(), new StandardConversion.Options(approximatePoints));
             printFindings(err, result.findings(), allowLossy);
             String standard = new CanonicalWriter().write(result.program());
             Analysis back = Analysis.analyze(new StrictReader(), file + " (converted)", standard);

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
-import org.fclcert.check.Analysis;
 import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
@@ -113,13 +112,7 @@ final class EvalCommand implements Callable<Integer> {
 
     /** Reads and checks FILE; diagnostics go to stderr, and a program with errors is not evaluated. */
     private Optional<Program> checkedProgram(PrintWriter err) throws FileProblem {
-        String text = SourceFiles.read(file);
-        Analysis analysis = Analysis.analyze(dialect.reader(file, text, err), file, text);
-        DiagnosticPrinter.text(err, analysis.diagnostics());
-        if (analysis.program().isEmpty()) {
-            err.println("fclcert: " + file + " has errors; not evaluated");
-        }
-        return analysis.program();
+        return CheckedSource.read(file, dialect, "evaluated", err).program();
     }
 
     private FunctionBlock declaration(Program program) {

@@ -2,11 +2,9 @@ package org.fclcert.cli;
 
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
-import org.fclcert.check.Analysis;
 import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.dialect.Dialect;
-import org.fclcert.syntax.dialect.DialectReaders;
 import org.fclcert.write.StandardConversion;
 import org.fclcert.write.CanonicalWriter;
 import picocli.CommandLine.Command;
@@ -45,15 +43,13 @@ final class FmtCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try {
-            String source = SourceFiles.read(file);
-            Dialect read = dialect.resolve(file, source, err);
-            Analysis analysis = Analysis.analyze(DialectReaders.reader(read), file, source);
-            DiagnosticPrinter.text(err, analysis.diagnostics());
-            if (analysis.program().isEmpty()) {
-                err.println("fclcert: " + file + " has errors; not formatted");
+            CheckedSource checked = CheckedSource.read(file, dialect, "formatted", err);
+            if (checked.program().isEmpty()) {
                 return ExitCodes.ERRORS;
             }
-            Program program = analysis.program().get();
+            String source = checked.text();
+            Dialect read = checked.dialect();
+            Program program = checked.program().get();
             if (read != Dialect.STRICT) {
                 StandardConversion.Result converted = new StandardConversion().convert(program);
                 if (!converted.exact()) {

@@ -1,13 +1,11 @@
 package org.fclcert.cli;
 
-import java.io.File;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
@@ -69,20 +67,14 @@ final class ProbeCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE;
         }
-        IutOptions options = IutOptions.defaults().withTimeout(request);
-        if (classpath != null) {
-            options = options.withClasspath(Arrays.stream(classpath.split(File.pathSeparator))
-                    .filter(s -> !s.isBlank()).map(Path::of).toList());
-        }
-        IutOptions opened = options;
+        IutOptions options = IutArguments.options(request, classpath);
         List<DataCheckEntry> entries;
         try {
-            entries = Prober.probe(() -> Iuts.open(iut, opened), new Prober.Options(cap, total, Set.of()),
+            entries = Prober.probe(() -> Iuts.open(iut, options), new Prober.Options(cap, total, Set.of()),
                     (row, index, count) -> progress(err, row.id(), index, count));
         } catch (IutException e) {
             clearProgress(err);
-            err.println("fclcert probe: cannot probe '" + iut + "': " + e.getMessage()
-                    + (e.stderrTail().isBlank() ? "" : "\n--- its stderr ---\n" + e.stderrTail().strip()));
+            err.println("fclcert probe: cannot probe '" + iut + "': " + e.getMessage() + IutArguments.stderrTail(e));
             err.flush();
             return ExitCodes.USAGE;
         }

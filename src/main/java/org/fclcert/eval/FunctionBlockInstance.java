@@ -438,15 +438,7 @@ public final class FunctionBlockInstance {
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
     private double pointSet(OutputPlan o, Trace trace) {
-        set.clear();
-        int[] cs = o.contributions();
-        for (int i = 0; i < cs.length; i++) {
-            double d = contributionDegree[cs[i]];
-            double w = contributionWeight[cs[i]];
-            if (d * w > 0) {
-                set.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
-            }
-        }
+        collect(o, set.act);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
         if (!o.hasRange()) {
@@ -468,23 +460,28 @@ public final class FunctionBlockInstance {
         return defuzzifySet(o.method());
     }
 
-    /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
-    private double smoothSet(OutputPlan o, SmoothSet smooth, Trace trace) {
-        smooth.clear();
+    /** The contributions to o's set that fired (degree · weight > 0), in place of those collected before. */
+    private void collect(OutputPlan o, Activations into) {
+        into.clear();
         int[] cs = o.contributions();
         for (int i = 0; i < cs.length; i++) {
             double d = contributionDegree[cs[i]];
             double w = contributionWeight[cs[i]];
             if (d * w > 0) {
-                smooth.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
+                into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
             }
         }
+    }
+
+    /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
+    private double smoothSet(OutputPlan o, SmoothSet smooth, Trace trace) {
+        collect(o, smooth.act);
         double result = smooth.defuzzify(o.method(), o.accumulation(), o.rangeMin(), o.rangeMax(), plan.shapes,
                 curX, curY);
         if (trace != null) {
             List<Trace.Breakpoint> pts = new ArrayList<>();
             int n = 64;
-            for (int j = 0; j <= n && smooth.contributions() > 0; j++) {
+            for (int j = 0; j <= n && smooth.act.n > 0; j++) {
                 double u = o.rangeMin() + (o.rangeMax() - o.rangeMin()) * j / n;
                 pts.add(new Trace.Breakpoint(u, smooth.degree(u)));
             }

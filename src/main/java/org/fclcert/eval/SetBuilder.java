@@ -12,11 +12,8 @@ import org.fclcert.model.AccumulationMethod;
  * Scratch arrays grow on demand and are reused, so the steady state allocates nothing.
  */
 final class SetBuilder {
-    private int k;
-    private int[] kShape = new int[4];
-    private double[] kLevel = new double[4];
-    private double[] kWeight = new double[4];
-    private boolean[] kProd = new boolean[4];
+    /** The contributions added since the last clear. */
+    final Activations act = new Activations();
 
     private double[] bx = new double[16];
     private int nb;
@@ -32,35 +29,10 @@ final class SetBuilder {
     double[] py = new double[32];
     int np;
 
-    void clear() {
-        k = 0;
-        np = 0;
-    }
-
-    /** Adds the activated set w · ACT(level, μ_shape); callers skip contributions with w · level = 0. */
-    void add(int shape, double level, double weight, boolean prod) {
-        if (k == kShape.length) {
-            int c = 2 * k;
-            kShape = Arrays.copyOf(kShape, c);
-            kLevel = Arrays.copyOf(kLevel, c);
-            kWeight = Arrays.copyOf(kWeight, c);
-            kProd = Arrays.copyOf(kProd, c);
-        }
-        kShape[k] = shape;
-        kLevel[k] = level;
-        kWeight[k] = weight;
-        kProd[k] = prod;
-        k++;
-    }
-
-    int contributions() {
-        return k;
-    }
-
     /** Builds the vertices over [lo, hi]; leaves none when nothing was added or the interval is empty. */
     void build(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
         np = 0;
-        if (k == 0 || !(lo < hi)) {
+        if (act.n == 0 || !(lo < hi)) {
             return;
         }
         breakpoints(lo, hi, cx, cy, shapes);
@@ -85,17 +57,17 @@ final class SetBuilder {
         nb = 0;
         addBreakpoint(lo);
         addBreakpoint(hi);
-        for (int j = 0; j < k; j++) {
-            double[] x = cx[kShape[j]];
-            double[] y = cy[kShape[j]];
-            int n = shapes[kShape[j]].n;
+        for (int j = 0; j < act.n; j++) {
+            double[] x = cx[act.shape[j]];
+            double[] y = cy[act.shape[j]];
+            int n = shapes[act.shape[j]].n;
             for (int i = 0; i < n; i++) {
                 if (x[i] > lo && x[i] < hi) {
                     addBreakpoint(x[i]);
                 }
             }
-            if (!kProd[j]) {
-                clipCrossings(x, y, n, kLevel[j], lo, hi);
+            if (!act.prod[j]) {
+                clipCrossings(x, y, n, act.level[j], lo, hi);
             }
         }
         sort(bx, nb);
@@ -150,16 +122,16 @@ final class SetBuilder {
      * breakpoints are sorted, so one forward walk over each term's points serves them all.
      */
     private void activatedValues(double[][] cx, double[][] cy, Shape[] shapes) {
-        int size = k * nb;
+        int size = act.n * nb;
         if (cl.length < size) {
             cl = new double[2 * size];
             cv = new double[2 * size];
             cr = new double[2 * size];
         }
-        for (int j = 0; j < k; j++) {
-            double[] x = cx[kShape[j]];
-            double[] y = cy[kShape[j]];
-            int n = shapes[kShape[j]].n;
+        for (int j = 0; j < act.n; j++) {
+            double[] x = cx[act.shape[j]];
+            double[] y = cy[act.shape[j]];
+            int n = shapes[act.shape[j]].n;
             int base = j * nb;
             int p = 0;
             for (int i = 0; i < nb; i++) {
@@ -183,18 +155,12 @@ final class SetBuilder {
                 } else {
                     l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                double av = activate(j, v);
+                double av = act.activate(j, v);
                 cv[base + i] = av;
-                cl[base + i] = i == 0 || l == v ? av : activate(j, l);
-                cr[base + i] = i == nb - 1 || r == v ? av : activate(j, r);
+                cl[base + i] = i == 0 || l == v ? av : act.activate(j, l);
+                cr[base + i] = i == nb - 1 || r == v ? av : act.activate(j, r);
             }
         }
-    }
-
-    /** A.15 with Table 4: the weight multiplies the result of activation. */
-    private double activate(int j, double mu) {
-        double level = kLevel[j];
-        return kWeight[j] * (kProd[j] ? level * mu : Math.min(level, mu));
     }
 
     /** MAX keeps the maximum; BSUM and NSUM keep the plain sum here (bounded or normalised later). */
@@ -209,7 +175,7 @@ final class SetBuilder {
             double l = 0;
             double v = 0;
             double r = 0;
-            for (int j = 0; j < k; j++) {
+            for (int j = 0; j < act.n; j++) {
                 int at = j * nb + i;
                 l = max ? Math.max(l, cl[at]) : l + cl[at];
                 v = max ? Math.max(v, cv[at]) : v + cv[at];
@@ -234,14 +200,14 @@ final class SetBuilder {
     }
 
     /**
-     * The corners of the upper envelope of the k activated sets, all linear on (bx[i], bx[i+1]):
+     * The corners of the upper envelope of the activated sets, all linear on (bx[i], bx[i+1]):
      * walk from the left, always switching to the line that overtakes the current one first.
      */
     private void envelope(int i) {
         double a = bx[i];
         double w = bx[i + 1] - a;
         int cur = 0;
-        for (int j = 1; j < k; j++) {
+        for (int j = 1; j < act.n; j++) {
             int at = j * nb;
             int best = cur * nb;
             if (cr[at + i] > cr[best + i] || cr[at + i] == cr[best + i] && cl[at + i + 1] > cl[best + i + 1]) {
@@ -249,13 +215,13 @@ final class SetBuilder {
             }
         }
         double t0 = 0;
-        for (int steps = 0; steps < k; steps++) {
+        for (int steps = 0; steps < act.n; steps++) {
             double fa = cr[cur * nb + i];
             double fb = cl[cur * nb + i + 1];
             double f0 = fa + (fb - fa) * t0;
             double bestT = 1;
             int next = -1;
-            for (int j = 0; j < k; j++) {
+            for (int j = 0; j < act.n; j++) {
                 double ga = cr[j * nb + i];
                 double gb = cl[j * nb + i + 1];
                 double d1 = fb - gb;

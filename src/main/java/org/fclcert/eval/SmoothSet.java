@@ -42,11 +42,8 @@ final class SmoothSet {
     static final double PLATEAU = 1e-4;
     private static final int MAX_DEPTH = 50;
 
-    private int k;
-    private int[] kShape = new int[4];
-    private double[] kLevel = new double[4];
-    private double[] kWeight = new double[4];
-    private boolean[] kProd = new boolean[4];
+    /** The contributions added since the last clear. */
+    final Activations act = new Activations();
 
     private Shape[] shapes;
     private double[][] cx;
@@ -65,37 +62,14 @@ final class SmoothSet {
     private double centre;
     private double tolArea;
 
-    void clear() {
-        k = 0;
-    }
-
-    void add(int shape, double level, double weight, boolean prod) {
-        if (k == kShape.length) {
-            int c = 2 * k;
-            kShape = Arrays.copyOf(kShape, c);
-            kLevel = Arrays.copyOf(kLevel, c);
-            kWeight = Arrays.copyOf(kWeight, c);
-            kProd = Arrays.copyOf(kProd, c);
-        }
-        kShape[k] = shape;
-        kLevel[k] = level;
-        kWeight[k] = weight;
-        kProd[k] = prod;
-        k++;
-    }
-
-    /** Number of contributions added since {@link #clear}. */
-    int contributions() {
-        return k;
-    }
-
     /** The accumulated degree at u (NSUM as SUM, see the class comment). */
     double degree(double u) {
         double acc = 0;
-        for (int j = 0; j < k; j++) {
-            Shape s = shapes[kShape[j]];
-            double mu = s.kind != null ? s.kind.degree(s.params, u) : Pwl.degree(cx[kShape[j]], cy[kShape[j]], s.n, u);
-            double c = kWeight[j] * (kProd[j] ? kLevel[j] * mu : Math.min(kLevel[j], mu));
+        for (int j = 0; j < act.n; j++) {
+            int t = act.shape[j];
+            Shape s = shapes[t];
+            double mu = s.kind != null ? s.kind.degree(s.params, u) : Pwl.degree(cx[t], cy[t], s.n, u);
+            double c = act.activate(j, mu);
             acc = switch (accu) {
                 case MAX -> Math.max(acc, c);
                 case BSUM, NSUM, SUM -> acc + c;
@@ -116,7 +90,7 @@ final class SmoothSet {
         this.cy = curY;
         this.accu = accumulation;
         lastEmpty = true;
-        if (k == 0 || !(lo < hi)) {
+        if (act.n == 0 || !(lo < hi)) {
             return Double.NaN;
         }
         splitPoints(lo, hi);
@@ -154,25 +128,25 @@ final class SmoothSet {
         nSplit = 0;
         addSplit(lo, lo, hi);
         addSplit(hi, lo, hi);
-        for (int j = 0; j < k; j++) {
-            Shape s = shapes[kShape[j]];
+        for (int j = 0; j < act.n; j++) {
+            Shape s = shapes[act.shape[j]];
             if (s.kind != null) {
                 for (double u : s.kind.specialPoints(s.params)) {
                     addSplit(u, lo, hi);
                 }
-                if (!kProd[j]) {
-                    for (double u : s.kind.levelCrossings(s.params, kLevel[j])) {
+                if (!act.prod[j]) {
+                    for (double u : s.kind.levelCrossings(s.params, act.level[j])) {
                         addSplit(u, lo, hi);
                     }
                 }
             } else {
-                double[] x = cx[kShape[j]];
-                double[] y = cy[kShape[j]];
+                double[] x = cx[act.shape[j]];
+                double[] y = cy[act.shape[j]];
                 for (int i = 0; i < s.n; i++) {
                     addSplit(x[i], lo, hi);
                 }
-                if (!kProd[j]) {
-                    double level = kLevel[j];
+                if (!act.prod[j]) {
+                    double level = act.level[j];
                     for (int i = 0; i + 1 < s.n; i++) {
                         if ((y[i] - level) * (y[i + 1] - level) < 0 && x[i + 1] > x[i]) {
                             addSplit(x[i] + (x[i + 1] - x[i]) * (level - y[i]) / (y[i + 1] - y[i]), lo, hi);
@@ -300,32 +274,8 @@ final class SmoothSet {
     private double centreOfArea() {
         double half = area / 2;
         double tol = area * 1e-14;
-        double left = Double.NaN;
-        double cum = 0;
-        for (int p = 0; p < nPanels; p++) {
-            if (Math.abs(cum + panelArea[p] - half) <= tol) {
-                left = panelB[p];
-                break;
-            }
-            if (cum + panelArea[p] > half) {
-                left = solve(panelA[p], panelB[p], half - cum, true);
-                break;
-            }
-            cum += panelArea[p];
-        }
-        double right = Double.NaN;
-        cum = 0;
-        for (int p = nPanels - 1; p >= 0; p--) {
-            if (Math.abs(cum + panelArea[p] - half) <= tol) {
-                right = panelA[p];
-                break;
-            }
-            if (cum + panelArea[p] > half) {
-                right = solve(panelA[p], panelB[p], half - cum, false);
-                break;
-            }
-            cum += panelArea[p];
-        }
+        double left = halfArea(half, tol, true);
+        double right = halfArea(half, tol, false);
         if (Double.isNaN(left)) {
             left = panelB[nPanels - 1];
         }
@@ -333,6 +283,26 @@ final class SmoothSet {
             right = panelA[0];
         }
         return (left + right) / 2;
+    }
+
+    /**
+     * The place where the area accumulated from the left (fromLeft) or from the right reaches half: a
+     * panel end when a panel ends within tol of it, else solved inside the panel that reaches it; NaN when
+     * none does.
+     */
+    private double halfArea(double half, double tol, boolean fromLeft) {
+        double cum = 0;
+        for (int i = 0; i < nPanels; i++) {
+            int p = fromLeft ? i : nPanels - 1 - i;
+            if (Math.abs(cum + panelArea[p] - half) <= tol) {
+                return fromLeft ? panelB[p] : panelA[p];
+            }
+            if (cum + panelArea[p] > half) {
+                return solve(panelA[p], panelB[p], half - cum, fromLeft);
+            }
+            cum += panelArea[p];
+        }
+        return Double.NaN;
     }
 
     /**

@@ -64,6 +64,15 @@ final class Families {
         return List.of("lo := 0", "hi := 1");
     }
 
+    /** Output singletons o1 := 1 … oCount := count: the k-th sampled element selects the value k. */
+    private static List<String> numberedSingletons(int count) {
+        List<String> terms = new ArrayList<>(count);
+        for (int k = 1; k <= count; k++) {
+            terms.add("o" + k + " := " + k);
+        }
+        return terms;
+    }
+
     /** Input variables x1…xn, each with one ramp term; sampled inputs each switch the output on. */
     static ProbeProgram inputs(int n) {
         FclText f = new FclText();
@@ -75,11 +84,7 @@ final class Families {
             f.fuzzify("x" + i, List.of("hi := " + FclText.RAMP));
         }
         int[] s = sample(n);
-        List<String> outTerms = new ArrayList<>();
-        for (int k = 0; k < s.length; k++) {
-            outTerms.add("o" + (k + 1) + " := " + (k + 1));
-        }
-        f.singletons("y", outTerms).ruleBlock("main");
+        f.singletons("y", numberedSingletons(s.length)).ruleBlock("main");
         List<Map<String, Double>> vectors = new ArrayList<>();
         vectors.add(vector());
         String previous = null;
@@ -120,11 +125,7 @@ final class Families {
             f.fuzzify("x" + v, terms);
         }
         int[] s = sample(n);
-        List<String> outTerms = new ArrayList<>();
-        for (int k = 0; k < s.length; k++) {
-            outTerms.add("o" + (k + 1) + " := " + (k + 1));
-        }
-        f.singletons("y", outTerms).ruleBlock("main");
+        f.singletons("y", numberedSingletons(s.length)).ruleBlock("main");
         List<Map<String, Double>> vectors = new ArrayList<>();
         String previous = null;
         for (int k = 0; k < s.length; k++) {

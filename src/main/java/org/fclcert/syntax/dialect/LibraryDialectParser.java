@@ -414,10 +414,6 @@ final class LibraryDialectParser {
         while (!stopped) {
             Token t = peek();
             int from = p;
-            if (isKeyword(t, "END_FUZZIFY")) {
-                next();
-                break;
-            }
             if (endOfBlock(t, "END_FUZZIFY")) {
                 break;
             }
@@ -446,7 +442,12 @@ final class LibraryDialectParser {
         fuzzifications.add(new Fuzzification(variable, terms, at(start), declaredRange));
     }
 
+    /** Whether the block ends at t: at its {@code end} keyword (consumed), or where that is missing (reported). */
     private boolean endOfBlock(Token t, String end) {
+        if (isKeyword(t, end)) {
+            next();
+            return true;
+        }
         if (t.kind() == Kind.EOF || isKeyword(t, "END_FUNCTION_BLOCK") || isKeyword(t, "FUZZIFY")
                 || isKeyword(t, "DEFUZZIFY") || isKeyword(t, "RULEBLOCK")) {
             error(t, DialectCode.SYNTAX, end + " missing before " + describe(t));
@@ -506,10 +507,6 @@ final class LibraryDialectParser {
         while (!stopped) {
             Token t = peek();
             int from = p;
-            if (isKeyword(t, "END_DEFUZZIFY")) {
-                next();
-                break;
-            }
             if (endOfBlock(t, "END_DEFUZZIFY")) {
                 break;
             }
@@ -828,10 +825,6 @@ final class LibraryDialectParser {
         while (!stopped) {
             Token t = peek();
             int from = p;
-            if (isKeyword(t, "END_RULEBLOCK")) {
-                next();
-                break;
-            }
             if (endOfBlock(t, "END_RULEBLOCK")) {
                 break;
             }

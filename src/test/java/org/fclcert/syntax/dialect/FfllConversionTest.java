@@ -16,11 +16,7 @@ import java.util.Random;
 import java.util.stream.Stream;
 import org.fclcert.check.Analysis;
 import org.fclcert.eval.EvaluationException;
-import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.model.Program;
-import org.fclcert.model.Variable;
-import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.ReadResult;
 import org.fclcert.syntax.StrictReader;
 import org.fclcert.write.CanonicalWriter;
@@ -62,29 +58,9 @@ class FfllConversionTest {
 
     /** Evaluates both programs on a grid over [-1, 11]·(range/10) of every pair of inputs; returns the count. */
     private static int compareOnGrid(Program a, Program b) throws EvaluationException {
-        FunctionBlockInstance x = Evaluator.load(a).newInstance();
-        FunctionBlockInstance y = Evaluator.load(b).newInstance();
-        List<Variable> inputs = a.functionBlocks().get(0).variables(VariableKind.INPUT);
-        List<Variable> outputs = a.functionBlocks().get(0).variables(VariableKind.OUTPUT);
         double scale = a.functionBlocks().get(0).name().equals("guard") ? 10 : 1;
-        int n = 0;
-        for (int i = 0; i < STEPS; i++) {
-            for (int j = 0; j < STEPS; j++) {
-                double u = (-1 + 12.0 * i / (STEPS - 1)) * scale;
-                double v = -1 + 12.0 * j / (STEPS - 1);
-                x.set(inputs.get(0).name(), u);
-                y.set(inputs.get(0).name(), u);
-                x.set(inputs.get(1).name(), v);
-                y.set(inputs.get(1).name(), v);
-                x.evaluate();
-                y.evaluate();
-                for (Variable o : outputs) {
-                    assertEquals(x.get(o.name()), y.get(o.name()), 0.0, o.name() + " at " + u + ", " + v);
-                }
-                n++;
-            }
-        }
-        return n;
+        return EvaluatesAlike.onGrid(a, b, STEPS, i -> (-1 + 12.0 * i / (STEPS - 1)) * scale,
+                j -> -1 + 12.0 * j / (STEPS - 1));
     }
 
     @Test

@@ -15,8 +15,6 @@ import java.util.Map;
 import java.util.stream.Stream;
 import org.fclcert.check.Analysis;
 import org.fclcert.eval.EvaluationException;
-import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
@@ -109,11 +107,8 @@ class LibraryDialectConversionTest {
 
     /** Both programs on a 41 × 41 grid over each input's RANGE widened by a quarter on each side. */
     private static int compareOnGrid(Program a, Program b) throws EvaluationException {
-        FunctionBlockInstance x = Evaluator.load(a).newInstance();
-        FunctionBlockInstance y = Evaluator.load(b).newInstance();
         FunctionBlock fb = a.functionBlocks().get(0);
         List<Variable> inputs = fb.variables(VariableKind.INPUT);
-        List<Variable> outputs = fb.variables(VariableKind.OUTPUT);
         double[][] span = new double[2][];
         for (int k = 0; k < 2; k++) {
             String name = inputs.get(k).name();
@@ -123,23 +118,8 @@ class LibraryDialectConversionTest {
             double hi = f.declaredRange().map(r -> r.max().value()).orElse(100.0);
             span[k] = new double[] {lo - (hi - lo) / 4, hi + (hi - lo) / 4};
         }
-        int n = 0;
-        for (int i = 0; i <= 40; i++) {
-            for (int j = 0; j <= 40; j++) {
-                double u = span[0][0] + (span[0][1] - span[0][0]) * i / 40;
-                double v = span[1][0] + (span[1][1] - span[1][0]) * j / 40;
-                for (FunctionBlockInstance z : List.of(x, y)) {
-                    z.set(inputs.get(0).name(), u);
-                    z.set(inputs.get(1).name(), v);
-                    z.evaluate();
-                }
-                for (Variable o : outputs) {
-                    assertEquals(x.get(o.name()), y.get(o.name()), 0.0, o.name() + " at " + u + ", " + v);
-                }
-                n++;
-            }
-        }
-        return n;
+        return EvaluatesAlike.onGrid(a, b, 41, i -> span[0][0] + (span[0][1] - span[0][0]) * i / 40,
+                j -> span[1][0] + (span[1][1] - span[1][0]) * j / 40);
     }
 
     // ---------------------------------------------------------------- approximations
