@@ -12,6 +12,7 @@ import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.IntFunction;
+import java.util.function.LongSupplier;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutInfo;
@@ -84,15 +85,18 @@ public final class Prober {
 
     private final IutSource source;
     private final Options options;
+    /** The budget's clock: System.nanoTime, or a test's simulated one (execution times use the real clock). */
+    private final LongSupplier clock;
     private final long deadline;
     private ImplementationUnderTest iut;
     private IutInfo info;
     private final List<DataCheckEntry> done = new ArrayList<>();
 
-    private Prober(IutSource source, Options options) {
+    private Prober(IutSource source, Options options, LongSupplier clock) {
         this.source = source;
         this.options = options;
-        this.deadline = System.nanoTime() + options.budget().toNanos();
+        this.clock = clock;
+        this.deadline = clock.getAsLong() + options.budget().toNanos();
     }
 
     /**
@@ -102,7 +106,13 @@ public final class Prober {
      */
     public static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener)
             throws IutException {
-        Prober p = new Prober(source, options);
+        return probe(source, options, listener, System::nanoTime);
+    }
+
+    /** As {@link #probe(IutSource, Options, Listener)}, with the budget kept on {@code clock} (nanoseconds). */
+    static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener, LongSupplier clock)
+            throws IutException {
+        Prober p = new Prober(source, options, clock);
         try {
             p.iut = source.open();
             p.info = p.iut.hello();
@@ -114,8 +124,9 @@ public final class Prober {
                     continue;
                 }
                 listener.row(row, i + 1, rows.length);
-                long share = (p.deadline - System.nanoTime()) / (rows.length - i);
-                long rowDeadline = System.nanoTime() + Math.max(0, share);
+                long now = clock.getAsLong();
+                long rowsLeft = Arrays.stream(rows, i, rows.length).filter(options.rows()::contains).count();
+                long rowDeadline = now + Math.max(0, (p.deadline - now) / rowsLeft);
                 p.done.add(p.measure(row, rowDeadline));
             }
             return List.copyOf(p.done);
@@ -299,7 +310,7 @@ public final class Prober {
     }
 
     private boolean outOfTime(long rowDeadline) {
-        return System.nanoTime() > rowDeadline;
+        return clock.getAsLong() > rowDeadline;
     }
 
     /** Grows the size 1, 2, 4, … (from {@code min}) to the cap, then bisects to the boundary. */
@@ -313,12 +324,16 @@ public final class Prober {
         Attempt failure = null;
         boolean budgetHit = false;
         long n = min;
+        long lastNanos = 0;   // how long the last attempt took; the first attempt of a row always runs
         while (true) {
-            if (outOfTime(rowDeadline)) {
+            // a size twice the last one takes at least twice as long: do not start what cannot end in time
+            if (lastNanos > 0 && clock.getAsLong() + 2 * lastNanos > rowDeadline) {
                 budgetHit = true;
                 break;
             }
+            long t0 = clock.getAsLong();
             Attempt a = attemptSize(family, (int) n);
+            lastNanos = Math.max(1, clock.getAsLong() - t0);
             if (a.ok()) {
                 lastOk = (int) n;
                 if (n >= cap) {
@@ -332,12 +347,15 @@ public final class Prober {
             }
         }
         while (!budgetHit && firstFail > 0 && firstFail - Math.max(lastOk, min - 1) > 1) {
-            if (outOfTime(rowDeadline)) {
+            // bisection sizes are below the failing one: the last attempt bounds the next
+            if (clock.getAsLong() + lastNanos > rowDeadline) {
                 budgetHit = true;
                 break;
             }
             int mid = (Math.max(lastOk, min - 1) + firstFail) >>> 1;
+            long t0 = clock.getAsLong();
             Attempt a = attemptSize(family, mid);
+            lastNanos = Math.max(1, clock.getAsLong() - t0);
             if (a.ok()) {
                 lastOk = mid;
             } else {
@@ -584,9 +602,9 @@ public final class Prober {
     }
 
     private DataCheckEntry identifiers(long rowDeadline) {
-        long remaining = rowDeadline - System.nanoTime();
+        long now = clock.getAsLong();
         DataCheckEntry longest = limit(Table11.IDENTIFIER_LENGTH, 1, n -> Optional.of(Families.longNames(n)),
-                System.nanoTime() + remaining / 2, "");
+                now + (rowDeadline - now) / 2, "");
         DataCheckEntry distinct = limit(Table11.IDENTIFIER_LENGTH, 1, n -> Optional.of(Families.distinctNames(n)),
                 rowDeadline, "");
         Attempt cased = attempt(Families.mixedCase());

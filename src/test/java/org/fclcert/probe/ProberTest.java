@@ -173,4 +173,44 @@ class ProberTest {
         long kb = Long.parseLong(rows.get("memory-kb").value());
         assertTrue(kb > 1000 && kb < 1_000_000, "a Python process's peak RSS in kB: " + kb);
     }
+
+    /**
+     * The budget on a simulated clock: loading costs 10 µs of it per character, so sizes get dearer as they
+     * grow. No row may start an attempt it cannot finish in its share, none overruns the budget, and a row
+     * left with little time still measures its smallest size rather than reporting 0.
+     */
+    @Test
+    void theBudgetIsSharedAndNeverOverrun() throws Exception {
+        long[] now = {0};
+        Prober.IutSource slowLoads = () -> new org.fclcert.harness.fakes.EvaluatorIut() {
+            @Override
+            public org.fclcert.iut.LoadOutcome load(String fcl) {
+                now[0] += fcl.length() * 10_000L;
+                return super.load(fcl);
+            }
+        };
+        Duration budget = Duration.ofSeconds(4);
+        List<DataCheckEntry> list = Prober.probe(slowLoads, new Prober.Options(100_000, budget,
+                EnumSet.of(Table11.INPUTS, Table11.RULES_PER_BLOCK, Table11.NESTING)), Prober.Listener.NONE,
+                () -> now[0]);
+        Map<String, DataCheckEntry> rows = list.stream().collect(Collectors.toMap(DataCheckEntry::id, e -> e));
+        assertTrue(now[0] <= budget.toNanos(), "simulated time used: " + now[0] / 1e9 + " s of " + budget);
+        // a third of 4 s each, at 10 µs a character: some 130 000 characters of program per row
+        for (Table11 row : List.of(Table11.INPUTS, Table11.RULES_PER_BLOCK)) {
+            DataCheckEntry e = rows.get(row.id());
+            assertEquals(DataCheckEntry.AT_LEAST, e.bound(), row.id());
+            assertTrue(e.note().startsWith("probe budget ran out for this row"), row.id() + ": " + e.note());
+            assertTrue(Long.parseLong(e.value()) >= 64, row.id() + " measured only " + e.value());
+        }
+        // the last row still gets its share: nesting programs are short, so it reaches the reference's 1000
+        assertEquals("1000", rows.get("max-nesting-depth").value(), rows.get("max-nesting-depth").note());
+        assertEquals(DataCheckEntry.EXACT, rows.get("max-nesting-depth").bound());
+        assertEquals(DataCheckEntry.NOT_MEASURED, rows.get("max-rule-blocks").bound(), "not selected");
+
+        // one row alone: doubling sizes on a linear cost, the size that would end past the budget is not started
+        now[0] = 0;
+        Prober.probe(slowLoads, new Prober.Options(100_000, budget, EnumSet.of(Table11.RULES_PER_BLOCK)),
+                Prober.Listener.NONE, () -> now[0]);
+        assertTrue(now[0] <= budget.toNanos(), "simulated time used: " + now[0] / 1e9 + " s of " + budget);
+    }
 }
