@@ -16,24 +16,14 @@ import java.util.concurrent.Callable;
 import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
-import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.Certification;
 import org.fclcert.harness.ResultsFile;
-import org.fclcert.harness.ResultsWriter;
-import org.fclcert.harness.RunCase;
-import org.fclcert.harness.RunCases;
-import org.fclcert.harness.RunHeader;
-import org.fclcert.harness.RunHeaders;
-import org.fclcert.harness.Runner;
 import org.fclcert.iut.ImplementationUnderTest;
-import org.fclcert.iut.IutException;
-import org.fclcert.iut.IutInfo;
-import org.fclcert.iut.IutOptions;
-import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
-import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.probe.Prober;
+import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
 import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
@@ -136,48 +126,73 @@ final class CertifyCommand implements Callable<Integer> {
         }
         Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, budget, Set.of());
         Corpus loaded = loadCorpus();
-        List<RunCase> all = RunCases.from(loaded.cases());
-        List<RunCase> selected = selection.apply(all);
-        if (selected.isEmpty()) {
+        Certification.Request request = new Certification.Request(iut,
+                IutArguments.options(requestTimeout, classpath), classpath, loaded, corpusName(), selection, out,
+                Path.of("reports"), probe, List.of(levels, features, cases));
+        boolean terminal = System.console() != null;
+        ProgressLine progress = new ProgressLine(err, terminal);
+        Certification.Outcome outcome;
+        try {
+            outcome = Certification.run(request, progress, new TerminalHooks(progress, err, terminal));
+        } catch (Certification.NothingSelected e) {
             throw new CannotRun("no case of " + corpusName() + " matches the selection");
+        } catch (Certification.CannotCertify e) {
+            throw new CannotRun(e.getMessage());
         }
-        IutOptions options = IutArguments.options(requestTimeout, classpath);
-        try (ImplementationUnderTest impl = open(options)) {
-            IutInfo info = hello(impl);
-            RunHeader header = RunHeaders.of(info, iut, classpath, corpusName(), loaded.sha256(), all, selected,
-                    List.of(levels, features, cases));
-            Path dir = out != null ? out : Path.of("reports", OutDirs.forIut(iut, info.name()));
-            Report report = run(impl, header, selected, dir, err, probe, options);
-            print(stdout, report, dir);
-            if (!condition.holds(report)) {
-                err.println("fclcert certify: --fail-on " + failOn + ": " + condition.explain(report));
-                err.flush();
-                return FAILED;
-            }
-            return OK;
+        Report report = outcome.report();
+        print(stdout, report, outcome.directory());
+        if (!condition.holds(report)) {
+            err.println("fclcert certify: --fail-on " + failOn + ": " + condition.explain(report));
+            err.flush();
+            return FAILED;
         }
+        return OK;
     }
 
-    private Report run(ImplementationUnderTest impl, RunHeader header, List<RunCase> selected, Path dir,
-            PrintWriter err, Prober.Options probe, IutOptions options) throws CannotRun {
-        Path resultsFile = dir.resolve("results.jsonl");
-        Thread onInterrupt = new Thread(() -> reportInterruptedRun(impl, resultsFile, dir, err));
-        try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
-            ProgressLine progress = new ProgressLine(err, System.console() != null);
+    /**
+     * The command line's side of a run: ends the progress line, shows the Table 11 probes on a terminal,
+     * and while the results are being written keeps a shutdown hook that reports a run cut short.
+     */
+    private static final class TerminalHooks implements Certification.Hooks {
+        private final ProgressLine progress;
+        private final PrintWriter err;
+        private final boolean terminal;
+        private Thread onInterrupt;
+        private boolean probed;
+
+        TerminalHooks(ProgressLine progress, PrintWriter err, boolean terminal) {
+            this.progress = progress;
+            this.err = err;
+            this.terminal = terminal;
+        }
+
+        @Override
+        public void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
+            onInterrupt = new Thread(() -> reportInterruptedRun(iut, resultsFile, directory, err));
             Runtime.getRuntime().addShutdownHook(onInterrupt);
-            List<CaseResult> done = new Runner(progress).run(impl, header, selected, results);
+        }
+
+        @Override
+        public void casesFinished() {
             progress.finish();
-            List<DataCheckEntry> dataCheckList = List.of();
-            if (probe != null) {
-                dataCheckList = dataCheckList(probe, options, err);
-                results.dataCheckList(dataCheckList);
+        }
+
+        @Override
+        public void probing(Table11 row, int index, int total) {
+            if (terminal) {
+                probed = true;
+                err.print("\r\u001b[Kprobing Table 11, " + index + "/" + total + ": " + row.id());
+                err.flush();
+            }
+        }
+
+        @Override
+        public void resultsComplete() {
+            if (probed) {
+                err.print("\r\u001b[K");
+                err.flush();
             }
             Runtime.getRuntime().removeShutdownHook(onInterrupt);
-            Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
-            ReportFiles.writeAll(report, dir);
-            return report;
-        } catch (IOException e) {
-            throw new CannotRun("cannot write the results or reports in " + dir + ": " + e.getMessage());
         }
     }
 
@@ -271,44 +286,6 @@ final class CertifyCommand implements Callable<Integer> {
             return corpus != null ? Corpus.load(corpus) : BundledCorpus.load();
         } catch (CorpusException e) {
             throw new CannotRun("the corpus cannot be used: " + e.getMessage());
-        }
-    }
-
-    /** The Table 11 probes on fresh sessions of the implementation, after the cases. */
-    private List<DataCheckEntry> dataCheckList(Prober.Options probe, IutOptions options, PrintWriter err) {
-        boolean terminal = System.console() != null;
-        try {
-            List<DataCheckEntry> list = Prober.probe(() -> Iuts.open(iut, options), probe, (row, index, count) -> {
-                if (terminal) {
-                    err.print("\r\u001b[Kprobing Table 11, " + index + "/" + count + ": " + row.id());
-                    err.flush();
-                }
-            });
-            if (terminal) {
-                err.print("\r\u001b[K");
-                err.flush();
-            }
-            return list;
-        } catch (IutException e) {
-            return Prober.notMeasured("the implementation could not be probed: " + e.getMessage());
-        }
-    }
-
-    private ImplementationUnderTest open(IutOptions options) throws CannotRun {
-        try {
-            return Iuts.open(iut, options);
-        } catch (IutException e) {
-            throw new CannotRun("cannot start the implementation '" + iut + "': " + e.getMessage()
-                    + IutArguments.stderrTail(e));
-        }
-    }
-
-    private IutInfo hello(ImplementationUnderTest impl) throws CannotRun {
-        try {
-            return impl.hello();
-        } catch (IutException e) {
-            throw new CannotRun("the implementation '" + iut + "' did not answer hello: " + e.getMessage()
-                    + IutArguments.stderrTail(e));
         }
     }
 

@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Supplier;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
@@ -14,14 +13,17 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.probe.Prober;
+import org.fclcert.probe.Table11;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
 
 /**
- * One certification run from start to finish: start the implementation, run the selected cases,
- * stream {@code results.jsonl}, write the four reports. Front ends (the command line, the Maven
- * plugin) parse their own options into a {@link Request} and present the outcome.
+ * One certification run from start to finish: select the cases, start the implementation, run the cases
+ * streaming {@code results.jsonl}, measure the Table 11 data check list if asked, write the four reports.
+ * The only orchestration of a run: the front ends (the command line, the Maven plugin) parse their own
+ * options into a {@link Request}, follow the run through a {@link RunListener} and {@link Hooks}, and
+ * present the outcome. Nothing here prints.
  */
 public final class Certification {
     private Certification() {
@@ -39,14 +41,32 @@ public final class Certification {
      * @param outDir    where results and reports go; null for {@code <reportsRoot>/<iut-name>}
      * @param reportsRoot parent of the default output directory
      * @param probe     how to measure the Table 11 data check list after the cases; null: not measured
+     * @param filters   the filters as the user gave them (levels, features, case globs), for the report;
+     *                  null to describe {@code selection}
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
-            CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe) {
+            CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
+            List<List<String>> filters) {
+
+        /** A run whose report describes the selection itself. */
+        public Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
+                CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe) {
+            this(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot, probe, null);
+        }
 
         /** A run without the data check list. */
         public Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
                 CaseSelection selection, Path outDir, Path reportsRoot) {
             this(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot, null);
+        }
+
+        private List<List<String>> filtersForReport() {
+            if (filters != null) {
+                return filters;
+            }
+            CaseSelection s = selection;
+            return List.of(s.levels().stream().map(l -> l.word()).sorted().toList(),
+                    s.features().stream().sorted().toList(), s.globs());
         }
     }
 
@@ -55,7 +75,7 @@ public final class Certification {
     }
 
     /** The run could not be done (implementation would not start, nothing selected, files not writable). */
-    public static final class CannotCertify extends Exception {
+    public static class CannotCertify extends Exception {
         private static final long serialVersionUID = 1L;
 
         public CannotCertify(String message) {
@@ -63,34 +83,76 @@ public final class Certification {
         }
     }
 
-    public static Outcome run(Request request, RunListener listener) throws CannotCertify {
-        List<RunCase> all = RunCases.from(request.corpus().cases());
-        List<RunCase> selected = request.selection().apply(all);
-        if (selected.isEmpty()) {
-            throw new CannotCertify("no case of the corpus " + request.corpusName() + " matches the selection");
-        }
-        try (ImplementationUnderTest iut = open(request)) {
-            IutInfo info = hello(iut, request.iutSpec());
-            CaseSelection s = request.selection();
-            RunHeader header = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
-                    request.corpus().sha256(), all, selected,
-                    List.of(s.levels().stream().map(l -> l.word()).sorted().toList(),
-                            s.features().stream().sorted().toList(), s.globs()));
-            Path dir = request.outDir() != null ? request.outDir()
-                    : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
-            return new Outcome(runAndReport(iut, header, selected, dir, listener,
-                    () -> dataCheckList(request, Prober.Listener.NONE)), dir);
+    /** No case of the corpus matches the selection (front ends may word this their own way). */
+    public static final class NothingSelected extends CannotCertify {
+        private static final long serialVersionUID = 1L;
+
+        NothingSelected(String corpusName) {
+            super("no case of the corpus " + corpusName + " matches the selection");
         }
     }
 
-    private static Report runAndReport(ImplementationUnderTest iut, RunHeader header, List<RunCase> selected,
-            Path dir, RunListener listener, Supplier<List<DataCheckEntry>> probe) throws CannotCertify {
-        try (ResultsWriter results = ResultsWriter.create(dir.resolve("results.jsonl"))) {
+    /**
+     * What a front end may want to hear of a run besides the cases' progress; every method does nothing
+     * by default. The command line uses them for its probe progress and to report a run cut short by Ctrl-C.
+     */
+    public interface Hooks {
+        Hooks NONE = new Hooks() {
+        };
+
+        /** The cases are about to run on {@code iut}; their results stream to {@code resultsFile} in {@code directory}. */
+        default void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
+        }
+
+        /** The last selected case has run (the Table 11 probes, if any, come next). */
+        default void casesFinished() {
+        }
+
+        /** The Table 11 probes reached {@code row}, the {@code index}th of {@code total}. */
+        default void probing(Table11 row, int index, int total) {
+        }
+
+        /** The results file is complete; the reports are built and written next. */
+        default void resultsComplete() {
+        }
+    }
+
+    /** The name of the results file in the output directory. */
+    public static final String RESULTS = "results.jsonl";
+
+    public static Outcome run(Request request, RunListener listener) throws CannotCertify {
+        return run(request, listener, Hooks.NONE);
+    }
+
+    public static Outcome run(Request request, RunListener listener, Hooks hooks) throws CannotCertify {
+        List<RunCase> all = RunCases.from(request.corpus().cases());
+        List<RunCase> selected = request.selection().apply(all);
+        if (selected.isEmpty()) {
+            throw new NothingSelected(request.corpusName());
+        }
+        try (ImplementationUnderTest iut = open(request)) {
+            IutInfo info = hello(iut, request.iutSpec());
+            RunHeader header = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
+                    request.corpus().sha256(), all, selected, request.filtersForReport());
+            Path dir = request.outDir() != null ? request.outDir()
+                    : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
+            return new Outcome(runAndReport(request, iut, header, selected, dir, listener, hooks), dir);
+        }
+    }
+
+    private static Report runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
+            List<RunCase> selected, Path dir, RunListener listener, Hooks hooks) throws CannotCertify {
+        Path resultsFile = dir.resolve(RESULTS);
+        try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
+            hooks.started(iut, dir, resultsFile);
             List<CaseResult> done = new Runner(listener).run(iut, header, selected, results);
-            List<DataCheckEntry> dataCheckList = probe.get();
-            if (!dataCheckList.isEmpty()) {
+            hooks.casesFinished();
+            List<DataCheckEntry> dataCheckList = List.of();
+            if (request.probe() != null) {
+                dataCheckList = dataCheckList(request, hooks::probing);
                 results.dataCheckList(dataCheckList);
             }
+            hooks.resultsComplete();
             Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
             ReportFiles.writeAll(report, dir);
             return report;
@@ -115,7 +177,11 @@ public final class Certification {
         }
     }
 
-    /** {@code reference} for fclcert's own evaluator, else the implementation's name made file-safe. */
+    /**
+     * The name of the default output directory: {@code reference} for fclcert's own evaluator, else the
+     * implementation's name in lower case with runs of anything but letters, digits, '.', '_' and '-'
+     * turned into one '-' ({@code iut} when nothing is left).
+     */
     public static String defaultDirectoryName(String spec, String name) {
         if (spec.strip().equals("reference")) {
             return "reference";

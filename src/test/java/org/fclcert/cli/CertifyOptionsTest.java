@@ -18,12 +18,4 @@ class CertifyOptionsTest {
         assertEquals(Optional.empty(), Durations.parse("soon"));
         assertEquals(Optional.empty(), Durations.parse("-1s"));
     }
-
-    @Test
-    void reportDirectoriesAreNamedAfterTheImplementation() {
-        assertEquals("reference", OutDirs.forIut("reference", "fclcert reference evaluator"));
-        assertEquals("fuzzylite-6.0", OutDirs.forIut("process:fl.sh", "fuzzylite 6.0"));
-        assertEquals("my-iut", OutDirs.forIut("process:x", "../My IUT!/"));
-        assertEquals("iut", OutDirs.forIut("process:x", "///"));
-    }
 }
