@@ -62,9 +62,15 @@ final class CertifyCommand implements Callable<Integer> {
     /** The corpus of a checkout of this repository, used when the command runs at its root. */
     private static final Path DEFAULT_CORPUS = Path.of("conformance");
 
-    /** How the run names its corpus: the directory given or found, or {@code bundled}. */
+    /** The corpus the run uses: the directory given, else conformance/ here, else none (the bundled one). */
+    private Path corpusDirectory() {
+        return corpus == null && Files.isDirectory(DEFAULT_CORPUS) ? DEFAULT_CORPUS : corpus;
+    }
+
+    /** How the run names its corpus: its directory, or {@code bundled}. */
     private String corpusName() {
-        return corpus != null ? corpus.toString() : BundledCorpus.NAME;
+        Path dir = corpusDirectory();
+        return dir != null ? dir.toString() : BundledCorpus.NAME;
     }
 
     @Option(names = "--out", paramLabel = "DIR",
@@ -276,14 +282,12 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     private Corpus loadCorpus() throws CannotRun {
-        if (corpus == null && Files.isDirectory(DEFAULT_CORPUS)) {
-            corpus = DEFAULT_CORPUS;
-        }
-        if (corpus != null && !Files.isDirectory(corpus)) {
-            throw new CannotRun("corpus directory " + corpus + " does not exist (use --corpus DIR)");
+        Path dir = corpusDirectory();
+        if (dir != null && !Files.isDirectory(dir)) {
+            throw new CannotRun("corpus directory " + dir + " does not exist (use --corpus DIR)");
         }
         try {
-            return corpus != null ? Corpus.load(corpus) : BundledCorpus.load();
+            return dir != null ? Corpus.load(dir) : BundledCorpus.load();
         } catch (CorpusException e) {
             throw new CannotRun("the corpus cannot be used: " + e.getMessage());
         }
