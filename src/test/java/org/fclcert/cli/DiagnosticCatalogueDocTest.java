@@ -17,11 +17,15 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.fclcert.check.Analysis;
 import org.fclcert.check.CheckCode;
 import org.fclcert.check.CheckRule;
 import org.fclcert.check.Checker;
+import org.fclcert.model.Diagnostic;
 import org.fclcert.model.DiagnosticCode;
 import org.fclcert.model.Severity;
+import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -134,6 +138,36 @@ class DiagnosticCatalogueDocTest {
             }
         }
         assertEquals(Set.of(), unknown, "codes that no part of fclcert declares");
+    }
+
+    /**
+     * Producers report each code with the severity the catalogue gives it: every .fcl file of the project
+     * (examples, corpus, test programs), read strictly and in every dialect, with the checks.
+     */
+    @Test
+    void producersReportEachCodeWithItsCataloguedSeverity() throws IOException {
+        List<Path> files = new ArrayList<>();
+        for (String dir : List.of("examples", "conformance", "src/test/resources")) {
+            try (Stream<Path> s = Files.walk(Path.of(dir))) {
+                s.filter(p -> p.toString().endsWith(".fcl")).sorted().forEach(files::add);
+            }
+        }
+        assertTrue(files.size() > 250, "fcl files found: " + files.size());
+        Set<String> seen = new TreeSet<>();
+        List<String> problems = new ArrayList<>();
+        for (Path file : files) {
+            String text = Files.readString(file);
+            for (Dialect dialect : Dialect.values()) {
+                for (Diagnostic d : Analysis.analyze(DialectReaders.reader(dialect), file.toString(), text).diagnostics()) {
+                    seen.add(d.code());
+                    if (d.severity() != d.diagnosticCode().severity()) {
+                        problems.add(dialect.cliName() + ": " + d);
+                    }
+                }
+            }
+        }
+        assertEquals(List.of(), problems);
+        assertTrue(seen.size() > 60, "codes seen: " + seen);   // the files reach most families' codes
     }
 
     /** The doc's table rows whose first cell is a code, by code; a code in two rows is a failure. */
