@@ -176,7 +176,7 @@ public final class CorpusLint {
             }
         }
 
-        /** The line of {@code vectors:} in the case file (1 if there is none); a file that cannot be read again is a finding. */
+        /** The line of {@code vectors:} in the case file (1 if none); a file that cannot be read again is a finding. */
         private int vectorsLine() {
             List<String> lines;
             try {

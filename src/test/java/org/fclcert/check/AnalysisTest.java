@@ -48,7 +48,8 @@ class AnalysisTest {
     @Test
     void readerWarningsAndCheckWarningsKeepTheProgram() {
         List<Rule> rules = List.of(rule("1", is("temp", "cold", 21), "valve", "open", 21));
-        Diagnostic readerWarning = Diagnostic.warning(at(21, 5), SyntaxCode.RULE_NAMED_BY_IDENTIFIER, "rule named by an identifier");
+        Diagnostic readerWarning = Diagnostic.warning(at(21, 5), SyntaxCode.RULE_NAMED_BY_IDENTIFIER,
+                "rule named by an identifier");
         Analysis a = Analysis.analyze(returning(Optional.of(tempValve(rules)), readerWarning), "m.fcl", "");
         assertTrue(a.program().isPresent());
         // 'hot' (line 10) and 'closed' (line 13) are never used
@@ -60,7 +61,8 @@ class AnalysisTest {
         List<Rule> rules = new ArrayList<>(validRules());
         // rule 3 at line 23 names an undefined term; the subcondition is at column 17
         rules.add(rule("3", is("temp", "warm", 23), "valve", "closed", 23));
-        Diagnostic readerWarning = Diagnostic.warning(at(23, 17), SyntaxCode.RULE_NAMED_BY_IDENTIFIER, "a reader remark at the same place");
+        Diagnostic readerWarning = Diagnostic.warning(at(23, 17), SyntaxCode.RULE_NAMED_BY_IDENTIFIER,
+                "a reader remark at the same place");
         Analysis a = Analysis.analyze(returning(Optional.of(tempValve(rules)), readerWarning), "m.fcl", "");
         assertTrue(a.program().isEmpty());
         assertEquals(List.of("FCL-W104@23:17", "FCL-C002@23:17"), summary(a));
