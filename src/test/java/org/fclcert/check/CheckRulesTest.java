@@ -84,8 +84,64 @@ class CheckRulesTest {
     void anUndefinedVariableIsReportedOnceNotAlsoAsAnUndefinedTerm() {
         List<Diagnostic> found = check(withRule("RULE 3 : IF tmp IS warm THEN valve IS closed;"));
         assertEquals(1, found.size(), found::toString);
-        assertEquals("tmp IS warm: 'tmp' is not a declared variable of function block 't' (its variables: temp, valve);"
-                + " declare it in VAR_INPUT (5.2.1)", found.get(0).message());
+        assertEquals("tmp IS warm: 'tmp' is not a declared variable of function block 't'; did you mean 'temp'?"
+                + " (its variables: temp, valve); or declare it in VAR_INPUT (5.2.1)", found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltTermGetsADidYouMeanAndTheTermItMeantIsNotReportedUnused() {
+        // 'cold' is used only through the typo: W001 "cold is never used" would be a knock-on of it
+        String text = BASE.replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C002@21"), codes(text), found::toString);
+        assertEquals("temp IS clod: 'clod' is not a term of input 'temp'; did you mean 'cold'? (its terms: cold, hot)",
+                found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltVariableGetsADidYouMeanAndItsTermsAreNotReportedUnused() {
+        String text = BASE.replace("IF temp IS cold THEN", "IF tmep IS cold THEN");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C001@21"), codes(text), found::toString);
+        assertTrue(found.get(0).message().contains("did you mean 'temp'?"), found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltOutputIsOneErrorNotAlsoANeverConcludedOutput() {
+        String text = BASE.replace("THEN valve IS open", "THEN vlave IS open")
+                .replace("THEN valve IS closed", "THEN vlave IS closed");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C001@21", "FCL-C001@22"), codes(text), found::toString);
+        assertTrue(found.get(0).message().contains("did you mean 'valve'?"), found.get(0).message());
+    }
+
+    @Test
+    void aNameFarFromEveryTermGetsNoGuess() {
+        List<Diagnostic> found = check(withRule("RULE 3 : IF temp IS lukewarm THEN valve IS open;"));
+        assertEquals(1, found.size(), found::toString);
+        assertEquals("temp IS lukewarm: 'lukewarm' is not a term of input 'temp' (its terms: cold, hot)",
+                found.get(0).message());
+    }
+
+    @Test
+    void aMissingSemicolonDoesNotHideTheSemanticErrorsAfterIt() {
+        String text = BASE.replace("TERM hot := (3, 0) (27, 1);", "TERM hot := (3, 0) (27, 1)")
+                .replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<Diagnostic> found = check(text);
+        // the syntax error at the end of line 10, then the typo of line 21 that the checks still find
+        assertEquals(List.of("FCL-S014@10", "FCL-C002@21"), codes(text), found::toString);
+        assertEquals(31, found.get(0).location().column());
+        assertTrue(found.get(1).message().contains("did you mean 'cold'?"), found.get(1).message());
+    }
+
+    @Test
+    void aSyntaxErrorNoOneTokenRepairMendsGivesNoSemanticGuesses() {
+        // a TERM with no membership function at all: its repair would be a guess, so no checks run
+        String text = BASE.replace("TERM hot := (3, 0) (27, 1);", "TERM hot := ;")
+                .replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<String> found = codes(text);
+        assertEquals(1, found.size(), found::toString);
+        assertTrue(found.get(0).startsWith("FCL-S"), found::toString);
     }
 
     @Test
