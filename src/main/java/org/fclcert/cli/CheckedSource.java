@@ -25,6 +25,7 @@ record CheckedSource(String text, Dialect dialect, Optional<Program> program) {
         Dialect dialect = name.resolve(file, text, err);
         Analysis analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
         DiagnosticPrinter.text(err, analysis.diagnostics());
+        name.hintWhenLibraryDialect(file, text, analysis.diagnostics(), err);
         if (analysis.program().isEmpty()) {
             err.println("fclcert: " + file + " has errors; not " + notDone);
         }

@@ -126,7 +126,9 @@ final class EvalCommand implements Callable<Integer> {
         Run run = new Run(fb, declaration(program));
         for (String in : inputs) {
             int eq = in.indexOf('=');
-            run.set(in.substring(0, eq).trim(), in.substring(eq + 1).trim(), "--in " + in);
+            String name = in.substring(0, eq).trim();
+            run.requireInput(name, "--in " + in);
+            run.set(name, in.substring(eq + 1).trim(), "--in " + in);
         }
         return run;
     }
@@ -158,6 +160,10 @@ final class EvalCommand implements Callable<Integer> {
         Run run = start(program);
         List<String> lines = SourceFiles.read(csv).lines().toList();
         CsvTable table = CsvTable.parse(csv, lines);
+        for (String column : table.columns()) {
+            // a header typo is the header's mistake, found before any row runs
+            run.requireInput(column, csv + ":" + table.headerLine() + ": column '" + column + "'");
+        }
         List<Map<String, Object>> json = new ArrayList<>();
         StringBuilder sb = new StringBuilder(header(run.fb));
         for (CsvTable.Row row : table.rows()) {
@@ -199,6 +205,18 @@ final class EvalCommand implements Callable<Integer> {
             this.fb = fb;
             for (String input : fb.inputNames()) {
                 hasValue.put(Names.key(input), declaration.variable(input).flatMap(Variable::initialValue).isPresent());
+            }
+        }
+
+        /** An unknown name is reported with the inputs there are, and the one it most likely misspells. */
+        void requireInput(String name, String where) throws EvaluationException {
+            try {
+                fb.get(name);
+            } catch (EvaluationException e) {
+                List<String> names = fb.inputNames();
+                String hint = Names.closest(name, names).map(n -> "did you mean '" + n + "'? ").orElse("");
+                throw new EvaluationException(e.diagnosticCode(), where + ": " + e.getMessage() + "; " + hint
+                        + (names.size() == 1 ? "its input: " : "its inputs: ") + String.join(", ", names));
             }
         }
 

@@ -190,4 +190,19 @@ class CheckCommandTest {
         it.forEachRemaining(out::add);
         return out;
     }
+
+    @Test
+    void aLibraryFileReadStrictlySaysWhichLibraryItLooksLikeAndWhatToTry() {
+        Cli r = Cli.run("check", "examples/jfuzzylogic/fan.fcl");
+        assertEquals(1, r.exitCode());
+        List<String> hints = r.errLines().stream().filter(l -> l.contains("this looks like")).toList();
+        assertEquals(1, hints.size(), r.err());
+        assertTrue(hints.get(0).startsWith("fclcert: examples/jfuzzylogic/fan.fcl: this looks like jFuzzyLogic ("),
+                hints.get(0));
+        assertTrue(hints.get(0).endsWith("): try --dialect auto, or 'fclcert convert examples/jfuzzylogic/fan.fcl'"
+                + " to turn it into standard FCL"), hints.get(0));
+        // a standard program with a syntax error gets no such guess
+        Cli standard = Cli.run("check", "examples/broken.fcl");
+        assertTrue(standard.errLines().stream().noneMatch(l -> l.contains("looks like")), standard.err());
+    }
 }
