@@ -26,6 +26,7 @@ import picocli.CommandLine.Command;
             ProbeCommand.class,
             ReportCommand.class,
             EvalCommand.class,
+            PlotCommand.class,
         })
 public final class Main implements java.util.concurrent.Callable<Integer> {
     @CommandLine.Spec
