@@ -1,0 +1,68 @@
+package org.fclcert.fuzz;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.fclcert.corpus.Tolerance;
+import org.fclcert.eval.EvaluationException;
+
+/**
+ * A conservative fairness test on the reference alone: the step is evaluated again with each input, and then
+ * all inputs together, moved by ±1, ±4 and ±16 ulps (at least 1e-15); if any output moves by more
+ * than a quarter of what its tolerance class allows, the step is a knife edge and unfair. The factor of four
+ * keeps steps whose result is merely steep (but continuous) out of doubt as well.
+ */
+public final class NudgedInputs implements FairVectors {
+    private static final double SAFETY = 0.25;
+
+    @Override
+    public boolean fair(ReferenceProgram program, List<Map<String, Double>> before, Map<String, Double> step) {
+        try {
+            List<Map<String, Double>> steps = new ArrayList<>(before);
+            steps.add(step);
+            Map<String, Double> base = program.last(steps);
+            for (Map<String, Double> nudged : nudges(step)) {
+                steps.set(steps.size() - 1, nudged);
+                Map<String, Double> got = program.last(steps);
+                for (Map.Entry<String, Double> e : base.entrySet()) {
+                    double want = e.getValue();
+                    Double other = got.get(e.getKey());
+                    double allowed = Tolerance.CONTINUOUS.allowed(want, program.scales().width(e.getKey()));
+                    if (other == null || !(Math.abs(other - want) <= SAFETY * allowed)) {
+                        return false;
+                    }
+                }
+            }
+            return true;
+        } catch (EvaluationException e) {
+            return false;
+        }
+    }
+
+    static List<Map<String, Double>> nudges(Map<String, Double> step) {
+        List<Map<String, Double>> out = new ArrayList<>();
+        for (int sign : new int[] {1, -1}) {
+            for (int kind = 0; kind < 3; kind++) {
+                Map<String, Double> all = new LinkedHashMap<>(step);
+                for (String name : step.keySet()) {
+                    Map<String, Double> one = new LinkedHashMap<>(step);
+                    double moved = move(step.get(name), sign, kind);
+                    one.put(name, moved);
+                    all.put(name, moved);
+                    out.add(one);
+                }
+                out.add(all);
+            }
+        }
+        return out;
+    }
+
+    private static double move(double x, int sign, int kind) {
+        return switch (kind) {
+            case 0 -> x + sign * Math.ulp(x);
+            case 1 -> x + sign * 4 * Math.ulp(x);
+            default -> x + sign * Math.max(16 * Math.ulp(x), 1e-15);
+        };
+    }
+}
