@@ -26,6 +26,7 @@ import picocli.CommandLine.Command;
             ProbeCommand.class,
             ReportCommand.class,
             EvalCommand.class,
+            FuzzCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
