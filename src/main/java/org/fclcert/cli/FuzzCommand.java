@@ -55,6 +55,10 @@ final class FuzzCommand implements Callable<Integer> {
             description = "Stop after N programs (0: only the budget stops the run); with --jobs 1 a seed and N give the same run")
     long programs;
 
+    @Option(names = "--max-findings", paramLabel = "N", defaultValue = "0",
+            description = "Stop once N distinct findings are known (0: no limit)")
+    int maxFindings;
+
     @Option(names = "--level", paramLabel = "LEVEL", defaultValue = "open",
             description = "Highest level of the features used: basic, extension or open (default: ${DEFAULT-VALUE})")
     String level;
@@ -112,7 +116,8 @@ final class FuzzCommand implements Callable<Integer> {
             focus.add(f);
         }
         IutOptions options = IutArguments.options(request, classpath);
-        Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs);
+        Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs)
+                .withMaxFindings(Math.max(0, maxFindings));
         boolean terminal = System.console() != null;
         Fuzzer.Result result;
         try {

@@ -101,6 +101,8 @@ public final class FuzzReport {
             o.put("originalLines", f.originalLines());
             o.put("programLines", w.programLines());
             o.put("shrinkTrials", f.shrinkTrials());
+            o.put("foundAfterSeconds", f.foundAfterMillis() / 1000.0);
+            o.put("shrinkSeconds", f.shrinkMillis() / 1000.0);
             o.put("duplicates", f.duplicates());
         }
         ArrayNode bugs = root.putArray("generatorBugs");

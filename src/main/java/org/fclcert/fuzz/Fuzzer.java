@@ -35,9 +35,10 @@ public final class Fuzzer {
      * @param maxPrograms  stop after this many programs (0 = no limit)
      * @param shrinkTime   the longest one finding is shrunk
      * @param maxShrinks   the most disagreements shrunk in one run; later unexplained ones are only counted
+     * @param maxFindings  stop generating once this many distinct findings are known (0 = no limit)
      */
     public record Options(long seed, Duration budget, long maxPrograms, FuzzSettings settings, int jobs,
-            Duration shrinkTime, int maxShrinks) {
+            Duration shrinkTime, int maxShrinks, int maxFindings) {
         public Options {
             if (jobs < 1) {
                 throw new IllegalArgumentException("jobs must be at least 1");
@@ -46,11 +47,15 @@ public final class Fuzzer {
 
         public static Options of(long seed, Duration budget, FuzzSettings settings, int jobs) {
             Duration shrink = Duration.ofSeconds(Math.max(15, Math.min(60, budget.toSeconds() / 3)));
-            return new Options(seed, budget, 0, settings, jobs, shrink, 40);
+            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0);
         }
 
         public Options withMaxPrograms(long n) {
-            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks);
+            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings);
+        }
+
+        public Options withMaxFindings(int n) {
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n);
         }
     }
 
@@ -181,7 +186,7 @@ public final class Fuzzer {
             VectorGenerator vectorGenerator = new VectorGenerator(counting());
             while (Instant.now().isBefore(end)) {
                 long index = nextProgram.getAndIncrement();
-                if (options.maxPrograms() > 0 && index >= options.maxPrograms()) {
+                if (options.maxPrograms() > 0 && index >= options.maxPrograms() || enoughFindings(options)) {
                     break;
                 }
                 one(session, options, generator, vectorGenerator, index);
@@ -194,6 +199,12 @@ public final class Fuzzer {
             synchronized (generatorBugs) {
                 infrastructure.add("job " + Thread.currentThread().getName() + ": internal error: " + e);
             }
+        }
+    }
+
+    private boolean enoughFindings(Options options) {
+        synchronized (findings) {
+            return options.maxFindings() > 0 && findings.size() >= options.maxFindings();
         }
     }
 
@@ -248,18 +259,21 @@ public final class Fuzzer {
             unexplained.incrementAndGet();
             return;
         }
+        long foundAfter = Duration.between(start, Instant.now()).toMillis();
         Instant deadline = Instant.now().plus(options.shrinkTime());
         Shrinker.Result shrunk = new Shrinker(session, fairness, 4000, deadline).shrink(raw, d.get());
         Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation());
         Finding f = new Finding(feature, d.get().kind(), shrunk.minimal(), shrunk.deviation(), d.get(), index, seed,
-                (int) text.lines().count(), shrunk.tried(), 0);
+                (int) text.lines().count(), shrunk.tried(), 0, foundAfter,
+                Duration.between(start, Instant.now()).toMillis() - foundAfter);
         synchronized (findings) {
             Finding before = findings.get(f.key());
             if (before == null) {
                 findings.put(f.key(), f);
             } else if (f.programIndex() < before.programIndex()) {
                 findings.put(f.key(), new Finding(f.feature(), f.kind(), f.minimal(), f.deviation(), f.original(),
-                        f.programIndex(), f.programSeed(), f.originalLines(), f.shrinkTrials(), before.duplicates() + 1));
+                        f.programIndex(), f.programSeed(), f.originalLines(), f.shrinkTrials(), before.duplicates() + 1,
+                        f.foundAfterMillis(), f.shrinkMillis()));
             } else {
                 findings.put(f.key(), before.withDuplicate());
             }
