@@ -77,7 +77,7 @@ public final class Fuzzer {
     }
 
     private final CanonicalWriter writer = new CanonicalWriter();
-    private final FairVectors fairness;
+    private final FairnessJudge fairness;
     private final AtomicLong nextProgram = new AtomicLong();
     private final AtomicLong programs = new AtomicLong();
     private final AtomicLong vectors = new AtomicLong();
@@ -96,7 +96,7 @@ public final class Fuzzer {
         this(new NudgedInputs());
     }
 
-    public Fuzzer(FairVectors fairness) {
+    public Fuzzer(FairnessJudge fairness) {
         this.fairness = fairness;
     }
 
@@ -208,7 +208,7 @@ public final class Fuzzer {
         }
     }
 
-    private FairVectors counting() {
+    private FairnessJudge counting() {
         return (program, before, step) -> {
             boolean fair = fairness.fair(program, before, step);
             if (!fair) {

@@ -13,7 +13,7 @@ import org.fclcert.eval.EvaluationException;
  * than a quarter of what its tolerance class allows, the step is a knife edge and unfair. The factor of four
  * keeps steps whose result is merely steep (but continuous) out of doubt as well.
  */
-public final class NudgedInputs implements FairVectors {
+public final class NudgedInputs implements FairnessJudge {
     private static final double SAFETY = 0.25;
 
     @Override

@@ -72,12 +72,12 @@ final class Shrinker {
     }
 
     private final IutSession session;
-    private final FairVectors fairness;
+    private final FairnessJudge fairness;
     private final int maxTrials;
     private final Instant deadline;
     private int tried;
 
-    Shrinker(IutSession session, FairVectors fairness, int maxTrials, Instant deadline) {
+    Shrinker(IutSession session, FairnessJudge fairness, int maxTrials, Instant deadline) {
         this.session = session;
         this.fairness = fairness;
         this.maxTrials = maxTrials;

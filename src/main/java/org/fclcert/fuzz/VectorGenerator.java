@@ -32,9 +32,9 @@ import org.fclcert.model.VariableRef;
  * terms, so that nothing fires and the previous value must be kept.
  */
 public final class VectorGenerator {
-    private final FairVectors fairness;
+    private final FairnessJudge fairness;
 
-    public VectorGenerator(FairVectors fairness) {
+    public VectorGenerator(FairnessJudge fairness) {
         this.fairness = fairness;
     }
 

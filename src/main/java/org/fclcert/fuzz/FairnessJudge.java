@@ -9,7 +9,7 @@ import java.util.Map;
  * input, or the other reading of a literal, moves the result by more than the tolerance). Unfair steps are
  * never put to an implementation.
  */
-public interface FairVectors {
+public interface FairnessJudge {
     /**
      * @param program the program, loaded on the reference
      * @param before  the steps run before on the same instance (they set its state)
