@@ -286,6 +286,17 @@ public final class Fuzzer {
         synchronized (findings) {
             same = findings.values().stream().filter(f -> f.kind() == d.kind()).toList();
         }
+        if (!Isolation.valueKind(d.kind())) {
+            String signature = Isolation.signature(d);
+            for (Finding f : same) {
+                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)) {
+                    synchronized (findings) {
+                        findings.put(f.key(), findings.get(f.key()).withDuplicate());
+                    }
+                    return true;
+                }
+            }
+        }
         java.util.Set<Feature> used = new FeatureDetector().detect(raw.program()).features();
         Shrinker probe = new Shrinker(session, fairness, Integer.MAX_VALUE, Instant.MAX);
         for (Finding f : same) {

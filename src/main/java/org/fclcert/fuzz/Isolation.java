@@ -3,6 +3,9 @@ package org.fclcert.fuzz;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.fclcert.check.FeatureReport;
 import java.util.OptionalDouble;
 import org.fclcert.corpus.OutputScales;
 import org.fclcert.model.Defuzzification;
@@ -43,7 +46,14 @@ final class Isolation {
     }
 
     static Feature feature(Shrinker.Case c, Deviation d) {
-        Set<Feature> used = new FeatureDetector().detect(c.program()).features();
+        FeatureReport report = new FeatureDetector().detect(c.program());
+        Set<Feature> used = report.features();
+        if (!valueKind(d.kind())) {
+            Optional<Feature> named = refusal(report, d);
+            if (named.isPresent()) {
+                return named.get();
+            }
+        }
         Optional<Feature> precision = precision(c, d, used);
         if (precision.isPresent()) {
             return precision.get();
@@ -57,6 +67,9 @@ final class Isolation {
         if (d.kind() == DeviationKind.WRONG_VALUE && termConcludedTwice(fb)) {
             return Feature.B_COGS;
         }
+        if (!valueKind(d.kind())) {
+            return Feature.B_FB;
+        }
         if (beyondOuterPoints(fb, c.steps())) {
             return Feature.B_IN_TERM;
         }
@@ -65,6 +78,54 @@ final class Isolation {
             return Feature.B_DEFAULT_VALUE;
         }
         return used.contains(Feature.B_AND_MIN) && hasAnd(fb) ? Feature.B_AND_MIN : Feature.B_COGS;
+    }
+
+    private static final Pattern LINE = Pattern.compile("\\(line (\\d+)\\)");
+    private static final Map<String, Feature> WORDS = Map.ofEntries(Map.entry("COGS", Feature.B_COGS),
+            Map.entry("COG", Feature.E_COG), Map.entry("COA", Feature.E_COA), Map.entry("LM", Feature.E_LM),
+            Map.entry("RM", Feature.E_RM), Map.entry("MOM", Feature.O_MOM), Map.entry("NSUM", Feature.E_ACCU_NSUM),
+            Map.entry("BSUM", Feature.E_ACCU_BSUM), Map.entry("PROD", Feature.E_AND_PROD), Map.entry("BDIF", Feature.E_AND_BDIF),
+            Map.entry("ASUM", Feature.E_OR_ASUM), Map.entry("ACT", Feature.E_ACT_MIN), Map.entry("NOT", Feature.E_NOT),
+            Map.entry("RANGE", Feature.E_RANGE), Map.entry("VAR", Feature.E_VAR_LOCAL), Map.entry("WITH", Feature.E_WITH_CONST),
+            Map.entry("NC", Feature.B_DEFAULT_NC), Map.entry("OR", Feature.E_OR_MAX));
+
+    static boolean valueKind(DeviationKind k) {
+        return k == DeviationKind.WRONG_VALUE || k == DeviationKind.NOT_A_NUMBER || k == DeviationKind.MISSING_OUTPUT;
+    }
+
+    /**
+     * A refusal (rejection, error, crash) is named by the most specific feature used on the line the
+     * implementation names, else by a feature whose keyword its message names.
+     */
+    private static Optional<Feature> refusal(FeatureReport report, Deviation d) {
+        Matcher m = LINE.matcher(d.message());
+        if (m.find()) {
+            int line = Integer.parseInt(m.group(1));
+            Set<Feature> there = report.uses().stream().filter(u -> u.location().line() == line)
+                    .map(u -> u.feature()).collect(java.util.stream.Collectors.toSet());
+            for (Feature f : PRIORITY) {
+                if (there.contains(f)) {
+                    return Optional.of(f);
+                }
+            }
+            Optional<Feature> basic = there.stream().sorted().findFirst();
+            if (basic.isPresent()) {
+                return basic;
+            }
+        }
+        for (String word : d.message().toUpperCase(java.util.Locale.ROOT).split("[^A-Z_]+")) {
+            Feature f = WORDS.get(word);
+            if (f != null && report.features().contains(f)) {
+                return Optional.of(f);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** What a refusal says with its numbers taken out: two refusals with the same signature are one finding. */
+    static String signature(Deviation d) {
+        String text = d.message().replaceFirst("^(step \\d+: |on load: |on reset: )", "");
+        return d.kind().word() + ":" + text.replaceAll("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?", "#");
     }
 
     /**
