@@ -58,6 +58,29 @@ class FuzzCommandTest {
     }
 
     @Test
+    void corpusAddRefusesACaseTheLintFaults_andSkipsRetiredIds(@TempDir Path dir) throws Exception {
+        Path corpus = dir.resolve("corpus");
+        Files.createDirectories(corpus);
+        Files.writeString(corpus.resolve("RETIRED"), "B-COGS-001 wrong\n");
+        String program = "FUNCTION_BLOCK f\nVAR_INPUT a : REAL; END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n"
+                + "FUZZIFY a TERM on := (0, 0) (1, 1); END_FUZZIFY\n"
+                + "DEFUZZIFY y TERM hi := 10; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY\n"
+                + "RULEBLOCK r AND : MIN; ACCU : MAX; RULE 1 : IF a IS on THEN y IS hi; END_RULEBLOCK\nEND_FUNCTION_BLOCK\n";
+        String meta = "(*---\nid: B-COGS-007\ntitle: one rule\nlevel: basic\nfeatures: [%s]\ntests: [B-COGS]\n"
+                + "tolerance: exact\nderivation: |\n  a = 0.5 gives on = 0.5, y = 10\nvectors:\n  - in: {a: 0.5}\n    out: {y: 10.0}\n---*)\n";
+        Path good = dir.resolve("good.fcl");
+        Files.writeString(good, String.format(meta, "B-FB, B-IN-TERM, B-OUT-SINGLETON, B-AND-MIN, B-ACCU-MAX, B-COGS, "
+                + "B-DEFAULT-VALUE, B-ONE-RULEBLOCK, B-SUBCONDITIONS, B-ONE-SUBCONCLUSION") + program);
+        Path bad = dir.resolve("bad.fcl");
+        Files.writeString(bad, String.format(meta, "B-FB, B-COGS") + program);
+        assertEquals(1, run("corpus", "add", bad.toString(), "--corpus", corpus.toString()), out.toString());
+        assertTrue(out.toString().contains("not added"), out.toString());
+        assertTrue(!Files.exists(corpus.resolve("basic").resolve("B-COGS-002.fcl")));
+        assertEquals(0, run("corpus", "add", good.toString(), "--corpus", corpus.toString()), out.toString());
+        assertTrue(Files.readString(corpus.resolve("basic").resolve("B-COGS-002.fcl")).contains("id: B-COGS-002\n"));
+    }
+
+    @Test
     void aSeedReproducesTheRun(@TempDir Path dir) throws Exception {
         Path a = dir.resolve("a");
         Path b = dir.resolve("b");
