@@ -246,7 +246,7 @@ public final class Fuzzer {
         }
         Optional<Deviation> d = Trial.run(session, ref, text, expected);
         programs.incrementAndGet();
-        vectors.addAndGet(steps.size());
+        vectors.addAndGet(d.isEmpty() ? steps.size() : d.get().step() + 1);     // the vectors the IUT evaluated
         if (d.isEmpty()) {
             return;
         }
