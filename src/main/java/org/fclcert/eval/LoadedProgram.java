@@ -23,9 +23,23 @@ public final class LoadedProgram {
 
     /** A fresh instance of the named function block (case-insensitive). */
     public FunctionBlockInstance newInstance(String blockName) throws EvaluationException {
+        return new FunctionBlockInstance(block(blockName));
+    }
+
+    /** A fresh fast-path instance of the first function block ({@link CompiledEvaluator}). */
+    public CompiledEvaluator newCompiledInstance() {
+        return new CompiledEvaluator(blocks.get(0));
+    }
+
+    /** A fresh fast-path instance of the named function block (case-insensitive). */
+    public CompiledEvaluator newCompiledInstance(String blockName) throws EvaluationException {
+        return new CompiledEvaluator(block(blockName));
+    }
+
+    private BlockPlan block(String blockName) throws EvaluationException {
         for (BlockPlan b : blocks) {
             if (Names.same(b.name, blockName)) {
-                return new FunctionBlockInstance(b);
+                return b;
             }
         }
         throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
