@@ -19,8 +19,9 @@ final class PeerPrograms {
 
     static final double[][] VALVE_INPUTS = {{5, 60}, {15, 75}, {21, 65}, {9, 85}, {5, 90}, {26, 58}};
     static final double[][] COG3_INPUTS = {{1.5}, {3.2}, {4.9}, {5.0}, {6.7}, {8.8}, {2.4}, {7.1}};
-    static final double[][] RULES125_INPUTS = {{1.3, 4.4, 7.9}, {0.0, 5.0, 10.0}, {2.2, 2.6, 3.1}, {9.1, 6.4, 0.7},
-        {4.9, 5.1, 5.6}, {7.3, 1.8, 8.8}, {3.3, 9.9, 4.2}, {6.1, 7.7, 2.9}};
+    /** Off the grid of one decimal, where a 100-point midpoint rule over 0..100 would happen to be exact. */
+    static final double[][] RULES125_INPUTS = {{1.37, 4.41, 7.93}, {0.0, 5.0, 10.0}, {2.21, 2.63, 3.14},
+        {9.12, 6.45, 0.71}, {4.93, 5.17, 5.66}, {7.31, 1.86, 8.89}, {3.33, 9.91, 4.27}, {6.13, 7.77, 2.95}};
 
     /** The 5.3 example (Figure 7) as shipped in examples/valve.fcl. */
     static String valveStandard() {
