@@ -65,7 +65,14 @@ public final class CompiledEvaluator {
     private final FunctionBlockInstance fallback;
     private final int[] inputSlots;
     private final int[] outputSlots;
+    /** Slot to input / output index, -1 where the slot is not one. */
+    private final int[] inputOfSlot;
+    private final int[] outputOfSlot;
     private final double[] values;
+    /** Per slot: integer type (rounded on store), and the type's bounds, so that a store is two compares. */
+    private final boolean[] integerSlot;
+    private final double[] minSlot;
+    private final double[] maxSlot;
 
     // fuzzification
     private int termCount;
@@ -99,6 +106,8 @@ public final class CompiledEvaluator {
     /** Per output: its accumulator range in acc (per term for singletons and merged point outputs). */
     private int[] accStart;
     private double[] acc;
+    /** The singleton value of each singleton accumulator. */
+    private double[] accValue;
     /** Per output: true when its contributions are merged per term (ACCU MAX, uniform weight/ACT). */
     private boolean[] merged;
     private double[] mergedWeight;
@@ -120,6 +129,25 @@ public final class CompiledEvaluator {
             inputSlots[i] = plan.slotByName.get(plan.inputNames.get(i));
         }
         this.outputSlots = plan.outputSlots.clone();
+        this.inputOfSlot = new int[values.length];
+        this.outputOfSlot = new int[values.length];
+        java.util.Arrays.fill(inputOfSlot, -1);
+        java.util.Arrays.fill(outputOfSlot, -1);
+        for (int i = 0; i < nIn; i++) {
+            inputOfSlot[inputSlots[i]] = i;
+        }
+        for (int i = 0; i < outputSlots.length; i++) {
+            outputOfSlot[outputSlots[i]] = i;
+        }
+        int slots = values.length;
+        this.integerSlot = new boolean[slots];
+        this.minSlot = new double[slots];
+        this.maxSlot = new double[slots];
+        for (int s = 0; s < slots; s++) {
+            integerSlot[s] = plan.types[s].isInteger();
+            minSlot[s] = plan.types[s].min();
+            maxSlot[s] = plan.types[s].max();
+        }
         if (flat(plan)) {
             this.fallback = null;
             compileTerms();
@@ -345,6 +373,15 @@ public final class CompiledEvaluator {
         }
         accStart[n] = accAt;
         acc = new double[accAt];
+        accValue = new double[accAt];
+        for (int o = 0; o < n; o++) {
+            if (outputs[o].singletons()) {
+                int[] shapes = outputs[o].termShapes();
+                for (int t = 0; t < shapes.length; t++) {
+                    accValue[accStart[o] + t] = plan.shapes[shapes[t]].sortedX[0];
+                }
+            }
+        }
         mergedWeight = mw.stream().mapToDouble(Double::doubleValue).toArray();
         mergedProd = new boolean[mp.size()];
         for (int i = 0; i < mergedProd.length; i++) {
@@ -425,10 +462,8 @@ public final class CompiledEvaluator {
     /** The index of a VAR_INPUT (case-insensitive name), for {@link #setInput(int, double)}. */
     public int inputIndex(String name) throws EvaluationException {
         int slot = slot(name);
-        for (int i = 0; i < inputSlots.length; i++) {
-            if (inputSlots[i] == slot) {
-                return i;
-            }
+        if (inputOfSlot[slot] >= 0) {
+            return inputOfSlot[slot];
         }
         throw new EvaluationException(EvaluationException.NOT_AN_INPUT,
                 "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
@@ -437,10 +472,8 @@ public final class CompiledEvaluator {
     /** The index of a VAR_OUTPUT (case-insensitive name), for {@link #output(int)}. */
     public int outputIndex(String name) throws EvaluationException {
         int slot = slot(name);
-        for (int i = 0; i < outputSlots.length; i++) {
-            if (outputSlots[i] == slot) {
-                return i;
-            }
+        if (outputOfSlot[slot] >= 0) {
+            return outputOfSlot[slot];
         }
         throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
                 "'" + plan.variableNames[slot] + "' is not a VAR_OUTPUT of function block '" + plan.name + "'");
@@ -468,6 +501,10 @@ public final class CompiledEvaluator {
             return;
         }
         int slot = inputSlots[index];
+        if (!integerSlot[slot] && value >= minSlot[slot] && value <= maxSlot[slot]) {
+            values[slot] = value;   // the common case: a real in range (NaN fails both compares)
+            return;
+        }
         if (!Double.isFinite(value)) {
             throw new EvaluationException(EvaluationException.NOT_FINITE,
                     "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
@@ -495,9 +532,9 @@ public final class CompiledEvaluator {
     }
 
     private void store(int slot, double value) throws EvaluationException {
-        DataType type = plan.types[slot];
-        double v = type.isInteger() ? Conversions.roundHalfAwayFromZero(value) : value;
-        if (v < type.min() || v > type.max()) {
+        double v = integerSlot[slot] ? Conversions.roundHalfAwayFromZero(value) : value;
+        if (v < minSlot[slot] || v > maxSlot[slot]) {
+            DataType type = plan.types[slot];
             throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
@@ -514,6 +551,7 @@ public final class CompiledEvaluator {
         }
         fuzzify();
         java.util.Arrays.fill(acc, 0.0);
+        java.util.Arrays.fill(recorded, 0.0);
         runRules();
         for (int o = 0; o < outputs.length; o++) {
             defuzzify(o);
@@ -575,19 +613,19 @@ public final class CompiledEvaluator {
                 case SINGLE -> a = d[opd[s]];
                 case AND_MIN -> {
                     a = d[opd[s]];
-                    for (int k = s + 1; k < e; k++) {
+                    for (int k = s + 1; k < e && a > 0; k++) {
                         a = Math.min(a, d[opd[k]]);
                     }
                 }
                 case AND_PROD -> {
                     a = d[opd[s]];
-                    for (int k = s + 1; k < e; k++) {
+                    for (int k = s + 1; k < e && a > 0; k++) {
                         a = a * d[opd[k]];
                     }
                 }
                 case AND_BDIF -> {
                     a = d[opd[s]];
-                    for (int k = s + 1; k < e; k++) {
+                    for (int k = s + 1; k < e && a > 0; k++) {
                         a = Math.max(0.0, a + d[opd[k]] - 1.0);
                     }
                 }
@@ -611,6 +649,11 @@ public final class CompiledEvaluator {
                     }
                 }
                 default -> a = general(opd[s]);
+            }
+            if (a == 0) {
+                // w * 0 leaves every accumulator as it is (max, bounded or plain sums, PROBOR), and the
+                // recorded degrees were cleared: a rule that does not fire has nothing to conclude
+                continue;
             }
             for (int c = conclusionStart[r]; c < conclusionStart[r + 1]; c++) {
                 int target = conclusionTarget[c];
@@ -730,30 +773,27 @@ public final class CompiledEvaluator {
             }
         }
         int[] shapes = out.termShapes();
-        Shape[] sh = plan.shapes;
-        switch (out.method()) {
-            case COGSS -> {
-                double num = 0;
-                boolean any = false;
-                for (int t = 0; t < terms; t++) {
-                    num += sh[shapes[t]].sortedX[0] * a[b + t];
-                    any |= a[b + t] != 0;
-                }
-                return any ? num : Double.NaN;
+        double[] v = accValue;
+        DefuzzificationMethod m = out.method();
+        if (m == DefuzzificationMethod.COGS || m == DefuzzificationMethod.COG) {
+            double num = 0;
+            double den = 0;
+            for (int k = b; k < b + terms; k++) {
+                num += v[k] * a[k];
+                den += a[k];
             }
-            case LM, RM, MOM -> {
-                return extremes(out.method(), b, terms, shapes);
-            }
-            default -> {
-                double num = 0;
-                double den = 0;
-                for (int t = 0; t < terms; t++) {
-                    num += sh[shapes[t]].sortedX[0] * a[b + t];
-                    den += a[b + t];
-                }
-                return den > 0 ? num / den : Double.NaN;
-            }
+            return den > 0 ? num / den : Double.NaN;
         }
+        if (m == DefuzzificationMethod.COGSS) {
+            double num = 0;
+            boolean any = false;
+            for (int k = b; k < b + terms; k++) {
+                num += v[k] * a[k];
+                any |= a[k] != 0;
+            }
+            return any ? num : Double.NaN;
+        }
+        return extremes(m, b, terms, shapes);
     }
 
     /** LM, RM and MoM on singletons, as FunctionBlockInstance computes them. */
