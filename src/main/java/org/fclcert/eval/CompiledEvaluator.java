@@ -433,9 +433,28 @@ public final class CompiledEvaluator {
                 accAccu[k] = outputAccu[o];
             }
         }
+        minMax = true;
+        for (int op : ruleOp) {
+            minMax &= op == SINGLE || op == AND_MIN;
+        }
+        minMaxWeight = new double[conclusionKind.length];
+        for (int c = 0; c < conclusionKind.length; c++) {
+            boolean maxAcc = conclusionKind[c] == LEVEL_MAX
+                    || conclusionKind[c] == ACC_SINGLETON && accAccu[conclusionTarget[c]] == 0;
+            minMax &= maxAcc;
+            // max(acc, 1.0 * a) is max(acc, a) exactly, so a merged level needs no case of its own
+            minMaxWeight[c] = conclusionKind[c] == LEVEL_MAX ? 1.0 : conclusionWeight[c];
+        }
     }
 
     private int[] accAccu;
+    /**
+     * True when every rule is one term or an AND MIN over terms and every subconclusion accumulates by MAX
+     * (the usual Mamdani block): then {@link #runMinMaxRules} runs them without any opcode dispatch.
+     */
+    private boolean minMax;
+    /** For the MIN/MAX plan: the weight each subconclusion multiplies by (1 for merged point outputs). */
+    private double[] minMaxWeight;
 
     // ---------------------------------------------------------------- interface
 
@@ -552,7 +571,11 @@ public final class CompiledEvaluator {
         fuzzify();
         java.util.Arrays.fill(acc, 0.0);
         java.util.Arrays.fill(recorded, 0.0);
-        runRules();
+        if (minMax) {
+            runMinMaxRules();
+        } else {
+            runRules();
+        }
         for (int o = 0; o < outputs.length; o++) {
             defuzzify(o);
         }
@@ -661,6 +684,32 @@ public final class CompiledEvaluator {
                     case ACC_SINGLETON -> acc[target] = accumulate(accAccu[target], acc[target], conclusionWeight[c] * a);
                     case LEVEL_MAX -> acc[target] = Math.max(acc[target], a);
                     default -> recorded[target] = a;
+                }
+            }
+        }
+    }
+
+    /** {@link #runRules} for a block of MIN conditions and MAX accumulation: the same arithmetic, no dispatch. */
+    private void runMinMaxRules() {
+        final double[] d = deg;
+        final int[] opd = operand;
+        final int[] starts = ruleStart;
+        final int[] ends = ruleEnd;
+        final int[] cs = conclusionStart;
+        final int[] target = conclusionTarget;
+        final double[] w = minMaxWeight;
+        final double[] a = acc;
+        int rules = starts.length;
+        for (int r = 0; r < rules; r++) {
+            int e = ends[r];
+            double m = d[opd[starts[r]]];
+            for (int k = starts[r] + 1; k < e && m > 0; k++) {
+                m = Math.min(m, d[opd[k]]);
+            }
+            if (m > 0) {
+                for (int c = cs[r]; c < cs[r + 1]; c++) {
+                    int t = target[c];
+                    a[t] = Math.max(a[t], w[c] * m);
                 }
             }
         }
