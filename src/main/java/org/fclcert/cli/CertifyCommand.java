@@ -17,11 +17,11 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.Certification;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.orchestration.Certification;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
@@ -132,9 +132,10 @@ final class CertifyCommand implements Callable<Integer> {
         }
         Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, budget, Set.of());
         Corpus loaded = loadCorpus();
-        Certification.Request request = new Certification.Request(iut,
-                IutArguments.options(requestTimeout, classpath), classpath, loaded, corpusName(), selection, out,
-                Path.of("reports"), probe, List.of(levels, features, cases));
+        Certification.Request request = Certification.Request.builder(iut, loaded)
+                .options(IutArguments.options(requestTimeout, classpath)).classpath(classpath)
+                .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
+                .filters(levels, features, cases).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal);
         Certification.Outcome outcome;

@@ -19,10 +19,10 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.Certification;
 import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
+import org.fclcert.orchestration.Certification;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -99,12 +99,13 @@ public class CertifyMojo extends AbstractMojo {
         if (!classpath.isEmpty()) {
             options = options.withClasspath(classpath);
         }
-        Certification.Request request = new Certification.Request(iut, options,
-                classpath.isEmpty() ? null : "project test class path", corpus,
-                corpusDirectory == null ? BundledCorpus.NAME : corpusDirectory.toString(),
-                new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)),
-                reportsDirectory.toPath(), reportsDirectory.toPath(), probe ? new Prober.Options(probeCap,
-                        Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null);
+        Certification.Request request = Certification.Request.builder(iut, corpus).options(options)
+                .classpath(classpath.isEmpty() ? null : "project test class path")
+                .corpusName(corpusDirectory == null ? BundledCorpus.NAME : corpusDirectory.toString())
+                .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
+                .outDir(reportsDirectory.toPath())
+                .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
+                .build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));

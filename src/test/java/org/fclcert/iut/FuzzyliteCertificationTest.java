@@ -15,8 +15,8 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
 import org.fclcert.harness.CaseStatus;
-import org.fclcert.harness.Certification;
 import org.fclcert.harness.RunListener;
+import org.fclcert.orchestration.Certification;
 import org.fclcert.report.Report;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -33,9 +33,9 @@ class FuzzyliteCertificationTest {
     void standardProgramsAreRejectedForFuzzylitesDialectAndNegativeCasesPassOnlyAsRejections(@TempDir Path out)
             throws Exception {
         Fuzzylite.assumeInstalled();
-        Certification.Request request = new Certification.Request("fuzzylite", Fuzzylite.options(), null,
-                Corpus.load(Path.of("conformance")), "conformance", new CaseSelection(Set.of(), Set.of(), CASES),
-                out, null);
+        Certification.Request request = Certification.Request.builder("fuzzylite", Corpus.load(Path.of("conformance")))
+                .options(Fuzzylite.options()).corpusName("conformance")
+                .selection(new CaseSelection(Set.of(), Set.of(), CASES)).outDir(out).build();
         Report report = Certification.run(request, RunListener.NONE).report();
         Map<String, CaseResult> byId = report.cases().stream()
                 .collect(Collectors.toMap(CaseResult::id, Function.identity()));

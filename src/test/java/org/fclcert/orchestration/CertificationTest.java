@@ -1,4 +1,4 @@
-package org.fclcert.harness;
+package org.fclcert.orchestration;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
