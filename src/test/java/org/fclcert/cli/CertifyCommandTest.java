@@ -83,7 +83,7 @@ class CertifyCommandTest {
                 "B-FB-003", CaseStatus.PASSED, "B-FB-901", CaseStatus.FAILED), statuses(r));
         CaseResult crashed = result(r, "B-FB-002");
         assertTrue(crashed.message().startsWith("step 1 of 2: the implementation crashed"), crashed.message());
-        assertTrue(crashed.error().contains("fatal: fifth evaluation, giving up"), crashed.error());
+        assertTrue(crashed.evidence().error().contains("fatal: fifth evaluation, giving up"), crashed.evidence().error());
         assertEquals("accepted a program the standard rejects: FCL-S001 at line 14", result(r, "B-FB-901").message());
         assertEquals("fake", r.iut().name());
         assertEquals(List.of("B-FB"), r.claims().claimed());

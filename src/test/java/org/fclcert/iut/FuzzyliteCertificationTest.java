@@ -64,8 +64,8 @@ class FuzzyliteCertificationTest {
         // a DEFUZZIFY without METHOD (error at line 26) is rejected, but for ACCU inside the rule block (line 34)
         CaseResult noMethod = byId.get("N-C016-001");
         assertEquals(CaseStatus.PASSED, noMethod.status());
-        assertEquals(List.of("the implementation reports line 34; the error (FCL-C016) is at line 26"), noMethod.notes());
-        assertEquals(org.fclcert.harness.RejectionPlace.OTHER_LINE, noMethod.rejection());
+        assertEquals(List.of("the implementation reports line 34; the error (FCL-C016) is at line 26"), noMethod.verdict().notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.OTHER_LINE, noMethod.verdict().rejection());
 
         // an unclosed comment (line 42): "passes", but fuzzylite never got there - it refused CoGS, naming no line
         CaseResult unclosed = byId.get("N-S002-001");
@@ -73,15 +73,15 @@ class FuzzyliteCertificationTest {
         assertEquals("rejected: fuzzylite: [factory error] constructor of Defuzzifier <CoGS> not registered",
                 unclosed.message());
         assertEquals(List.of("the implementation gave no line for its rejection; the error is at line 42"),
-                unclosed.notes());
-        assertEquals(org.fclcert.harness.RejectionPlace.UNLOCATED, unclosed.rejection());
+                unclosed.verdict().notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.UNLOCATED, unclosed.verdict().rejection());
 
         // FUZZIFY temp never closed: rejected where the next FUZZIFY starts (line 21), the case's line
         CaseResult unclosedBlock = byId.get("N-S012-001");
         assertEquals(CaseStatus.PASSED, unclosedBlock.status());
         assertTrue(unclosedBlock.message().startsWith("rejected at line 21: fuzzylite: [syntax error] expected "
                 + "<END_FUZZIFY> before <FUZZIFY>"), unclosedBlock.message());
-        assertEquals(List.of(), unclosedBlock.notes());
+        assertEquals(List.of(), unclosedBlock.verdict().notes());
 
         assertFalse(report.basicLevel().conformant());
         assertTrue(report.features().stream().filter(r -> r.table() == 9).noneMatch(r -> r.passed() > 0));
