@@ -23,6 +23,7 @@ import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.orchestration.Certification;
+import org.fclcert.orchestration.Defaults;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -59,7 +60,7 @@ public class CertifyMojo extends AbstractMojo {
     private List<String> cases;
 
     /** Per-request timeout for the implementation, in milliseconds. */
-    @Parameter(property = "fclcert.timeoutMillis", defaultValue = "5000")
+    @Parameter(property = "fclcert.timeoutMillis", defaultValue = Defaults.TIMEOUT_MILLIS)
     private long timeoutMillis;
 
     /** Also measure the Table 11 data check list by probing (off by default: it takes up to probeBudgetSeconds). */
@@ -67,11 +68,11 @@ public class CertifyMojo extends AbstractMojo {
     private boolean probe;
 
     /** Largest size the probes try. */
-    @Parameter(property = "fclcert.probeCap", defaultValue = "4096")
+    @Parameter(property = "fclcert.probeCap", defaultValue = Defaults.CERTIFY_PROBE_CAP_TEXT)
     private long probeCap;
 
     /** Time budget of the probes, in seconds. */
-    @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = "180")
+    @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = Defaults.PROBE_BUDGET_SECONDS)
     private long probeBudgetSeconds;
 
     /** Skip this goal (also skipped with -DskipTests or -DskipITs). */

@@ -158,6 +158,12 @@ class CertifyCommandTest {
         assertEquals(2, certify("reference", "--feature", "E-HEDGES"));
         assertEquals(2, certify("reference", "--level", "expert"));
         assertEquals(2, certify("reference", "--timeout", "soon"));
+        assertTrue(err.toString().contains("Invalid value for option '--timeout': 'soon' is not a duration"),
+                err::toString);
+        assertTrue(err.toString().contains("Invalid value for option '--fail-on': expected one of [NONE, BASIC, CLAIMED,"
+                + " ANY] (case-insensitive) but was 'sometimes'"), err::toString);
+        assertTrue(err.toString().contains("Invalid value for option '--level' (LEVEL): expected one of [BASIC,"
+                + " EXTENSION, OPEN] (case-insensitive) but was 'expert'"), err::toString);
         assertEquals(2, certify("reference", "--case", "Z-*"));
         assertTrue(err.toString().contains("no case of " + CORPUS + " matches the selection"), err::toString);
     }
