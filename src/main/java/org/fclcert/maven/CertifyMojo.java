@@ -35,7 +35,10 @@ import org.fclcert.report.ReportFiles;
 @Mojo(name = "certify", defaultPhase = LifecyclePhase.INTEGRATION_TEST, threadSafe = true,
         requiresDependencyResolution = ResolutionScope.TEST)
 public class CertifyMojo extends AbstractMojo {
-    /** The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND} or {@code reference}. */
+    /**
+     * The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND},
+     * {@code fuzzylite} or {@code fuzzylite:PATH} (the fuzzylite 6.0 command line), or {@code reference}.
+     */
     @Parameter(property = "fclcert.iut", required = true)
     private String iut;
 
