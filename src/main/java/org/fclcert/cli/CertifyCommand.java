@@ -5,7 +5,6 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumSet;
@@ -28,7 +27,6 @@ import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
 import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
-import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -202,8 +200,7 @@ final class CertifyCommand implements Callable<Integer> {
     private static void reportInterruptedRun(ImplementationUnderTest impl, Path resultsFile, Path dir,
             PrintWriter err) {
         try {
-            Report report = ReportBuilder.build(ResultsFile.read(resultsFile), Instant.now());
-            ReportFiles.writeAll(report, dir);
+            Report report = Certification.rebuildReports(ResultsFile.read(resultsFile), dir);
             err.println();
             err.println("fclcert certify: interrupted after " + (report.summary().cases() - report.summary().skipped())
                     + " of " + report.summary().cases() + " cases; reports of what was done are in " + dir);
@@ -231,7 +228,7 @@ final class CertifyCommand implements Callable<Integer> {
             out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
-                + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", results.jsonl");
+                + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);
         out.flush();
     }
 

@@ -10,6 +10,7 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunCases;
@@ -257,6 +258,16 @@ public final class Certification {
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
         }
+    }
+
+    /**
+     * Builds and writes the four reports from a results file read back: {@code fclcert report --from}, and
+     * a run cut short (the cases it planned but did not finish are reported as skipped).
+     */
+    public static Report rebuildReports(ResultsFile results, Path dir) throws IOException {
+        Report report = ReportBuilder.build(results, Instant.now());
+        ReportFiles.writeAll(report, dir);
+        return report;
     }
 
     /**
