@@ -42,7 +42,7 @@ public final class LoadedProgram {
                 return b;
             }
         }
-        throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                 "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
     }
 }
