@@ -484,7 +484,7 @@ public final class CompiledEvaluator {
         if (inputOfSlot[slot] >= 0) {
             return inputOfSlot[slot];
         }
-        throw new EvaluationException(EvaluationException.NOT_AN_INPUT,
+        throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
                 "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
     }
 
@@ -494,7 +494,7 @@ public final class CompiledEvaluator {
         if (outputOfSlot[slot] >= 0) {
             return outputOfSlot[slot];
         }
-        throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                 "'" + plan.variableNames[slot] + "' is not a VAR_OUTPUT of function block '" + plan.name + "'");
     }
 
@@ -504,7 +504,7 @@ public final class CompiledEvaluator {
             slot = plan.slotByName.get(Names.key(name));
         }
         if (slot == null) {
-            throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                     "function block '" + plan.name + "' has no variable '" + name + "'");
         }
         return slot;
@@ -525,7 +525,7 @@ public final class CompiledEvaluator {
             return;
         }
         if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationException.NOT_FINITE,
+            throw new EvaluationException(EvaluationCode.NOT_FINITE,
                     "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
         }
         store(slot, value);
@@ -554,7 +554,7 @@ public final class CompiledEvaluator {
         double v = integerSlot[slot] ? Conversions.roundHalfAwayFromZero(value) : value;
         if (v < minSlot[slot] || v > maxSlot[slot]) {
             DataType type = plan.types[slot];
-            throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value + " of '"
+            throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
         values[slot] = v;
@@ -789,7 +789,7 @@ public final class CompiledEvaluator {
         }
         if (Double.isNaN(result)) {
             if (!empty) {
-                throw new EvaluationException(EvaluationException.NO_RESULT, "defuzzification of '"
+                throw new EvaluationException(EvaluationCode.NO_RESULT, "defuzzification of '"
                         + out.variable() + "' has no numeric result (the arithmetic overflowed)");
             }
             if (out.noChange()) {
@@ -802,7 +802,7 @@ public final class CompiledEvaluator {
             }
         }
         if (!Double.isFinite(result)) {
-            throw new EvaluationException(EvaluationException.NO_RESULT,
+            throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + out.variable() + "' overflowed (result " + result + ")");
         }
         store(out.slot(), result);
