@@ -17,6 +17,18 @@ public final class EvaluationException extends Exception {
     public static final String OUT_OF_RANGE = "FCL-V004";
     /** A defuzzification whose result is not a finite number (overflow in the arithmetic). */
     public static final String NO_RESULT = "FCL-V005";
+    /**
+     * An output without RANGE whose set is unbounded at run time: a fired term, its variable points re-sorted,
+     * is non-zero at its first or last point (the static case is FCL-C025).
+     */
+    public static final String UNBOUNDED = "FCL-V006";
+
+    /** FCL-V006 for output {@code variable}, whose fired term keeps a positive degree beyond {@code at}. */
+    static EvaluationException unbounded(String variable, double at) {
+        return new EvaluationException(UNBOUNDED, "the set of output '" + variable + "' is unbounded: a fired term"
+                + " is non-zero at its outer point " + at + " (its points come from variables) and the output has no"
+                + " RANGE; declare a RANGE (5.2.3) or keep the variable points inside the term");
+    }
 
     private final String code;
 

@@ -31,4 +31,26 @@ public final class LoadedProgram {
         throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
                 "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
     }
+
+    /** A fresh exact-path instance of the first function block, numbers read as {@link NumberReading#DECIMAL}. */
+    public ExactInstance newExactInstance() {
+        return new ExactInstance(blocks.get(0), NumberReading.DECIMAL);
+    }
+
+    /**
+     * A fresh exact-path instance of the named function block (case-insensitive; null: the first) under the
+     * given reading of numbers.
+     */
+    public ExactInstance newExactInstance(String blockName, NumberReading reading) throws EvaluationException {
+        if (blockName == null) {
+            return new ExactInstance(blocks.get(0), reading);
+        }
+        for (BlockPlan b : blocks) {
+            if (Names.same(b.name, blockName)) {
+                return new ExactInstance(b, reading);
+            }
+        }
+        throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+                "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
+    }
 }
