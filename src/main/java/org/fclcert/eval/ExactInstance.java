@@ -53,6 +53,8 @@ public final class ExactInstance {
     private final ExactSet set = new ExactSet();
     private final SmoothSet[] smoothSets;
     private boolean exact = true;
+    /** Per slot: the last value stored was rounded to an integer type from (within 1e-9 of) a half-integer. */
+    private final boolean[] nearHalf;
     private final Map<Double, Rational> weights = new java.util.HashMap<>();
 
     ExactInstance(BlockPlan plan, NumberReading reading) {
@@ -64,6 +66,7 @@ public final class ExactInstance {
             initial[i] = reading.read(plan.initialValues[i]);
         }
         this.values = initial.clone();
+        this.nearHalf = new boolean[nv];
         int shapes = plan.shapes.length;
         curX = new Rational[shapes][];
         curY = new Rational[shapes][];
@@ -149,6 +152,22 @@ public final class ExactInstance {
         return toDouble(values[slot(name)]);
     }
 
+    /**
+     * Whether the output's last value was rounded to its integer type from a value within 1e-9 (relative above
+     * 1) of a half-integer: a rounding decision that the last bits of any floating-point computation decide.
+     */
+    boolean roundedNearHalf(String name) throws EvaluationException {
+        return nearHalf[slot(name)];
+    }
+
+    private static final Rational HALF_BAND = Rational.of(java.math.BigInteger.ONE, java.math.BigInteger.TEN.pow(9));
+
+    private static boolean nearHalfInteger(Rational v) {
+        Rational a = v.abs();
+        Rational frac = a.subtract(Rational.of(a.num.divide(a.den), java.math.BigInteger.ONE));
+        return frac.subtract(Rational.HALF).abs().compareTo(HALF_BAND.multiply(a.max(Rational.ONE))) <= 0;
+    }
+
     /** The exact current value of a variable (null for NaN). */
     Rational exactValue(String name) throws EvaluationException {
         return values[slot(name)];
@@ -208,6 +227,7 @@ public final class ExactInstance {
         }
         DataType type = plan.types[slot];
         Rational v = type.isInteger() ? value.roundHalfAwayFromZero() : value;
+        nearHalf[slot] = type.isInteger() && nearHalfInteger(value);
         if (v.compareTo(Rational.exactly(type.min())) < 0 || v.compareTo(Rational.exactly(type.max())) > 0) {
             throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value.toDouble() + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);

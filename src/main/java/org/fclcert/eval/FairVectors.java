@@ -19,6 +19,9 @@ import java.util.function.DoubleUnaryOperator;
  * <li>each input set by the vectors nudged one ulp up, then one ulp down (in every step);</li>
  * <li>all those inputs nudged up together, and down together.</li>
  * </ul>
+ * and, as a direct test of the one decision no nudge need reveal, an integer-typed output whose exact value
+ * before rounding is within 1e-9 of a half-integer is a knife edge too (a flat set's CoG of exactly 57.5
+ * stays 57.5 under every nudge, yet a double computation may give 57.49999999999999).
  * A step whose outputs differ beyond the agreement under any perturbation (or that fails under one and not the
  * other) is a <em>knife edge</em>: its expected value rests on a tie that rounding may break either way (a clip
  * level exactly at a vertex that decides LM, two equal maxima, an integer output at exactly .5, an input exactly
@@ -120,6 +123,13 @@ public final class FairVectors {
         }
         List<KnifeEdge> edges = new ArrayList<>();
         for (int i = 0; i < steps.size(); i++) {
+            if (i < reference.halfway.size() && reference.halfway.get(i) != null) {
+                String out = reference.halfway.get(i);
+                double value = reference.outputs.get(i).get(out);
+                edges.add(new KnifeEdge(i + 1, out, value, value + (value > 0 ? -1 : 1),
+                        "rounding to the integer type from (within 1e-9 of) a half-integer", ""));
+                continue;
+            }
             for (Run other : runs) {
                 KnifeEdge k = compare(i, reference, other, agreement);
                 if (k != null) {
@@ -162,6 +172,8 @@ public final class FairVectors {
         final String name;
         final List<Map<String, Double>> outputs = new ArrayList<>();
         final List<String> errors = new ArrayList<>();
+        /** Per step: an output rounded to its integer type from a half-integer, else null. */
+        final List<String> halfway = new ArrayList<>();
         boolean exact = true;
 
         Run(String name) {
@@ -188,9 +200,17 @@ public final class FairVectors {
                 fb.evaluate();
                 run.outputs.add(new LinkedHashMap<>(fb.outputs()));
                 run.errors.add(null);
+                String half = null;
+                for (String out : fb.outputNames()) {
+                    if (half == null && fb.roundedNearHalf(out)) {
+                        half = out;
+                    }
+                }
+                run.halfway.add(half);
             } catch (EvaluationException e) {
                 run.outputs.add(Map.of());
                 run.errors.add(e.toString());
+                run.halfway.add(null);
                 break;
             }
         }
