@@ -55,7 +55,7 @@ class FastExactAgreementTest {
                 failures.add("program " + p + ": " + e);
             }
         });
-        if (Boolean.getBoolean("fclcert.verbose")) {
+        if (System.getenv("FCLCERT_VERBOSE") != null) {
             System.err.println("programs " + PROGRAMS + ", vectors compared " + compared + ", fired " + fired
                     + ", differing " + differing + ", knife edges " + knifeEdges);
         }
