@@ -11,6 +11,9 @@ import java.util.Set;
 import org.fclcert.check.Analysis;
 import org.fclcert.check.FeatureDetector;
 import org.fclcert.check.FeatureReport;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FairVectors;
+import org.fclcert.eval.LoadedProgram;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Feature;
@@ -130,6 +133,42 @@ public final class CorpusLint {
             Program program = analysis.program().get();
             features(program);
             VectorReplay.check(c, program).forEach(m -> finding(vectorsLine(), m));
+            fairness(program);
+        }
+
+        /**
+         * Every vector is fair to judge (FairVectors, docs/semantics.md point 10) unless the case flags it
+         * {@code knife-edge:<n>}; a flagged vector must really be one, and a case needs one fair vector.
+         */
+        private void fairness(Program program) {
+            LoadedProgram loaded = Evaluator.load(program);
+            OutputScales scales = OutputScales.of(blockOf(c, program));
+            FairVectors.Verdict verdict;
+            try {
+                verdict = FairVectors.judge(loaded, c.block().orElse(null),
+                        c.vectors().stream().map(Vector::in).toList(),
+                        (out, a, b) -> c.tolerance().compare(out, a, b, scales.width(out)).passed());
+            } catch (IllegalArgumentException e) {
+                finding(vectorsLine(), "the vectors cannot be judged for fairness: " + e.getMessage());
+                return;
+            }
+            java.util.SortedSet<Integer> flagged = c.knifeEdges();
+            for (FairVectors.KnifeEdge k : verdict.knifeEdges()) {
+                if (!flagged.contains(k.step())) {
+                    finding(vectorsLine(), "vector " + k.step() + " is a knife edge, not fair to judge: " + k
+                            + "; move the inputs off the tie, or flag the case knife-edge:" + k.step());
+                }
+            }
+            for (int step : flagged) {
+                if (step > c.vectors().size()) {
+                    finding(1, "flag knife-edge:" + step + " names a vector the case does not have");
+                } else if (verdict.fair(step)) {
+                    finding(1, "flag knife-edge:" + step + ", but vector " + step + " is fair to judge; remove the flag");
+                }
+            }
+            if (!c.vectors().isEmpty() && flagged.size() >= c.vectors().size()) {
+                finding(vectorsLine(), "every vector is flagged knife-edge: a case needs at least one fair vector");
+            }
         }
 
         private void negative(Analysis analysis) {

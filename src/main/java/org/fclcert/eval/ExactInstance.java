@@ -154,7 +154,8 @@ public final class ExactInstance {
 
     /**
      * Whether the output's last value was rounded to its integer type from a value within 1e-9 (relative above
-     * 1) of a half-integer: a rounding decision that the last bits of any floating-point computation decide.
+     * 1) of a half-integer but not exactly one: a rounding decision that the last bits of any floating-point
+     * computation decide.
      */
     boolean roundedNearHalf(String name) throws EvaluationException {
         return nearHalf[slot(name)];
@@ -165,7 +166,9 @@ public final class ExactInstance {
     private static boolean nearHalfInteger(Rational v) {
         Rational a = v.abs();
         Rational frac = a.subtract(Rational.of(a.num.divide(a.den), java.math.BigInteger.ONE));
-        return frac.subtract(Rational.HALF).abs().compareTo(HALF_BAND.multiply(a.max(Rational.ONE))) <= 0;
+        Rational off = frac.subtract(Rational.HALF).abs();
+        // exactly .5 is decided by the exact rounding; FairVectors' double-arithmetic run tells whether doubles miss it
+        return off.signum() != 0 && off.compareTo(HALF_BAND.multiply(a.max(Rational.ONE))) <= 0;
     }
 
     /** The exact current value of a variable (null for NaN). */

@@ -16,12 +16,21 @@ import java.util.function.DoubleUnaryOperator;
  * equally well apply:
  * <ul>
  * <li>the other reading of numbers ({@link NumberReading#BINARY}: literals and inputs as their exact doubles);</li>
- * <li>each input set by the vectors nudged one ulp up, then one ulp down (in every step);</li>
+ * <li>double arithmetic: the fast path ({@link FunctionBlockInstance});</li>
+ * <li>each input set by the vectors nudged one ulp up, then one ulp down (in every step), except in a step
+ * where another input has the same value: equal inputs are equal in every arithmetic, so a tie between them is
+ * no knife edge;</li>
  * <li>all those inputs nudged up together, and down together.</li>
  * </ul>
- * and, as a direct test of the one decision no nudge need reveal, an integer-typed output whose exact value
- * before rounding is within 1e-9 of a half-integer is a knife edge too (a flat set's CoG of exactly 57.5
- * stays 57.5 under every nudge, yet a double computation may give 57.49999999999999).
+ * An input is not nudged in a step where its value equals a number written in the program (a point's x or
+ * degree, a singleton, a weight, a RANGE bound) or is 0 or 1: it then is the same number in every arithmetic
+ * (both are read alike), interpolation and comparison at it are exact everywhere, and nudging it would test
+ * the program's continuity rather than the arithmetic (an input exactly at a term's foot, where the rule stops
+ * firing, is a fair test of DEFAULT).
+ * An integer-typed output whose exact value before rounding is within 1e-9 of a half-integer, but not exactly one,
+ * is a knife edge outright (the rounding is decided by bits no arithmetic need get right). One exactly at .5
+ * stays .5 under every nudge (a flat set's CoG of 57.5), so the double-arithmetic run decides: if doubles give
+ * 57.49999999999999, the vector is a knife edge; if they give 57.5 exactly (dyadic data), it is fair.
  * A step whose outputs differ beyond the agreement under any perturbation (or that fails under one and not the
  * other) is a <em>knife edge</em>: its expected value rests on a tie that rounding may break either way (a clip
  * level exactly at a vertex that decides LM, two equal maxima, an integer output at exactly .5, an input exactly
@@ -105,20 +114,27 @@ public final class FairVectors {
         Set<String> inputs = new LinkedHashSet<>();
         steps.forEach(s -> inputs.addAll(s.keySet()));
         List<Run> runs = new ArrayList<>();
-        Run reference = run(program, block, steps, NumberReading.DECIMAL, name -> false, v -> v,
+        Run reference = run(program, block, steps, NumberReading.DECIMAL, (n, v) -> false, v -> v,
                 "fclcert's reading");
-        runs.add(run(program, block, steps, NumberReading.BINARY, name -> false, v -> v,
+        runs.add(run(program, block, steps, NumberReading.BINARY, (n, v) -> false, v -> v,
                 "literals and inputs read as their exact binary doubles"));
+        runs.add(fast(program, block, steps));
+        BlockPlan plan = program.plan(block);
+        Set<Double> literals = plan == null ? Set.of() : literals(plan);
+        java.util.function.BiPredicate<String, Double> nudgeable = (name, v) -> !literals.contains(v);
         for (String in : inputs) {
-            runs.add(run(program, block, steps, NumberReading.DECIMAL, in::equals, Math::nextUp,
-                    "input " + in + " one ulp up"));
-            runs.add(run(program, block, steps, NumberReading.DECIMAL, in::equals, Math::nextDown,
+            // alone only where no other input of the step has the same value (equal inputs stay equal everywhere)
+            java.util.function.BiPredicate<String, Double> alone = (n, v) -> n.equals(in) && nudgeable.test(n, v)
+                    && steps.stream().noneMatch(st -> v.equals(st.get(in)) && st.entrySet().stream()
+                            .anyMatch(e -> !e.getKey().equals(in) && v.equals(e.getValue())));
+            runs.add(run(program, block, steps, NumberReading.DECIMAL, alone, Math::nextUp, "input " + in + " one ulp up"));
+            runs.add(run(program, block, steps, NumberReading.DECIMAL, alone, Math::nextDown,
                     "input " + in + " one ulp down"));
         }
         if (inputs.size() > 1) {
-            runs.add(run(program, block, steps, NumberReading.DECIMAL, inputs::contains, Math::nextUp,
+            runs.add(run(program, block, steps, NumberReading.DECIMAL, nudgeable, Math::nextUp,
                     "every input one ulp up"));
-            runs.add(run(program, block, steps, NumberReading.DECIMAL, inputs::contains, Math::nextDown,
+            runs.add(run(program, block, steps, NumberReading.DECIMAL, nudgeable, Math::nextDown,
                     "every input one ulp down"));
         }
         List<KnifeEdge> edges = new ArrayList<>();
@@ -127,7 +143,7 @@ public final class FairVectors {
                 String out = reference.halfway.get(i);
                 double value = reference.outputs.get(i).get(out);
                 edges.add(new KnifeEdge(i + 1, out, value, value + (value > 0 ? -1 : 1),
-                        "rounding to the integer type from (within 1e-9 of) a half-integer", ""));
+                        "rounding to the integer type from within 1e-9 of a half-integer", ""));
                 continue;
             }
             for (Run other : runs) {
@@ -181,8 +197,71 @@ public final class FairVectors {
         }
     }
 
+    /** Every number written in the block (points, singletons, weights, ranges, defaults), and 0 and 1. */
+    private static Set<Double> literals(BlockPlan plan) {
+        Set<Double> out = new java.util.HashSet<>();
+        out.add(0.0);
+        out.add(-0.0);
+        out.add(1.0);
+        for (Shape s : plan.shapes) {
+            for (int i = 0; i < s.n; i++) {
+                if (s.xSlot[i] < 0) {
+                    out.add(s.xConst[i]);
+                }
+                if (s.ySlot[i] < 0) {
+                    out.add(s.yConst[i]);
+                }
+            }
+        }
+        for (BlockPlan.OutputPlan o : plan.outputs) {
+            if (o.hasRange()) {
+                out.add(o.rangeMin());
+                out.add(o.rangeMax());
+            }
+        }
+        for (BlockPlan.RuleBlockPlan rb : plan.ruleBlocks) {
+            for (BlockPlan.SubconclusionPlan[] scs : rb.conclusions()) {
+                for (BlockPlan.SubconclusionPlan sc : scs) {
+                    if (sc.weightSlot() < 0) {
+                        out.add(sc.weightConst());
+                    }
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The fast double path as one more arithmetic. */
+    private static Run fast(LoadedProgram program, String block, List<Map<String, Double>> steps) {
+        Run run = new Run("double arithmetic (the fast path)");
+        FunctionBlockInstance fb;
+        try {
+            fb = block == null ? program.newInstance() : program.newInstance(block);
+        } catch (EvaluationException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+        for (Map<String, Double> step : steps) {
+            try {
+                for (Map.Entry<String, Double> in : step.entrySet()) {
+                    fb.set(in.getKey(), in.getValue());
+                }
+                fb.evaluate();
+                run.outputs.add(new LinkedHashMap<>(fb.outputs()));
+                run.errors.add(null);
+                run.halfway.add(null);
+            } catch (EvaluationException e) {
+                run.outputs.add(Map.of());
+                run.errors.add(e.toString());
+                run.halfway.add(null);
+                break;
+            }
+        }
+        return run;
+    }
+
     private static Run run(LoadedProgram program, String block, List<Map<String, Double>> steps,
-            NumberReading reading, java.util.function.Predicate<String> nudged, DoubleUnaryOperator nudge, String name) {
+            NumberReading reading, java.util.function.BiPredicate<String, Double> nudged, DoubleUnaryOperator nudge,
+            String name) {
         Run run = new Run(name);
         ExactInstance fb;
         try {
@@ -195,7 +274,7 @@ public final class FairVectors {
             try {
                 for (Map.Entry<String, Double> in : step.entrySet()) {
                     double v = in.getValue();
-                    fb.set(in.getKey(), nudged.test(in.getKey()) && Double.isFinite(v) ? nudge.applyAsDouble(v) : v);
+                    fb.set(in.getKey(), Double.isFinite(v) && nudged.test(in.getKey(), v) ? nudge.applyAsDouble(v) : v);
                 }
                 fb.evaluate();
                 run.outputs.add(new LinkedHashMap<>(fb.outputs()));

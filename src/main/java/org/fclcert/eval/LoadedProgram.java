@@ -32,6 +32,14 @@ public final class LoadedProgram {
                 "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
     }
 
+    /** The plan of the named block (null: the first), for FairVectors; null when there is none. */
+    BlockPlan plan(String blockName) {
+        if (blockName == null) {
+            return blocks.get(0);
+        }
+        return blocks.stream().filter(b -> Names.same(b.name, blockName)).findFirst().orElse(null);
+    }
+
     /** A fresh exact-path instance of the first function block, numbers read as {@link NumberReading#DECIMAL}. */
     public ExactInstance newExactInstance() {
         return new ExactInstance(blocks.get(0), NumberReading.DECIMAL);
