@@ -45,6 +45,11 @@ public record CaseResult(
         exportStatus = exportStatus == null ? ExportStatus.NOT_RUN : exportStatus;
     }
 
+    /** The 1-based steps reported as not judged: the vectors the case flags {@code knife-edge:<n>}. */
+    public java.util.SortedSet<Integer> notJudgedSteps() {
+        return Flags.knifeEdges(flags);
+    }
+
     public boolean interpretation() {
         return Flags.interpretation(flags).isPresent();
     }
