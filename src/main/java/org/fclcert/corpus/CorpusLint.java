@@ -132,7 +132,11 @@ public final class CorpusLint {
             }
             Program program = analysis.program().get();
             features(program);
-            VectorReplay.check(c, program).forEach(m -> finding(vectorsLine(), m));
+            List<String> wrong = VectorReplay.check(c, program);
+            if (!wrong.isEmpty()) {
+                int line = vectorsLine();
+                wrong.forEach(m -> finding(line, m));
+            }
             fairness(program);
         }
 
@@ -141,6 +145,8 @@ public final class CorpusLint {
          * {@code knife-edge:<n>}; a flagged vector must really be one, and a case needs one fair vector.
          */
         private void fairness(Program program) {
+            int[] line = {0};   // the vectors' line, read once and only when there is a finding
+            java.util.function.IntSupplier at = () -> line[0] > 0 ? line[0] : (line[0] = vectorsLine());
             LoadedProgram loaded = Evaluator.load(program);
             OutputScales scales = OutputScales.of(blockOf(c, program));
             FairVectors.Verdict verdict;
@@ -149,13 +155,13 @@ public final class CorpusLint {
                         c.vectors().stream().map(Vector::in).toList(),
                         (out, a, b) -> c.tolerance().compare(out, a, b, scales.width(out)).passed());
             } catch (IllegalArgumentException e) {
-                finding(vectorsLine(), "the vectors cannot be judged for fairness: " + e.getMessage());
+                finding(at.getAsInt(), "the vectors cannot be judged for fairness: " + e.getMessage());
                 return;
             }
             java.util.SortedSet<Integer> flagged = c.knifeEdges();
             for (FairVectors.KnifeEdge k : verdict.knifeEdges()) {
                 if (!flagged.contains(k.step())) {
-                    finding(vectorsLine(), "vector " + k.step() + " is a knife edge, not fair to judge: " + k
+                    finding(at.getAsInt(), "vector " + k.step() + " is a knife edge, not fair to judge: " + k
                             + "; move the inputs off the tie, or flag the case knife-edge:" + k.step());
                 }
             }
@@ -167,7 +173,7 @@ public final class CorpusLint {
                 }
             }
             if (!c.vectors().isEmpty() && flagged.size() >= c.vectors().size()) {
-                finding(vectorsLine(), "every vector is flagged knife-edge: a case needs at least one fair vector");
+                finding(at.getAsInt(), "every vector is flagged knife-edge: a case needs at least one fair vector");
             }
         }
 
@@ -211,22 +217,22 @@ public final class CorpusLint {
             }
         }
 
+        /** The line of {@code vectors:} in the case file (1 if none); a file that cannot be read again is a finding. */
         private int vectorsLine() {
-            List<String> lines = readLines();
+            List<String> lines;
+            try {
+                lines = Files.readAllLines(c.path());
+            } catch (IOException | RuntimeException e) {   // read once already: a race or a disk fault, never ignored
+                finding(1, "cannot read the case file again to place its vector findings ("
+                        + e.getClass().getSimpleName() + ": " + e.getMessage() + "); they are shown at line 1");
+                return 1;
+            }
             for (int i = 0; i < lines.size(); i++) {
                 if (lines.get(i).startsWith("vectors:")) {
                     return i + 1;
                 }
             }
             return 1;
-        }
-
-        private List<String> readLines() {
-            try {
-                return Files.readAllLines(c.path());
-            } catch (IOException e) {
-                return List.of();
-            }
         }
 
         private void finding(int line, String message) {

@@ -137,11 +137,11 @@ public final class ExactInstance {
     public void set(String name, double value) throws EvaluationException {
         int slot = slot(name);
         if (!plan.isInput[slot]) {
-            throw new EvaluationException(EvaluationException.NOT_AN_INPUT,
+            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
                     "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
         }
         if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationException.NOT_FINITE,
+            throw new EvaluationException(EvaluationCode.NOT_FINITE,
                     "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
         }
         store(slot, reading.read(value));
@@ -217,7 +217,7 @@ public final class ExactInstance {
             slot = plan.slotByName.get(Names.key(name));
         }
         if (slot == null) {
-            throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                     "function block '" + plan.name + "' has no variable '" + name + "'");
         }
         return slot;
@@ -232,7 +232,7 @@ public final class ExactInstance {
         Rational v = type.isInteger() ? value.roundHalfAwayFromZero() : value;
         nearHalf[slot] = type.isInteger() && nearHalfInteger(value);
         if (v.compareTo(Rational.exactly(type.min())) < 0 || v.compareTo(Rational.exactly(type.max())) > 0) {
-            throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value.toDouble() + " of '"
+            throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value.toDouble() + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
         values[slot] = v;
@@ -412,7 +412,7 @@ public final class ExactInstance {
             double r = smooth(o, smoothSets[i]);
             empty = smoothSets[i].empty();
             if (Double.isNaN(r) && !empty || Double.isInfinite(r)) {
-                throw new EvaluationException(EvaluationException.NO_RESULT,
+                throw new EvaluationException(EvaluationCode.NO_RESULT,
                         "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
             }
             result = empty ? null : Rational.exactly(r);

@@ -149,8 +149,8 @@ class DecisionPointTest {
         assertEquals(14.0 / 3, f.get("y"), 1e-12);
         e.set("p", 6);
         f.set("p", 6);
-        assertEquals(EvaluationException.UNBOUNDED, assertThrows(EvaluationException.class, e::evaluate).code());
-        assertEquals(EvaluationException.UNBOUNDED, assertThrows(EvaluationException.class, f::evaluate).code());
+        assertEquals(EvaluationCode.UNBOUNDED.code(), assertThrows(EvaluationException.class, e::evaluate).code());
+        assertEquals(EvaluationCode.UNBOUNDED.code(), assertThrows(EvaluationException.class, f::evaluate).code());
         // not fired (x = 0): nothing is unbounded, DEFAULT
         e.set("x", 0);
         f.set("x", 0);
