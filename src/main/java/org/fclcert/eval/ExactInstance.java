@@ -55,6 +55,7 @@ public final class ExactInstance {
     private boolean exact = true;
     /** Per slot: the last value stored was rounded to an integer type from (within 1e-9 of) a half-integer. */
     private final boolean[] nearHalf;
+    private final boolean[] exactHalf;
     private final Map<Double, Rational> weights = new java.util.HashMap<>();
 
     ExactInstance(BlockPlan plan, NumberReading reading) {
@@ -67,6 +68,7 @@ public final class ExactInstance {
         }
         this.values = initial.clone();
         this.nearHalf = new boolean[nv];
+        this.exactHalf = new boolean[nv];
         int shapes = plan.shapes.length;
         curX = new Rational[shapes][];
         curY = new Rational[shapes][];
@@ -161,6 +163,11 @@ public final class ExactInstance {
         return nearHalf[slot(name)];
     }
 
+    /** Whether the output's last value was rounded to its integer type from exactly a half-integer. */
+    boolean roundedFromExactHalf(String name) throws EvaluationException {
+        return exactHalf[slot(name)];
+    }
+
     private static final Rational HALF_BAND = Rational.of(java.math.BigInteger.ONE, java.math.BigInteger.TEN.pow(9));
 
     private static boolean nearHalfInteger(Rational v) {
@@ -231,6 +238,8 @@ public final class ExactInstance {
         DataType type = plan.types[slot];
         Rational v = type.isInteger() ? value.roundHalfAwayFromZero() : value;
         nearHalf[slot] = type.isInteger() && nearHalfInteger(value);
+        exactHalf[slot] = type.isInteger() && !value.den.equals(java.math.BigInteger.ONE)
+                && value.den.equals(java.math.BigInteger.TWO);
         if (v.compareTo(Rational.exactly(type.min())) < 0 || v.compareTo(Rational.exactly(type.max())) > 0) {
             throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value.toDouble() + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);

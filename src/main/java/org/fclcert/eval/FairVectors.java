@@ -110,15 +110,28 @@ public final class FairVectors {
      */
     public static Verdict judge(LoadedProgram program, String block, List<Map<String, Double>> steps,
             Agreement agreement) {
+        return judge(program, block, steps, agreement, true);
+    }
+
+    /**
+     * As {@link #judge(LoadedProgram, String, List, Agreement)}; without the double-arithmetic run when
+     * {@code withFastPath} is false — for the test that compares the fast path with the exact one, which must not
+     * let the fast path vouch for itself. An integer output rounded from exactly k + ½ is then a knife edge
+     * outright (doubles may compute k + ½ − 1 ulp).
+     */
+    static Verdict judge(LoadedProgram program, String block, List<Map<String, Double>> steps, Agreement agreement,
+            boolean withFastPath) {
         Objects.requireNonNull(agreement);
         Set<String> inputs = new LinkedHashSet<>();
         steps.forEach(s -> inputs.addAll(s.keySet()));
         List<Run> runs = new ArrayList<>();
         Run reference = run(program, block, steps, NumberReading.DECIMAL, (n, v) -> false, v -> v,
-                "fclcert's reading");
+                "fclcert's reading", !withFastPath);
         runs.add(run(program, block, steps, NumberReading.BINARY, (n, v) -> false, v -> v,
                 "literals and inputs read as their exact binary doubles"));
-        runs.add(fast(program, block, steps));
+        if (withFastPath) {
+            runs.add(fast(program, block, steps));
+        }
         BlockPlan plan = program.plan(block);
         Set<Double> literals = plan == null ? Set.of() : literals(plan);
         java.util.function.BiPredicate<String, Double> nudgeable = (name, v) -> !literals.contains(v);
@@ -143,7 +156,7 @@ public final class FairVectors {
                 String out = reference.halfway.get(i);
                 double value = reference.outputs.get(i).get(out);
                 edges.add(new KnifeEdge(i + 1, out, value, value + (value > 0 ? -1 : 1),
-                        "rounding to the integer type from within 1e-9 of a half-integer", ""));
+                        "rounding to the integer type at (or within 1e-9 of) a half-integer", ""));
                 continue;
             }
             for (Run other : runs) {
@@ -190,6 +203,8 @@ public final class FairVectors {
         final List<String> errors = new ArrayList<>();
         /** Per step: an output rounded to its integer type from a half-integer, else null. */
         final List<String> halfway = new ArrayList<>();
+        /** On the reference run when no double-arithmetic run can tell (see judge). */
+        boolean exactHalfIsKnifeEdge;
         boolean exact = true;
 
         Run(String name) {
@@ -262,7 +277,14 @@ public final class FairVectors {
     private static Run run(LoadedProgram program, String block, List<Map<String, Double>> steps,
             NumberReading reading, java.util.function.BiPredicate<String, Double> nudged, DoubleUnaryOperator nudge,
             String name) {
+        return run(program, block, steps, reading, nudged, nudge, name, false);
+    }
+
+    private static Run run(LoadedProgram program, String block, List<Map<String, Double>> steps,
+            NumberReading reading, java.util.function.BiPredicate<String, Double> nudged, DoubleUnaryOperator nudge,
+            String name, boolean exactHalfIsKnifeEdge) {
         Run run = new Run(name);
+        run.exactHalfIsKnifeEdge = exactHalfIsKnifeEdge;
         ExactInstance fb;
         try {
             fb = program.newExactInstance(block, reading);
@@ -281,7 +303,8 @@ public final class FairVectors {
                 run.errors.add(null);
                 String half = null;
                 for (String out : fb.outputNames()) {
-                    if (half == null && fb.roundedNearHalf(out)) {
+                    if (half == null && (fb.roundedNearHalf(out)
+                            || run.exactHalfIsKnifeEdge && fb.roundedFromExactHalf(out))) {
                         half = out;
                     }
                 }

@@ -83,8 +83,8 @@ class DecisionPointTest {
     /*
      * y : INT, singletons a := -10, b := -85, up := (0,0)(1,1), down := (0,1)(1,0), x = 0.3: degrees 0.3 and
      * 0.7, CoGS = (−10 · 0.3 − 85 · 0.7) / (0.3 + 0.7) = (−3 − 59.5) / 1 = −62.5, half away from zero: −63.
-     * The double path computes −62.49999999999999 and rounds it to −62: the vector is a knife edge (a one-ulp
-     * nudge of x moves the exact value off .5 too), which FairVectors reports.
+     * The double path computes −62.49999999999999 and rounds it to −62: the vector is a knife edge (doubles miss
+     * the exact .5), which FairVectors reports.
      */
     @Test
     void integerOutputExactlyHalfWayRoundsAwayFromZero() throws EvaluationException {
