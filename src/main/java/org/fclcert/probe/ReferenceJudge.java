@@ -9,11 +9,11 @@ import org.fclcert.check.Analysis;
 import org.fclcert.check.AnalysisMemo;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.syntax.ReaderOptions;
 
-/** The expected outputs of a probe program: the reference evaluator run on the same sequence of vectors. */
+/** The expected outputs of a probe program: the reference evaluator's exact path run on the same sequence of vectors. */
 final class ReferenceJudge {
     private ReferenceJudge() {
     }
@@ -32,7 +32,7 @@ final class ReferenceJudge {
             return new Expected(Optional.empty(), why);
         }
         try {
-            FunctionBlockInstance instance = Evaluator.load(analysis.program().get()).newInstance();
+            ExactInstance instance = Evaluator.load(analysis.program().get()).newExactInstance();
             List<Map<String, Double>> out = new ArrayList<>();
             for (Map<String, Double> v : p.vectors()) {
                 for (Map.Entry<String, Double> in : v.entrySet()) {
