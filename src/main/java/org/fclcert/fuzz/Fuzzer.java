@@ -93,7 +93,7 @@ public final class Fuzzer {
     private volatile Instant start;
 
     public Fuzzer() {
-        this(new NudgedInputs());
+        this(new ExactFairness());
     }
 
     public Fuzzer(FairnessJudge fairness) {

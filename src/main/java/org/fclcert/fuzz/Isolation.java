@@ -38,8 +38,8 @@ final class Isolation {
             Feature.B_DEFAULT_NC, Feature.E_AND_PROD, Feature.E_AND_BDIF, Feature.E_OR_ASUM, Feature.E_OR_BSUM,
             Feature.E_OR_MAX, Feature.E_NOT, Feature.E_PARENS, Feature.E_COND_VARIABLE, Feature.E_VAR_LOCAL,
             Feature.E_RULEBLOCKS, Feature.E_SUBCONCLUSIONS, Feature.E_TERM_VARIABLE_POINT, Feature.O_VAR_DEGREE,
-            Feature.O_DEGREES_0_1, Feature.E_ACT_MIN,
-            Feature.E_LM, Feature.E_RM, Feature.E_COA, Feature.O_MOM, Feature.E_COG,
+            Feature.O_DEGREES_0_1,
+            Feature.E_LM, Feature.E_RM, Feature.E_COA, Feature.O_MOM, Feature.E_COG, Feature.E_ACT_MIN,
             Feature.O_MANY_POINTS, Feature.E_IN_TERM_4, Feature.E_RANGE, Feature.E_OUT_TERM_4);
 
     private Isolation() {

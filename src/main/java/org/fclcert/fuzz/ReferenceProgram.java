@@ -7,6 +7,7 @@ import java.util.Map;
 import org.fclcert.corpus.OutputScales;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.eval.Trace;
@@ -48,6 +49,11 @@ public final class ReferenceProgram {
         return block;
     }
 
+    /** The program as the reference evaluator loaded it. */
+    public LoadedProgram loaded() {
+        return loaded;
+    }
+
     public OutputScales scales() {
         return scales;
     }
@@ -57,12 +63,21 @@ public final class ReferenceProgram {
         return stateful;
     }
 
-    /** Runs the steps in order on one fresh instance. */
+    /**
+     * Runs the steps in order on one fresh instance of the exact judging path (the expected values) and of
+     * the fast path (its trace, for the derivation).
+     */
     public List<Step> run(List<Map<String, Double>> steps) throws EvaluationException {
         FunctionBlockInstance instance = loaded.newInstance();
+        ExactInstance exact = loaded.newExactInstance();
         List<Step> out = new ArrayList<>();
         for (Map<String, Double> in : steps) {
-            out.add(step(instance, in, true));
+            Step fast = step(instance, in, true);
+            for (Map.Entry<String, Double> e : in.entrySet()) {
+                exact.set(e.getKey(), e.getValue());
+            }
+            exact.evaluate();
+            out.add(new Step(in, new LinkedHashMap<>(exact.outputs()), fast.trace()));
         }
         return out;
     }

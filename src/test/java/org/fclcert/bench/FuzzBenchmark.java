@@ -8,7 +8,6 @@ import java.util.concurrent.TimeUnit;
 import org.fclcert.check.Analysis;
 import org.fclcert.fuzz.FuzzSettings;
 import org.fclcert.fuzz.Fuzzer;
-import org.fclcert.fuzz.NudgedInputs;
 import org.fclcert.fuzz.ProgramGenerator;
 import org.fclcert.fuzz.ReferenceProgram;
 import org.fclcert.fuzz.VectorGenerator;
@@ -86,7 +85,7 @@ public class FuzzBenchmark {
     @Setup(Level.Trial)
     public void setUp() throws Exception {
         generator = new ProgramGenerator(new FuzzSettings(ConformanceLevel.byWord(level), java.util.Set.of()));
-        vectors = new VectorGenerator(new NudgedInputs());
+        vectors = new VectorGenerator(new org.fclcert.fuzz.ExactFairness());
         iut = Iuts.open(spec, IutOptions.defaults());
     }
 
