@@ -13,6 +13,7 @@ import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Names;
@@ -129,6 +130,15 @@ public final class FuzzyliteWriter implements DialectWriter {
             }
         } else if (f instanceof MembershipFunction.Points p) {
             out.append(LibraryText.points(p.points(), cx, t.name()));
+            for (int i = 1; i < p.points().size(); i++) {
+                if (p.points().get(i).x() instanceof Literal a && p.points().get(i - 1).x() instanceof Literal b
+                        && a.value() == b.value()) {
+                    cx.findings.differs(t.location(), WriterCode.VERTICAL_EDGE, "term '" + t.name() + "' has a"
+                            + " vertical edge at " + LibraryText.number(a) + "; fuzzylite's Discrete term takes another"
+                            + " degree there than fclcert (semantics.md point 1)");
+                    break;
+                }
+            }
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()
@@ -153,6 +163,11 @@ public final class FuzzyliteWriter implements DialectWriter {
         if (cx.pointTerms(d.variable()) && LibraryText.sampled(m)) {
             cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.SAMPLED,
                     "fuzzylite 6 computes " + m.keyword() + " of '" + name + "' from 100 samples of the RANGE, not exactly");
+        }
+        if (!cx.pointTerms(d.variable()) && m != DefuzzificationMethod.COGS && m != DefuzzificationMethod.COGSS) {
+            cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.IGNORED_BY_LIBRARY,
+                    "fuzzylite takes number terms as constants: its " + m.keyword() + " of the singletons of '" + name
+                            + "' is not the standard's");
         }
         if (m == DefuzzificationMethod.COGS) {
             for (Term t : d.terms()) {
@@ -194,7 +209,8 @@ public final class FuzzyliteWriter implements DialectWriter {
             out.append(IN).append("AND : ").append(and.name()).append(";\n");
             out.append(IN).append("OR : ").append(or.name()).append(";\n");
         }
-        rb.activation().ifPresent(a -> out.append(IN).append("ACT : ").append(a.value().name()).append(";\n"));
+        // fuzzylite needs an activation even for singletons (MIN, fclcert's reading of a block without ACT)
+        out.append(IN).append("ACT : ").append(rb.activation().map(a -> a.value().name()).orElse("MIN")).append(";\n");
         boolean actMin = rb.activation().map(a -> a.value() == ActivationMethod.MIN).orElse(true);
         for (RuleLines.Line line : lines) {
             String condition = LibraryConditions.fuzzylite(line.condition(), cx, and, or, line.rule().name());

@@ -26,7 +26,8 @@ public enum WriterCode {
     FIRST_BLOCK_ONLY("FCL-X205", "the library builds only the first function block"),
     IGNORED_BY_LIBRARY("FCL-X206", "a setting the library ignores or replaces by its own"),
     LEFT_OUT("FCL-X207", "a part without effect on evaluation that the library's FCL has no place for, left out"),
-    NOT_LOADED("FCL-X208", "a construct the library is known not to load");
+    NOT_LOADED("FCL-X208", "a construct the library is known not to load"),
+    VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x");
 
     private final String code;
     private final String meaning;
