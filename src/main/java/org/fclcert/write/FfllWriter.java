@@ -193,6 +193,11 @@ public final class FfllWriter implements DialectWriter {
                         + " '" + name + "' with CoG instead of " + m.keyword());
             }
             Optional<DefaultValue> def = d.defaultValue();
+            if (def.isPresent() && def.get() instanceof DefaultValue.Constant c && Double.isNaN(c.value().value())) {
+                cx.findings.lost(c.location(), WriterCode.DEFAULT, "FFLL has no DEFAULT := nan; '" + name
+                        + "' is written without DEFAULT (0)");
+                def = Optional.empty();
+            }
             boolean zero = def.isEmpty() || def.get() instanceof DefaultValue.Constant c && c.value().value() == 0;
             if (!zero) {
                 String value = def.get() instanceof DefaultValue.Constant c ? LibraryText.number(c.value()) : "NC";

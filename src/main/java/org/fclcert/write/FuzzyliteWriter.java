@@ -187,7 +187,8 @@ public final class FuzzyliteWriter implements DialectWriter {
         }
         Optional<DefaultValue> def = d.defaultValue();
         if (def.isPresent() && def.get() instanceof DefaultValue.Constant c) {
-            out.append(IN).append("DEFAULT := ").append(LibraryText.number(c.value())).append(";\n");
+            out.append(IN).append("DEFAULT := ").append(Double.isNaN(c.value().value()) ? "nan"
+                    : LibraryText.number(c.value())).append(";\n");
         } else if (def.isPresent()) {
             // fuzzylite keeps the previous value with LOCK : PREVIOUS and gives DEFAULT before the first one,
             // which is the output's initial value in fclcert (0: fuzzylite has no initial values)

@@ -160,6 +160,11 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                             + " exactly (a narrow term between samples can be missed)");
         }
         Optional<DefaultValue> def = d.defaultValue();
+        if (def.isPresent() && def.get() instanceof DefaultValue.Constant c && Double.isNaN(c.value().value())) {
+            cx.findings.lost(c.location(), WriterCode.DEFAULT, "jFuzzyLogic has no DEFAULT := nan; '" + name
+                    + "' is written with DEFAULT := 0");
+            def = Optional.empty();
+        }
         String value = def.map(v -> v instanceof DefaultValue.Constant c ? LibraryText.number(c.value()) : "NC")
                 .orElse("0");
         out.append(IN).append("DEFAULT := ").append(value).append(";\n");

@@ -97,7 +97,11 @@ final class LibraryConditions {
             return p.inner() instanceof And || p.inner() instanceof Or ? "(" + inner + ")" : inner;
         }
         if (c instanceof Not n) {
-            if (fuzzylite || n.operand() instanceof TermSubcondition || negate) {
+            Condition operand = n.operand();
+            while (operand instanceof Parenthesized p) {
+                operand = p.inner();
+            }
+            if (fuzzylite || operand instanceof TermSubcondition || negate) {
                 return write(n.operand(), !negate, cx, and, or, rule, fuzzylite);
             }
             String inner = write(n.operand(), false, cx, and, or, rule, false);
