@@ -13,7 +13,6 @@ import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
-import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Names;
@@ -130,15 +129,7 @@ public final class FuzzyliteWriter implements DialectWriter {
             }
         } else if (f instanceof MembershipFunction.Points p) {
             out.append(LibraryText.points(p.points(), cx, t.name()));
-            for (int i = 1; i < p.points().size(); i++) {
-                if (p.points().get(i).x() instanceof Literal a && p.points().get(i - 1).x() instanceof Literal b
-                        && a.value() == b.value()) {
-                    cx.findings.differs(t.location(), WriterCode.VERTICAL_EDGE, "term '" + t.name() + "' has a"
-                            + " vertical edge at " + LibraryText.number(a) + "; fuzzylite's Discrete term takes another"
-                            + " degree there than fclcert (semantics.md point 1)");
-                    break;
-                }
-            }
+            LibraryText.verticalEdge(cx, t, p);
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()

@@ -46,7 +46,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 out.append('\n');
             }
             BlockContext cx = new BlockContext(program.functionBlocks().get(i), findings);
-            cx.spelling = n -> n.startsWith("_") ? "u" + n : n;
+            cx.spelling = n -> n.startsWith("_") || RESERVED.contains(n.toUpperCase(java.util.Locale.ROOT)) ? "u" + n : n;
             functionBlock(cx, out);
         }
         return new Written(Dialect.JFUZZYLOGIC, out.toString(), findings.losses(), findings.differences());
@@ -64,7 +64,13 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             out.append(kind.keyword()).append('\n');
             for (Variable v : vs) {
                 name(cx, v.name(), v.location());
-                out.append(IN).append(cx.variable(v.name())).append(" : ").append(v.type().name()).append(";\n");
+                // jFuzzyLogic's grammar has the type REAL only; fclcert computes REAL and LREAL alike
+                out.append(IN).append(cx.variable(v.name())).append(" : REAL;\n");
+                if (v.type().isInteger()) {
+                    cx.findings.lost(v.location(), WriterCode.TYPE, "jFuzzyLogic declares"
+                            + " REAL variables only; '" + v.name() + "' is written as REAL, so the rounding of a "
+                            + v.type().name() + " to an integer is lost");
+                }
                 FuzzyliteWriter.initialValue(cx, v);
             }
             out.append("END_VAR\n\n");
@@ -90,10 +96,22 @@ public final class JFuzzyLogicWriter implements DialectWriter {
         out.append("END_FUNCTION_BLOCK\n");
     }
 
+    /** Words of jFuzzyLogic's grammar (any case) that it does not take as names. */
+    private static final java.util.Set<String> RESERVED = java.util.Set.of("ABS", "ACCU", "ACT", "AND", "ASUM",
+            "BDIF", "BSUM", "COA", "COG", "COGF", "COGS", "COS", "COSINE", "DEFAULT", "DEFUZZIFY", "DMAX", "DMIN",
+            "DSIGM", "EINSTEIN", "END_DEFUZZIFY", "END_FUNCTION_BLOCK", "END_FUZZIFY", "END_RULEBLOCK", "END_VAR",
+            "EXP", "FUNCTION", "FUNCTION_BLOCK", "FUZZIFY", "GAUSS", "GAUSS2", "GBELL", "HAMACHER", "IF", "IS", "LM",
+            "LN", "LOG", "MAX", "METHOD", "MIN", "MM", "NC", "NIPMAX", "NIPMIN", "NOT", "NSUM", "OR", "PROBOR", "PROD",
+            "RANGE", "REAL", "RM", "RULE", "RULEBLOCK", "SIGM", "SIN", "SINGLETONS", "SUM", "TAN", "TERM", "THEN",
+            "TRAPE", "TRIAN", "VAR_INPUT", "VAR_OUTPUT", "WITH");
+
     private static void name(BlockContext cx, String name, SourceLocation at) {
         if (name.startsWith("_")) {
             cx.findings.lost(at, WriterCode.NAME, "jFuzzyLogic rejects names starting with '_': '" + name
                     + "' is written as 'u" + name + "'");
+        } else if (RESERVED.contains(name.toUpperCase(java.util.Locale.ROOT))) {
+            cx.findings.lost(at, WriterCode.NAME, "'" + name + "' is a word of jFuzzyLogic's grammar, not a name there;"
+                    + " it is written as 'u" + name + "'");
         }
     }
 
@@ -105,6 +123,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             out.append(cx.numberText(s.value(), 0, WriterCode.POINT_VARIABLE, "singleton '" + t.name() + "'"));
         } else if (f instanceof MembershipFunction.Points p) {
             out.append(LibraryText.points(p.points(), cx, t.name()));
+            LibraryText.verticalEdge(cx, t, p);
         } else {
             out.append(shape(cx, t, (NamedShape) f, span));
         }
@@ -157,7 +176,12 @@ public final class JFuzzyLogicWriter implements DialectWriter {
         if (cx.pointTerms(d.variable()) && LibraryText.sampled(m)) {
             cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.SAMPLED,
                     "jFuzzyLogic computes " + m.keyword() + " of '" + name + "' from 1000 samples of the RANGE, not"
-                            + " exactly (a narrow term between samples can be missed)");
+                            + " exactly (a narrow term between samples can be missed; LM, RM and MM take the maxima"
+                            + " among the samples)");
+        } else if (!cx.pointTerms(d.variable()) && m != DefuzzificationMethod.COGS) {
+            cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.NOT_LOADED,
+                    "jFuzzyLogic's " + m.keyword() + " is continuous: it fails to evaluate '" + name + "', whose terms"
+                            + " are singletons");
         }
         Optional<DefaultValue> def = d.defaultValue();
         if (def.isPresent() && def.get() instanceof DefaultValue.Constant c && Double.isNaN(c.value().value())) {
@@ -191,6 +215,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             cx.findings.differs(rb.accumulation().get().location(), WriterCode.NSUM, "jFuzzyLogic computes ACCU NSUM"
                     + " of rule block '" + rb.name() + "' as BSUM");
         }
+        boolean actMin = rb.activation().map(x -> x.value() == org.fclcert.model.ActivationMethod.MIN).orElse(true);
         for (RuleLines.Line line : RuleLines.of(cx, rb, false)) {
             StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : IF ")
                     .append(LibraryConditions.jfuzzylogic(line.condition(), cx, line.rule().name())).append(" THEN ");
@@ -198,6 +223,11 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : ", ").append(cx.variable(s.variable())).append(" IS ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
+                if (actMin && line.group().value() != 1 && cx.pointTerms(s.variable())) {
+                    cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, "jFuzzyLogic multiplies"
+                            + " the degree of rule " + line.rule().name() + " by its weight before ACT MIN"
+                            + " (min(w·d, μ)); fclcert weighs the activated set (w·min(d, μ), semantics.md point 3)");
+                }
             }
             line.group().weight().ifPresent(w -> r.append(" WITH ").append(w));
             out.append(r).append(";\n");

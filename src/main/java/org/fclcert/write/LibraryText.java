@@ -99,4 +99,17 @@ final class LibraryText {
         return new java.math.BigDecimal(bound).round(new java.math.MathContext(3, java.math.RoundingMode.UP))
                 .stripTrailingZeros().toPlainString();
     }
+
+    /** FCL-X209 when a point list has a vertical edge (two points at one x), where the libraries differ. */
+    static void verticalEdge(BlockContext cx, org.fclcert.model.Term t, MembershipFunction.Points p) {
+        for (int i = 1; i < p.points().size(); i++) {
+            if (p.points().get(i).x() instanceof Literal a && p.points().get(i - 1).x() instanceof Literal b
+                    && a.value() == b.value()) {
+                cx.findings.differs(t.location(), WriterCode.VERTICAL_EDGE, "term '" + t.name() + "' has a vertical"
+                        + " edge at " + number(a) + "; " + cx.findings.library() + " takes another degree there than"
+                        + " fclcert does");
+                return;
+            }
+        }
+    }
 }
