@@ -132,7 +132,7 @@ final class ConvertCommand implements Callable<Integer> {
         err.println("fclcert: written for " + target.displayName() + ": " + DiagnosticPrinter.count(
                 written.notExpressible().size(), "construct") + " not expressible, " + DiagnosticPrinter.count(
                 written.differences().size(), "known deviation") + " of " + target.displayName() + "; " + back.summary());
-        back.mismatches().stream().skip(1).forEach(m -> err.println("fclcert:   " + m));
+        back.mismatches().stream().skip(1).limit(2).forEach(m -> err.println("fclcert:   " + m));
         if (back.readBack().isEmpty() || written.exact() && !back.equal()) {
             err.println("fclcert: internal error: the " + target.cliName() + " writer's text "
                     + (back.readBack().isEmpty() ? "does not read back" : "is said to be exact but evaluates otherwise"));

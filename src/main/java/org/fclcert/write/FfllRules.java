@@ -54,6 +54,11 @@ final class FfllRules {
             throw new Unsayable("it uses the variable '" + v.variable() + "' as a subcondition (Table 9)");
         }
         if (c instanceof TermSubcondition t) {
+            if (t.any() && t.hedges().size() == 1 && !t.negated() && !negate) {
+                List<List<Literal>> always = new ArrayList<>();
+                always.add(List.of());   // 'x is any' is 1: the input gets the term of degree 1
+                return always;
+            }
             if (!t.hedges().isEmpty()) {
                 throw new Unsayable("FFLL has no hedges");
             }

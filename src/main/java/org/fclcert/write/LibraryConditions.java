@@ -55,6 +55,9 @@ final class LibraryConditions {
         List<Condition> operands = and ? ((And) c).operands() : ((Or) c).operands();
         List<Condition> kept = new ArrayList<>();
         for (Condition o : operands) {
+            if (and && o instanceof TermSubcondition t && t.any() && t.hedges().size() == 1 && !t.negated()) {
+                continue;   // 'x is any' is 1, the unit of MIN, PROD and BDIF: leaving it out is exact
+            }
             clean(o, hedges, cx, rule).ifPresent(kept::add);
         }
         if (kept.isEmpty()) {
