@@ -77,19 +77,19 @@ final class VectorReplay {
             try {
                 fb.set(in.getKey(), in.getValue());
             } catch (EvaluationException e) {
-                throw new EvaluationException(e.code(), "vector " + (index + 1) + ": " + e.getMessage());
+                throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
             }
         }
         try {
             fb.evaluate();
         } catch (EvaluationException e) {
-            throw new EvaluationException(e.code(), "vector " + (index + 1) + ": " + e.getMessage());
+            throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
         }
         return c.tolerance().compareAll(v.out(), fb.outputs(), scales);
     }
 
     private static String describe(Comparison cmp) {
-        if (Double.isNaN(cmp.actual())) {
+        if (cmp.missing()) {
             return "'" + cmp.output() + "' expected " + cmp.expected() + ", but the block has no such output";
         }
         return "'" + cmp.output() + "' expected " + cmp.expected() + ", the reference evaluator gives " + cmp.actual()

@@ -20,11 +20,11 @@ final class Findings {
     }
 
     void lost(SourceLocation at, WriterCode code, String message) {
-        losses.add(Diagnostic.error(at == null ? SourceLocation.UNKNOWN : at, code.code(), message));
+        losses.add(Diagnostic.of(at == null ? SourceLocation.UNKNOWN : at, code, message));
     }
 
     void differs(SourceLocation at, WriterCode code, String message) {
-        Diagnostic d = Diagnostic.warning(at == null ? SourceLocation.UNKNOWN : at, code.code(), message);
+        Diagnostic d = Diagnostic.of(at == null ? SourceLocation.UNKNOWN : at, code, message);
         if (differences.stream().noneMatch(x -> x.message().equals(d.message()) && x.location().sameAs(d.location()))) {
             differences.add(d);
         }

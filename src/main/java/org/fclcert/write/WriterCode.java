@@ -1,12 +1,16 @@
 package org.fclcert.write;
 
+import org.fclcert.model.DiagnosticCode;
+import org.fclcert.model.Severity;
+
 /**
  * The codes of what a {@link DialectWriter} reports. {@code FCL-X1nn} (errors): the program says something the
  * library's FCL cannot say, so the written text means something else even as fclcert reads that dialect.
  * {@code FCL-X2nn} (warnings): the text means the same as fclcert reads the dialect, but the library itself is
- * known to compute it otherwise (../shared/notes/peers.md); the round trip cannot see these.
+ * known to compute it otherwise (../shared/notes/peers.md); the round trip cannot see these. Entries of the
+ * catalogue ({@code cli.DiagnosticCatalogue}), listed in docs/diagnostics.md.
  */
-public enum WriterCode {
+public enum WriterCode implements DiagnosticCode {
     INITIAL_VALUE("FCL-X101", "an initial value the library's FCL cannot declare"),
     WEIGHT_VARIABLE("FCL-X102", "a WITH weight given by a variable"),
     POINT_VARIABLE("FCL-X103", "a membership-function point given by a variable"),
@@ -38,13 +42,27 @@ public enum WriterCode {
         this.meaning = meaning;
     }
 
+    @Override
     public String code() {
         return code;
     }
 
     /** What the code is about, in a few words (the catalogue's line). */
+    @Override
     public String meaning() {
         return meaning;
+    }
+
+    /** A loss is an error (a warning with --allow-lossy); a library's deviation a warning. */
+    @Override
+    public Severity severity() {
+        return lossOfMeaning() ? Severity.ERROR : Severity.WARNING;
+    }
+
+    /** The libraries' constructs are Open Level features (Table 10), as for the conversion codes. */
+    @Override
+    public String clause() {
+        return "Table 10";
     }
 
     /** X1nn codes are losses of meaning; X2nn codes are the library's own deviations. */

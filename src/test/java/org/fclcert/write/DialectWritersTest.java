@@ -218,7 +218,7 @@ class DialectWritersTest {
     void theDiagnosticsCatalogueListsEveryWriterCode() throws Exception {
         String doc = Files.readString(Path.of("docs/diagnostics.md"));
         for (WriterCode c : WriterCode.values()) {
-            assertTrue(doc.contains("| " + c.code() + " | " + c.meaning() + " |"), c.code());
+            assertTrue(doc.contains("| " + c.code() + " | " + c.severity().word() + " | " + c.meaning() + " |"), c.code());
             assertEquals(c.code().startsWith("FCL-X1"), c.lossOfMeaning());
         }
         assertEquals(WriterCode.values().length, java.util.Arrays.stream(WriterCode.values()).map(WriterCode::code)
