@@ -4,7 +4,8 @@ import java.util.List;
 
 /**
  * Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS}, {@code process:COMMAND},
- * or the built-in adapter for fuzzylite 6.0, {@code fuzzylite} or {@code fuzzylite:PATH}.
+ * or a built-in adapter: fuzzylite 6.0 ({@code fuzzylite} or {@code fuzzylite:PATH}), jfuzzylite 6.0.1
+ * ({@code jfuzzylite} or {@code jfuzzylite:JAR}) and jFuzzyLogic ({@code jfuzzylogic:JAR}).
  */
 public final class Iuts {
     private Iuts() {}
@@ -30,12 +31,18 @@ public final class Iuts {
         if (spec.equals(FuzzyliteIut.SPEC) || spec.startsWith(FuzzyliteIut.SPEC + ":")) {
             return FuzzyliteIut.open(spec, options);
         }
+        if (spec.equals(JfuzzyliteImplementation.SPEC) || spec.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
+            return JfuzzyliteImplementation.open(spec, options);
+        }
+        if (spec.equals(JFuzzyLogicIut.SPEC) || spec.startsWith(JFuzzyLogicIut.SPEC + ":")) {
+            return JFuzzyLogicIut.open(spec, options);
+        }
         if (spec.startsWith("process:")) {
             List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
             return new ProcessIut(spec, command, options);
         }
         throw new IutException(
                 IutException.Kind.INFRA,
-                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND or fuzzylite[:PATH]");
+                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR] or jfuzzylogic:JAR");
     }
 }
