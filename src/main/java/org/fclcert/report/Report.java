@@ -26,6 +26,7 @@ public record Report(
         List<DataCheckEntry> dataCheckList,
         List<InterpretationEntry> interpretation,
         Claims claims,
+        List<Causes.Cause> causes,
         List<CaseResult> cases) {
 
     public static final int FORMAT_VERSION = 1;
@@ -34,6 +35,7 @@ public record Report(
         features = List.copyOf(features);
         dataCheckList = List.copyOf(dataCheckList);
         interpretation = List.copyOf(interpretation);
+        causes = causes == null ? List.of() : List.copyOf(causes);
         cases = List.copyOf(cases);
     }
 
@@ -85,8 +87,18 @@ public record Report(
         }
     }
 
-    /** A case that depends on a reading of the standard: shown on its own, counted against no verdict. */
-    public record InterpretationEntry(String id, String title, String flag, String status, String message) {
+    /**
+     * A case that depends on a reading of the standard: shown on its own, counted against no verdict. {@code
+     * cause} is set when the implementation rejected the program at load (a reason of its own dialect, which
+     * says nothing about the point the case depends on); null otherwise.
+     */
+    public record InterpretationEntry(String id, String title, String flag, String status, String message,
+            String cause) {
+        /** Rejected at load: the case never reached the point it depends on. */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public boolean rejectedAtLoad() {
+            return cause != null;
+        }
     }
 
     /**
