@@ -77,14 +77,34 @@ public record Report(
     public record BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
     }
 
-    /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
+    /**
+     * One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded).
+     * {@code status} and the counts are the language verdict: the corpus programs as the standard writes them.
+     * {@code semantic} is the second verdict — the same cases sent in the implementation's own layout — when
+     * that axis was run; null (absent from report.json) otherwise.
+     */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed) {
+            List<String> notPassed, Semantic semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
         }
+
+        /** A row with the language verdict only. */
+        public FeatureRow(String id, int table, String level, String element, String description,
+                FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
+                List<String> notPassed) {
+            this(id, table, level, element, description, status, passed, failed, errored, skipped, cases, notPassed,
+                    null);
+        }
+    }
+
+    /**
+     * The semantic verdict of a feature row: of {@code total} cases the implementation's dialect can express,
+     * {@code passed} computed the standard's values when sent in that layout.
+     */
+    public record Semantic(FeatureStatus status, int passed, int total) {
     }
 
     /**
