@@ -30,6 +30,7 @@ public final class Causes {
     private static final Pattern HARNESS_PREFIX = Pattern.compile(
             "^rejected a program the standard accepts(?: at line (\\d+))?: ");
     private static final Pattern ANTLR_POSITION = Pattern.compile("\\bline (\\d+):\\d+ ");
+    private static final Pattern QUOTED = Pattern.compile("\\bin line: (.*)$");
     private static final Pattern WRONG_STEP = Pattern.compile("^step \\d+ of \\d+: ");
 
     private Causes() {}
@@ -92,8 +93,10 @@ public final class Causes {
         Matcher rejected = HARNESS_PREFIX.matcher(message);
         if (rejected.find()) {
             String said = message.substring(rejected.end());
-            OptionalLine line = lineOf(rejected.group(1), said);
-            return new String[] {"rejected at load", rejection(said, line.text(c.program()))};
+            // the statement as the library quotes it (fuzzylite: "in line: x : REAL := 1.0"), else the program line
+            Matcher quoted = QUOTED.matcher(said);
+            String statement = quoted.find() ? quoted.group(1) : lineOf(rejected.group(1), said).text(c.program());
+            return new String[] {"rejected at load", rejection(said, statement)};
         }
         if (message.startsWith("accepted a program the standard rejects")) {
             return new String[] {"accepted an invalid program", "no error reported where the standard requires one"};
