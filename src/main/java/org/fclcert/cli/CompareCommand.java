@@ -41,6 +41,7 @@ final class CompareCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         List<ComparisonPage.Entry> entries = new ArrayList<>();
+        List<ComparisonPage.Entry> printed = new ArrayList<>();
         for (Path dir : dirs) {
             Path json = dir.resolve("report.json");
             if (!Files.isRegularFile(json)) {
@@ -57,6 +58,8 @@ final class CompareCommand implements Callable<Integer> {
                 return CertifyCommand.CANNOT_RUN;
             }
             entries.add(new ComparisonPage.Entry(report, link(dir)));
+            // what is printed is read from here: its links are relative to the working directory
+            printed.add(new ComparisonPage.Entry(report, dir.normalize().resolve("report.md").toString().replace('\\', '/')));
         }
         try {
             Files.createDirectories(out);
@@ -68,7 +71,7 @@ final class CompareCommand implements Callable<Integer> {
             return CertifyCommand.CANNOT_RUN;
         }
         PrintWriter o = spec.commandLine().getOut();
-        o.print(ComparisonPage.summaryMarkdown(entries));
+        o.print(ComparisonPage.summaryMarkdown(printed));
         o.println("Wrote " + out.resolve(MARKDOWN) + " and " + HTML);
         o.flush();
         return CertifyCommand.OK;

@@ -20,7 +20,7 @@ class CompareCommandTest {
         Cli r = Cli.run("compare", "--out", out.toString(), ref.toString(), ref.toString());
         assertEquals(0, r.exitCode(), r.err());
         assertTrue(r.out().startsWith("|  | [fclcert reference evaluator "), r.out());
-        assertTrue(r.out().contains("](reference/report.md) |"), r.out());
+        assertTrue(r.out().contains("](" + ref.resolve("report.md") + ") |"), r.out());
         assertTrue(r.out().contains("| Cases (13) | 13 passed | 13 passed |"), r.out());
         assertTrue(r.out().strip().endsWith("Wrote " + out.resolve("index.md") + " and index.html"), r.out());
         String md = Files.readString(out.resolve("index.md"));
