@@ -64,8 +64,8 @@ public final class FfllReader implements DialectReader {
             return new ReadResult(errors ? Optional.empty() : Optional.of(new Program(name, blocks, features)),
                     diagnostics);
         } catch (RuntimeException | StackOverflowError e) {
-            diagnostics.add(Diagnostic.error(SourceLocation.of(name, 1, 1), "FCL-S999", "internal error of the FFLL"
-                    + " reader (" + e.getClass().getSimpleName() + "); please report this"));
+            diagnostics.add(Diagnostic.error(SourceLocation.of(name, 1, 1), org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR,
+                    "internal error of the FFLL reader (" + e.getClass().getSimpleName() + "); please report this"));
             return new ReadResult(Optional.empty(), diagnostics);
         }
     }

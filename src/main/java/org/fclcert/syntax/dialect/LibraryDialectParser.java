@@ -92,7 +92,7 @@ final class LibraryDialectParser {
             return new org.fclcert.syntax.ReadResult(failed ? Optional.empty() : Optional.of(program), list);
         } catch (RuntimeException | StackOverflowError e) {
             List<Diagnostic> list = new ArrayList<>(parser == null ? List.of() : parser.diagnostics);
-            list.add(Diagnostic.error(SourceLocation.of(name, 1, 1), DialectCode.TOO_MANY_ERRORS.code(),
+            list.add(Diagnostic.error(SourceLocation.of(name, 1, 1), org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR,
                     "internal error of the " + (fuzzylite ? "fuzzylite" : "jFuzzyLogic") + " reader ("
                             + e.getClass().getSimpleName() + "); please report this"));
             return new org.fclcert.syntax.ReadResult(Optional.empty(), list);
@@ -120,12 +120,12 @@ final class LibraryDialectParser {
             return;
         }
         if (++errors > MAX_ERRORS) {
-            diagnostics.add(Diagnostic.error(at(line, column), DialectCode.TOO_MANY_ERRORS.code(),
+            diagnostics.add(Diagnostic.error(at(line, column), DialectCode.TOO_MANY_ERRORS,
                     "more than " + MAX_ERRORS + " errors; the rest are not reported"));
             stopped = true;
             return;
         }
-        diagnostics.add(Diagnostic.error(at(line, column), code.code(), message));
+        diagnostics.add(Diagnostic.error(at(line, column), code, message));
     }
 
     private void error(Token t, DialectCode code, String message) {
@@ -133,7 +133,7 @@ final class LibraryDialectParser {
     }
 
     private void warn(SourceLocation where, DialectCode code, String message) {
-        diagnostics.add(Diagnostic.warning(where, code.code(), message));
+        diagnostics.add(Diagnostic.warning(where, code, message));
     }
 
     private void feature(Feature f, SourceLocation where) {
