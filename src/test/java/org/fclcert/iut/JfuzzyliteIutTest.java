@@ -158,6 +158,13 @@ class JfuzzyliteIutTest {
             String exported = iut.export().orElseThrow();
             assertTrue(exported.contains("FUNCTION_BLOCK small"), exported);
             assertTrue(exported.contains("RANGE := (nan .. nan)"), "jfuzzylite writes a RANGE of NaNs: " + exported);
+            // the export check fails it, saying it is fuzzylite's dialect
+            org.fclcert.harness.RunCase c = org.fclcert.harness.RunCases.from(org.fclcert.corpus.Corpus.load(
+                    Path.of("src/test/resources/corpus-mini")).byId("B-DEFAULT-VALUE-001").orElseThrow());
+            org.fclcert.harness.ExportCheck.Verdict v = new org.fclcert.harness.ReferenceExportCheck().check(exported, c);
+            assertEquals(org.fclcert.harness.ExportStatus.FAILED, v.status());
+            assertTrue(v.message().startsWith("the exported FCL does not read back: "), v.message());
+            assertTrue(v.message().contains("written in the fuzzylite dialect, not standard FCL"), v.message());
         }
     }
 
