@@ -104,7 +104,8 @@ public final class Causes {
         String step = WRONG_STEP.matcher(message).replaceFirst("");
         if (step.startsWith("the implementation reported an evaluation error")
                 || step.startsWith("the implementation refused")) {
-            return new String[] {"refused to evaluate", normalise(step.replaceFirst("^[^:]*: ", ""))};
+            String said = step.replaceFirst("^[^:]*: ", "").replaceFirst("^the IUT reported an error on '\\w+': ", "");
+            return new String[] {"refused to evaluate", normalise(said.split("[\\t\\n]", 2)[0])};
         }
         Optional<String> deviation = deviation(c);
         if (deviation.isPresent()) {

@@ -93,6 +93,10 @@ class CausesTest {
                         + " (at net.sourceforge.jFuzzyLogic.rule.RuleBlock.x:263)")));
         assertEquals("errored: timed out", cause(errored("E-COND-VARIABLE-002",
                 "load: the implementation timed out: load did not return within 100 ms")));
+        assertEquals("refused to evaluate: jFuzzyLogic: MembershipFunction and Defuzzifier are neither both discrete nor"
+                + " both continuous", cause(failed("E-LM-002", "step 1 of 4: the implementation reported an evaluation"
+                + " error: the IUT reported an error on 'eval': jFuzzyLogic: MembershipFunction and Defuzzifier are"
+                + " neither both discrete nor both continuous\tTerm: ylm IS s1", null, null)));
         assertEquals("accepted an invalid program: no error reported where the standard requires one", cause(failed(
                 "N-C016-001", "accepted a program the standard rejects: FCL-C016 at line 26", "reject FCL-C016 at line 26",
                 "accepted")));
