@@ -48,7 +48,7 @@ final class CertifyCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
+            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR (default: ${DEFAULT-VALUE})")
     String iut;
 
     @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found (jars or directories, separated as the platform's class path)")

@@ -31,7 +31,7 @@ final class ProbeCommand implements Callable<Integer> {
     CommandSpec spec;
 
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
+            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR (default: ${DEFAULT-VALUE})")
     String iut;
 
     @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found")
