@@ -45,4 +45,32 @@ public final class Iuts {
                 IutException.Kind.INFRA,
                 "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR] or jfuzzylogic:JAR");
     }
+
+    /**
+     * What a built-in adapter cannot observe of its library, in sentences for the reports (empty for other
+     * specs). The details are in {@code docs/iut-protocol.md}, in the adapter's section.
+     */
+    public static List<String> unobservable(String spec) {
+        String s = spec == null ? "" : spec.strip();
+        if (s.equals(FuzzyliteIut.SPEC) || s.startsWith(FuzzyliteIut.SPEC + ":")) {
+            return List.of("fuzzylite silently drops a rule it cannot read (upper-case IF, IS NOT, comma-separated"
+                    + " conclusions, an undefined term) and still loads: such a rule shows only as wrong values",
+                    "it builds only the first function block of a program",
+                    "see docs/iut-protocol.md, \"fuzzylite\"");
+        }
+        if (s.equals(JfuzzyliteImplementation.SPEC) || s.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
+            return List.of("jfuzzylite builds only the first function block of a program",
+                    "its variables start at NaN, not at their declared initial value or 0",
+                    "a call that hangs cannot be killed in process: it is abandoned on its thread",
+                    "see docs/iut-protocol.md, \"jfuzzylite\"");
+        }
+        if (s.equals(JFuzzyLogicIut.SPEC) || s.startsWith(JFuzzyLogicIut.SPEC + ":")) {
+            return List.of("jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
+                    + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
+                    "its variables start at NaN, not at their declared initial value or 0",
+                    "it runs in a JVM of its own; its static state lives as long as that JVM",
+                    "see docs/iut-protocol.md, \"jFuzzyLogic\"");
+        }
+        return List.of();
+    }
 }

@@ -92,6 +92,11 @@ public final class HtmlReport {
                 .append(" · corpus <code>").append(Texts.html(r.corpus().dir())).append("</code>, ")
                 .append(r.corpus().cases()).append(" cases, sha256 <code>").append(Texts.html(r.corpus().sha256()))
                 .append("</code></p>\n");
+        List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
+        if (!unseen.isEmpty()) {
+            out.append("<p class=\"small\">What the adapter cannot observe: ").append(Texts.html(String.join("; ", unseen)))
+                    .append("</p>\n");
+        }
         boolean ok = r.basicLevel().conformant();
         out.append("<div class=\"verdict ").append(ok ? "ok" : "no").append("\">Basic Level: ")
                 .append(ok ? "conformant" : "not conformant").append("<div class=\"small\">")

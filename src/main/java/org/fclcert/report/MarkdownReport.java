@@ -52,6 +52,10 @@ public final class MarkdownReport {
                 + ".");
         line("");
         line("- Implementation: " + Texts.implementation(r));
+        java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
+        if (!unseen.isEmpty()) {
+            line("- What the adapter cannot observe: " + String.join("; ", unseen));
+        }
         line("- Corpus: `" + r.corpus().dir() + "`, " + r.corpus().cases() + " cases, sha256 `" + r.corpus().sha256()
                 + "`");
         Report.Summary s = r.summary();

@@ -31,6 +31,12 @@ class ReportTextsTest {
     void theHeaderNamesTheImplementationThenHowItWasReached() {
         Report r = ComparisonPageTest.report("jfuzzylite", List.of());
         assertEquals("jfuzzylite 1.0, reached as `jfuzzylite`", Texts.implementation(r));
-        assertTrue(MarkdownReport.render(r).contains("\n- Implementation: jfuzzylite 1.0, reached as `jfuzzylite`\n"));
+        String md = MarkdownReport.render(r);
+        assertTrue(md.contains("\n- Implementation: jfuzzylite 1.0, reached as `jfuzzylite`\n"), md);
+        // a built-in adapter says what it cannot see of its library
+        assertTrue(md.contains("\n- What the adapter cannot observe: jfuzzylite builds only the first function block of a"
+                + " program; its variables start at NaN"), md);
+        assertTrue(HtmlReport.render(r).contains("What the adapter cannot observe: jfuzzylite builds only"));
+        assertTrue(!MarkdownReport.render(ComparisonPageTest.report("process:x", List.of())).contains("cannot observe"));
     }
 }
