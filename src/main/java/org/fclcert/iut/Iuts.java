@@ -60,14 +60,16 @@ public final class Iuts {
         }
         if (s.equals(JfuzzyliteImplementation.SPEC) || s.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
             return List.of("jfuzzylite builds only the first function block of a program",
-                    "its variables start at NaN, not at their declared initial value or 0",
+                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                            + " when an instance is made, so a program used directly must set every input",
                     "a call that hangs cannot be killed in process: it is abandoned on its thread",
                     "see docs/iut-protocol.md, \"jfuzzylite\"");
         }
         if (s.equals(JFuzzyLogicIut.SPEC) || s.startsWith(JFuzzyLogicIut.SPEC + ":")) {
             return List.of("jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
                     + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
-                    "its variables start at NaN, not at their declared initial value or 0",
+                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                            + " when an instance is made, so a program used directly must set every input",
                     "it runs in a JVM of its own; its static state lives as long as that JVM",
                     "see docs/iut-protocol.md, \"jFuzzyLogic\"");
         }

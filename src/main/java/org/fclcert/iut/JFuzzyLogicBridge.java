@@ -176,6 +176,7 @@ public final class JFuzzyLogicBridge {
                     OptionalInt.empty());
         }
         List<String> names = blockNames(system, fcl);
+        startInputsAtZero(system);
         text = fcl;
         fis = system;
         blocks = names;
@@ -271,7 +272,22 @@ public final class JFuzzyLogicBridge {
         } finally {
             capture.stop();
         }
+        startInputsAtZero(fis);
         return ok();
+    }
+
+    /**
+     * jFuzzyLogic starts every variable at NaN; a new instance starts with its inputs at their initial value,
+     * which for the REAL inputs jFuzzyLogic reads (it rejects declared initial values) is 0.
+     */
+    private static void startInputsAtZero(Object system) throws Throwable {
+        for (Object fb : (Iterable<?>) system) {
+            for (Object variable : variables(fb).values()) {
+                if ((Boolean) call(variable, "isInput")) {
+                    call(fb, "setVariable", String.valueOf(call(variable, "getName")), 0.0);
+                }
+            }
+        }
     }
 
     private ObjectNode export() throws Throwable {

@@ -36,7 +36,7 @@ import org.fclcert.model.Names;
  * index out of bounds, an {@link Error} — is an internal failure of the library and reported as a crash, so a
  * bug in the library never looks like a deliberate refusal. What the SPI cannot observe is stated in
  * {@code docs/iut-protocol.md}, "jfuzzylite": it builds only the first function block, and its variables start
- * at NaN, not at the declared initial value.
+ * at NaN (the adapter sets every input to 0, the initial value of a REAL, as the SPI's contract asks).
  */
 final class JfuzzyliteImplementation implements FclImplementation {
     static final String SPEC = "jfuzzylite";
@@ -307,7 +307,7 @@ final class JfuzzyliteImplementation implements FclImplementation {
         }
     }
 
-    /** One engine imported afresh from the text; reset imports it again (variables back at NaN). */
+    /** One engine imported afresh from the text, inputs at 0; reset imports it again. */
     private final class Instance implements FclInstance {
         private final String fcl;
         private Object engine;
@@ -344,6 +344,11 @@ final class JfuzzyliteImplementation implements FclImplementation {
             }
             inputs = (List<?>) invoke(engine, "getInputVariables");
             outputs = (List<?>) invoke(engine, "getOutputVariables");
+            // jfuzzylite starts every variable at NaN; an instance starts with its inputs at their initial value,
+            // which for the REAL inputs jfuzzylite reads (it rejects declared initial values) is 0
+            for (Object input : inputs) {
+                invoke(input, "setValue", 0.0);
+            }
         }
 
         /** jfuzzylite's names are case-sensitive; FCL's are not. */

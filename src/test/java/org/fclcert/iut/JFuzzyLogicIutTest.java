@@ -120,16 +120,20 @@ class JFuzzyLogicIutTest {
     }
 
     @Test
-    void namesAreMatchedInAnyLetterCaseAndAnUnsetInputIsNan() throws Exception {
+    void namesAreMatchedInAnyLetterCaseAndInputsStartAtZero() throws Exception {
         try (ImplementationUnderTest iut = open()) {
             iut.load(valve());
             assertEquals(9500.0 / 127, iut.eval("FUZZY_FB", Map.of("TEMP", 5.0, "Pressure", 60.0)).get("valve"), EXACT);
             IutException unknown = assertThrows(IutException.class, () -> iut.eval(null, Map.of("humidity", 1.0)));
             assertEquals(Kind.EVAL_ERROR, unknown.kind());
-            // after reset every variable is NaN again (jFuzzyLogic's start, not the standard's 0): nothing fires,
-            // and the valve takes its DEFAULT 0
+            // after reset the inputs are at 0 again (jFuzzyLogic itself starts them at NaN; the adapter sets a REAL's
+            // initial value): temp 0 and pressure 0 lie before the first points, cold = low = 1, hot = high = 0, so
+            // only rule 1 fires and the valve is inlet's 100
             iut.reset();
-            assertEquals(0.0, iut.eval(null, Map.of()).get("valve"), EXACT);
+            assertEquals(100.0, iut.eval(null, Map.of()).get("valve"), EXACT);
+            // and an input set once keeps its value: temp 5 with pressure still 0 (low 1): R1 11/12 -> 100,
+            // R3 min(1/12, 1) = 1/12 -> 0: (100·11/12) / (11/12 + 1/12) = 91.667
+            assertEquals(1100.0 / 12, iut.eval(null, Map.of("temp", 5.0)).get("valve"), EXACT);
         }
     }
 

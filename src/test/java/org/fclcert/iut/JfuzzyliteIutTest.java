@@ -136,7 +136,7 @@ class JfuzzyliteIutTest {
     }
 
     @Test
-    void onlyTheFirstFunctionBlockIsBuiltAndVariablesStartAtNan() throws Exception {
+    void onlyTheFirstFunctionBlockIsBuiltAndInputsStartAtZero() throws Exception {
         String two = small("(0, 1) (10, 0)") + small("(0, 1) (10, 0)").replace("FUNCTION_BLOCK small", "FUNCTION_BLOCK second");
         try (ImplementationUnderTest iut = open("jfuzzylite")) {
             assertEquals(new LoadOutcome.Loaded(List.of("small", "second")), iut.load(two));
@@ -144,10 +144,10 @@ class JfuzzyliteIutTest {
             IutException second = assertThrows(IutException.class, () -> iut.eval("second", Map.of("x", 5.0)));
             assertEquals(Kind.EVAL_ERROR, second.kind());
             assertTrue(second.getMessage().contains("builds only the first function block"), second.getMessage());
-            // a fresh instance whose input was never set: jfuzzylite's x is NaN (a REAL starts at 0 in the standard,
-            // where lo(0) = 1 would give 1), so nothing fires and y is its DEFAULT 0
+            // a fresh instance whose input was never set: jfuzzylite itself would leave x at NaN (nothing fires, y =
+            // DEFAULT 0); the adapter starts it at 0, a REAL's initial value, where lo(0) = 1 fires the singleton 1
             iut.reset();
-            assertEquals(0.0, iut.eval("small", Map.of()).get("y"), EXACT);
+            assertEquals(1.0, iut.eval("small", Map.of()).get("y"), EXACT);
         }
     }
 
