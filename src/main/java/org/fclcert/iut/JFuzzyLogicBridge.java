@@ -126,7 +126,8 @@ public final class JFuzzyLogicBridge {
                 default -> error("error", "unknown op '" + op + "'", json);
             };
         } catch (Refusal r) {
-            return error("error", r.getMessage(), json);
+            // a refusal while building what it read is a rejection of the program; elsewhere an evaluation error
+            return op.equals("load") ? rejected(r.getMessage(), OptionalInt.empty()) : error("error", r.getMessage(), json);
         } catch (Throwable t) {
             // anything else is jFuzzyLogic failing inside (or the JVM running out of stack or memory)
             return error("crash", describe(t) + where(t), json);
