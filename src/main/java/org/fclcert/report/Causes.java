@@ -95,7 +95,7 @@ public final class Causes {
             String said = message.substring(rejected.end());
             // the statement as the library quotes it (fuzzylite: "in line: x : REAL := 1.0"), else the program line
             Matcher quoted = QUOTED.matcher(said);
-            String statement = quoted.find() ? quoted.group(1) : lineOf(rejected.group(1), said).text(c.program());
+            String statement = quoted.find() ? quoted.group(1) : lineOf(rejected.group(1), said).text(CaseFacts.program(c));
             return new String[] {"rejected at load", rejection(said, statement)};
         }
         if (message.startsWith("accepted a program the standard rejects")) {
@@ -218,7 +218,7 @@ public final class Causes {
 
     /** NaN, a small (relative error ≤ 1 %) or a large deviation, on the first wrong output of the case. */
     static Optional<String> deviation(CaseResult c) {
-        if (!(c.expected() instanceof Map<?, ?> expected) || !(c.actual() instanceof Map<?, ?> actual)) {
+        if (!(CaseFacts.expected(c) instanceof Map<?, ?> expected) || !(CaseFacts.actual(c) instanceof Map<?, ?> actual)) {
             return Optional.empty();
         }
         double worst = 0;

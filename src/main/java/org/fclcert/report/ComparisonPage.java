@@ -157,11 +157,11 @@ public final class ComparisonPage {
         int failed = 0;
         int unsupported = 0;
         for (CaseResult c : e.report().cases()) {
-            if (c.exportStatus() == ExportStatus.PASSED) {
+            if (CaseFacts.exportStatus(c) == ExportStatus.PASSED) {
                 passed++;
-            } else if (c.exportStatus() == ExportStatus.FAILED) {
+            } else if (CaseFacts.exportStatus(c) == ExportStatus.FAILED) {
                 failed++;
-            } else if (c.exportStatus() == ExportStatus.UNSUPPORTED) {
+            } else if (CaseFacts.exportStatus(c) == ExportStatus.UNSUPPORTED) {
                 unsupported++;
             }
         }
@@ -268,7 +268,7 @@ public final class ComparisonPage {
         if (m.startsWith("rejected a program") || m.startsWith("accepted a program")) {
             return false;
         }
-        return !(c.expected() instanceof String);   // negative cases are in the causes
+        return !(CaseFacts.expected(c) instanceof String);   // negative cases are in the causes
     }
 
     private static String outcome(CaseResult c) {
@@ -285,7 +285,7 @@ public final class ComparisonPage {
         if (c.status() == CaseStatus.ERRORED) {
             return "errored: " + Causes.classify(c)[1];
         }
-        if (c.expected() instanceof Map<?, ?> expected && c.actual() instanceof Map<?, ?> actual) {
+        if (CaseFacts.expected(c) instanceof Map<?, ?> expected && CaseFacts.actual(c) instanceof Map<?, ?> actual) {
             // the output furthest off (another may differ only within the tolerance)
             Object worstName = null;
             double worst = -1;
@@ -305,7 +305,7 @@ public final class ComparisonPage {
             }
             if (worstName != null && worst > 0) {
                 return "**" + number(have) + "** where the standard gives " + number(want) + " (" + worstName
-                        + (c.step() == null ? "" : ", step " + c.step()) + ")";
+                        + (CaseFacts.step(c) == null ? "" : ", step " + CaseFacts.step(c)) + ")";
             }
         }
         return Causes.classify(c)[0] + ": " + Causes.classify(c)[1];

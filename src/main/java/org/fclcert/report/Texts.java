@@ -97,10 +97,10 @@ final class Texts {
         if (c.status() == org.fclcert.harness.CaseStatus.ERRORED) {
             return "the implementation broke down during the case";
         }
-        if ("load and evaluate".equals(c.expected())) {
+        if ("load and evaluate".equals(CaseFacts.expected(c))) {
             return "the program was rejected at load";
         }
-        if (c.expected() instanceof String) {
+        if (CaseFacts.expected(c) instanceof String) {
             return "a negative case (nothing to export)";
         }
         return "not checked";
@@ -109,9 +109,9 @@ final class Texts {
     /** {@code 193 not-run (121: the program was rejected at load; 72: a negative case (nothing to export))}. */
     static String exportSummary(java.util.List<org.fclcert.harness.CaseResult> cases) {
         java.util.Map<org.fclcert.harness.ExportStatus, Integer> counts = new java.util.LinkedHashMap<>();
-        cases.forEach(c -> counts.merge(c.exportStatus(), 1, Integer::sum));
+        cases.forEach(c -> counts.merge(CaseFacts.exportStatus(c), 1, Integer::sum));
         java.util.Map<String, Integer> reasons = new java.util.LinkedHashMap<>();
-        cases.stream().filter(c -> c.exportStatus() == org.fclcert.harness.ExportStatus.NOT_RUN)
+        cases.stream().filter(c -> CaseFacts.exportStatus(c) == org.fclcert.harness.ExportStatus.NOT_RUN)
                 .forEach(c -> reasons.merge(exportNotRunReason(c), 1, Integer::sum));
         String why = reasons.entrySet().stream().sorted(java.util.Map.Entry.<String, Integer>comparingByValue().reversed())
                 .map(e -> e.getValue() + ": " + e.getKey()).reduce((a, b) -> a + "; " + b).orElse("");

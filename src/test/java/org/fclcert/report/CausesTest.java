@@ -24,14 +24,13 @@ class CausesTest {
             "END_DEFUZZIFY");
 
     static CaseResult failed(String id, String message, Object expected, Object actual, String... flags) {
-        return new CaseResult(id, "title of " + id, "basic", List.of(id.replaceFirst("-\\d+$", "")), List.of(flags),
-                CaseStatus.FAILED, message, null, null, expected, actual, null, null, "exact", null, null, List.of(),
-                null, PROGRAM, 1L, null);
+        return MadeResults.made(id, "basic", List.of(id.replaceFirst("-\\d+$", "")), List.of(flags), CaseStatus.FAILED,
+                message, expected, actual, null, PROGRAM);
     }
 
     static CaseResult errored(String id, String message) {
-        return new CaseResult(id, "title", "extension", List.of("E-COND-VARIABLE"), List.of(), CaseStatus.ERRORED,
-                message, null, null, null, null, null, null, "exact", null, null, List.of(), null, PROGRAM, 1L, null);
+        return MadeResults.made(id, "extension", List.of("E-COND-VARIABLE"), List.of(), CaseStatus.ERRORED, message,
+                null, null, null, PROGRAM);
     }
 
     private static String cause(CaseResult c) {

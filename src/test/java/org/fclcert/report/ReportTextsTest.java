@@ -12,8 +12,8 @@ import org.junit.jupiter.api.Test;
 /** The report's header line and the reasons given for exports that were not checked. */
 class ReportTextsTest {
     private static CaseResult notExported(String id, CaseStatus status, Object expected) {
-        return new CaseResult(id, "t", "basic", List.of("B-FB"), List.of(), status, "m", null, null, expected, null,
-                null, null, "exact", ExportStatus.NOT_RUN, null, List.of(), null, null, 1L, null);
+        return MadeResults.made(id, "basic", List.of("B-FB"), List.of(), status, "m", expected, null, ExportStatus.NOT_RUN,
+                null);
     }
 
     @Test
