@@ -89,7 +89,7 @@ final class VectorReplay {
     }
 
     private static String describe(Comparison cmp) {
-        if (Double.isNaN(cmp.actual())) {
+        if (cmp.missing()) {
             return "'" + cmp.output() + "' expected " + cmp.expected() + ", but the block has no such output";
         }
         return "'" + cmp.output() + "' expected " + cmp.expected() + ", the reference evaluator gives " + cmp.actual()

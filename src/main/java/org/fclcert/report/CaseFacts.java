@@ -13,25 +13,25 @@ final class CaseFacts {
 
     /** The expected side of the first mismatch: an output map, a sentence, or null. */
     static Object expected(CaseResult c) {
-        return c.expected();
+        return c.mismatch().map(CaseResult.Mismatch::expected).orElse(null);
     }
 
     /** The actual side of the first mismatch: an output map, a sentence, or null. */
     static Object actual(CaseResult c) {
-        return c.actual();
+        return c.mismatch().map(CaseResult.Mismatch::actual).orElse(null);
     }
 
     /** The program text as sent, when the result kept it (cases that did not pass). */
     static String program(CaseResult c) {
-        return c.program();
+        return c.setup().program();
     }
 
     /** The 1-based step of the first failure, or null. */
     static Integer step(CaseResult c) {
-        return c.step();
+        return c.evidence().step() == null ? null : c.evidence().step().number();
     }
 
     static ExportStatus exportStatus(CaseResult c) {
-        return c.exportStatus();
+        return c.export().status();
     }
 }
