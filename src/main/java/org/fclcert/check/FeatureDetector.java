@@ -145,6 +145,10 @@ public final class FeatureDetector {
             if (namedShape(term)) {
                 return;
             }
+            if (term.function() instanceof MembershipFunction.Computed) {
+                use(Feature.O_TAKAGI_SUGENO, term.location());
+                return;
+            }
             if (term.function() instanceof MembershipFunction.Singleton s) {
                 use(s.value() instanceof VariableRef ? Feature.E_TERM_VARIABLE_POINT : Feature.B_OUT_SINGLETON,
                         term.location());

@@ -144,6 +144,10 @@ final class BlockCompiler {
                 return shapes.size() - 1;
             }
         }
+        if (f instanceof MembershipFunction.Computed computed) {
+            shapes.add(new Shape(computedValue(computed.value())));
+            return shapes.size() - 1;
+        }
         if (f instanceof MembershipFunction.Singleton single) {
             s = new Shape(true, new double[] {constant(single.value())}, new int[] {slotOrNone(single.value())},
                     new double[] {1.0}, new int[] {-1});
@@ -167,6 +171,15 @@ final class BlockCompiler {
         }
         shapes.add(s);
         return shapes.size() - 1;
+    }
+
+    /** A Takagi–Sugeno term's value over the variables' slots (names resolved once, here). */
+    private java.util.function.ToDoubleFunction<double[]> computedValue(org.fclcert.model.Expression e) {
+        Map<String, Integer> used = new HashMap<>();
+        for (String v : e.variables()) {
+            used.put(v, slot(v));
+        }
+        return values -> e.evaluate(name -> values[used.get(name)]);
     }
 
     private RuleBlockPlan ruleBlock(RuleBlock rb) {
@@ -215,8 +228,8 @@ final class BlockCompiler {
         String key = Names.key(d.variable());
         int slot = slot(d.variable());
         boolean singletons = !d.terms().isEmpty()
-                && d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton);
-        boolean points = d.terms().stream().allMatch(t -> !(t.function() instanceof MembershipFunction.Singleton));
+                && d.terms().stream().allMatch(BlockCompiler::singletonLike);
+        boolean points = d.terms().stream().noneMatch(BlockCompiler::singletonLike);
         if (!singletons && !points) {
             throw new IllegalArgumentException("output " + d.variable() + " mixes singleton and point terms");
         }
@@ -245,6 +258,11 @@ final class BlockCompiler {
                 outputAccumulation.getOrDefault(key, AccumulationMethod.MAX),
                 cs.stream().mapToInt(c -> c[0]).toArray(), cs.stream().mapToInt(c -> c[1]).toArray(), prod,
                 maxPoints);
+    }
+
+    /** Singletons and Takagi–Sugeno terms (a singleton at a computed value). */
+    private static boolean singletonLike(Term t) {
+        return t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed;
     }
 
     private static int pointCount(Term t) {

@@ -288,6 +288,11 @@ public final class FunctionBlockInstance {
 
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
     private void defuzzify(OutputPlan o, SmoothSet smooth, Trace trace) throws EvaluationException {
+        for (int s : o.termShapes()) {
+            if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
+                plan.shapes[s].resolve(values, curX[s], curY[s]);
+            }
+        }
         double result = o.singletons() ? singletons(o, trace) : smooth != null ? smoothSet(o, smooth, trace)
                 : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;

@@ -209,6 +209,21 @@ public final class StandardConversion {
                     "term '" + t.name() + "' of " + owner + " is a " + shape.kind().name().toLowerCase(Locale.ROOT).replace('_', ' ') + " curve: " + why));
             return new Term(t.name(), new MembershipFunction.Points(a.points()), t.location());
         }
+        if (f instanceof MembershipFunction.Computed computed) {
+            String id = org.fclcert.model.Feature.O_TAKAGI_SUGENO.id();
+            if (computed.value().variables().isEmpty()) {
+                double v = computed.value().evaluate(name -> 0);
+                findings.add(new Finding(id, t.location(), new Kind.Exact(), "term '" + t.name() + "' of " + owner
+                        + " (" + computed.written() + ") written as the singleton " + num(v)));
+                return new Term(t.name(), new MembershipFunction.Singleton(org.fclcert.model.Literal.of(v)), t.location());
+            }
+            findings.add(new Finding(id, t.location(), new Kind.NotExpressible("a singleton at its value for inputs 0"),
+                    "term '" + t.name() + "' of " + owner + " is a Takagi-Sugeno term (" + computed.written()
+                            + "): its value depends on " + String.join(", ", computed.value().variables())
+                            + ", and standard FCL output terms are constants or fuzzy sets"));
+            return new Term(t.name(), new MembershipFunction.Singleton(org.fclcert.model.Literal.of(computed.value().evaluate(name -> 0))),
+                    t.location());
+        }
         findings.add(new Finding("term '" + t.name() + "'", t.location(), new Kind.NotExpressible("kept as read"),
                 "term '" + t.name() + "': no conversion to points is known for its membership function"));
         return t;

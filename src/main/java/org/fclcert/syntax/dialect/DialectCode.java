@@ -58,8 +58,12 @@ public enum DialectCode {
             "outputs concluded by one rule block with different ACCU in their DEFUZZIFY blocks (fuzzylite)"),
     STATEMENT_SPANS_LINES("FCL-S310", Severity.ERROR,
             "a rule or term continued on another line; fuzzylite reads one statement per line"),
+    DIALECT_UNCLEAR("FCL-S311", Severity.ERROR,
+            "--dialect auto found signs of several libraries, none clearly ahead; name the dialect with --dialect"),
+    INTERNAL_ERROR("FCL-S398", Severity.ERROR,
+            "an internal error of a dialect reader or of the dialect detection (a bug of fclcert; please report it)"),
     TOO_MANY_ERRORS("FCL-S399", Severity.ERROR,
-            "more errors than the reader reports, or an internal error of the reader"),
+            "more errors than the reader reports"),
     COUPLED_AND_OR("FCL-W301", Severity.WARNING,
             "jFuzzyLogic couples AND and OR: the later declaration replaces the other by its pair"),
     AND_OR_PRIORITY("FCL-W302", Severity.WARNING,
@@ -73,7 +77,12 @@ public enum DialectCode {
     COGS_PER_RULE("FCL-W306", Severity.WARNING,
             "fuzzylite's COGS counts every rule separately; fclcert accumulates per term first (Table 5)"),
     NSUM_AS_BSUM("FCL-W307", Severity.WARNING,
-            "the library computes NSUM as BSUM; fclcert normalises (Table 5)");
+            "the library computes NSUM as BSUM; fclcert normalises (Table 5)"),
+    TOLERATED("FCL-W308", Severity.WARNING,
+            "a construct the library tolerates and the standard does not (text after END_FUNCTION_BLOCK, a block"
+                    + " name that is no identifier, a rule name used twice); read as the library reads it"),
+    IMPLIED_RANGE("FCL-W309", Severity.WARNING,
+            "an output without RANGE that needs one: the library defuzzifies over the span of its terms, read as that RANGE");
 
     private final String code;
     private final Severity severity;
