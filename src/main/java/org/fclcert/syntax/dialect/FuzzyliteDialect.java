@@ -237,6 +237,9 @@ final class FuzzyliteDialect extends LibraryDialect {
         }
         Expression e = new Expression.Number(c.size() > inputs.size() ? Double.parseDouble(c.get(inputs.size()).text()) : 0);
         for (int i = inputs.size() - 1; i >= 0; i--) {
+            if (Double.parseDouble(c.get(i).text()) == 0) {
+                continue;                   // 0 · x adds nothing (and keeps a constant Linear a constant)
+            }
             e = new Expression.Binary('+', new Expression.Binary('*',
                     new Expression.Number(Double.parseDouble(c.get(i).text())),
                     new Expression.Variable(inputs.get(i).name())), e);
