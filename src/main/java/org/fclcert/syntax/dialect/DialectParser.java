@@ -20,14 +20,12 @@ import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
-import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
 import org.fclcert.model.Range;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
-import org.fclcert.model.ShapeKind;
 import org.fclcert.model.SourceLocation;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
@@ -56,6 +54,7 @@ final class DialectParser {
     private final List<FeatureUse> features = new ArrayList<>();
     private int errors;
     private boolean stopped;
+    private final DialectTermParser terms = new DialectTermParser(this);
 
     /** Thrown to leave a statement after its first error (already reported). */
     static final class Skip extends RuntimeException {
@@ -474,7 +473,7 @@ final class DialectParser {
             }
             try {
                 if (isKeyword(t, "TERM")) {
-                    terms.add(term(TermContext.INPUT));
+                    terms.add(this.terms.term(TermContext.INPUT));
                 } else if (isKeyword(t, "RANGE")) {
                     // an input's RANGE has no effect on evaluation; kept for the conversion to standard FCL
                     declaredRange = range();
@@ -542,7 +541,7 @@ final class DialectParser {
             }
             try {
                 if (isKeyword(t, "TERM")) {
-                    out.terms.add(term(TermContext.OUTPUT));
+                    out.terms.add(terms.term(TermContext.OUTPUT));
                 } else if (isKeyword(t, "RANGE")) {
                     out.range = range();
                 } else if (isKeyword(t, "METHOD")) {
@@ -613,73 +612,9 @@ final class DialectParser {
         return new DefaultValue.Constant(value, at(kw));
     }
 
-    // ---------------------------------------------------------------- terms
-
-    private Term term(TermContext where) {
-        Token kw = next();
-        String termName = name();
-        if (peek().kind() == Kind.COLON && peek(1).kind() == Kind.ASSIGN) {
-            error(peek(), DialectCode.SYNTAX, "expected ':=' but found ': :='");
-            throw new Skip();
-        }
-        expect(Kind.ASSIGN, "':='");
-        MembershipFunction f = membershipFunction(where);
-        Token end = expect(Kind.SEMI, "';' after the term");
-        if (dialect.oneLineStatements() && end.line() != kw.line()) {
-            error(end, DialectCode.STATEMENT_SPANS_LINES, library + " reads a TERM from one line;"
-                    + " this one continues on line " + end.line());
-        }
-        return new Term(termName, f, at(kw));
-    }
-
-    private MembershipFunction membershipFunction(TermContext where) {
-        Token t = peek();
-        if (t.kind() == Kind.LPAREN) {
-            return new MembershipFunction.Points(points());
-        }
-        if (t.kind() == Kind.NUMBER) {
-            return new MembershipFunction.Singleton(number(false));
-        }
-        if (t.kind() != Kind.WORD) {
-            throw fail(t, "points, a number or a membership-function name");
-        }
-        next();
-        Optional<MembershipFunction> special = dialect.specialTerm(this, t, where);
-        if (special.isPresent()) {
-            return special.get();
-        }
-        Optional<ShapeKind> kind = dialect.shapes().kind(t.text());
-        if (kind.isEmpty()) {
-            boolean known = dialect.shapes().known(t.text());
-            error(t, known ? DialectCode.UNSUPPORTED : DialectCode.UNKNOWN_SHAPE, known
-                    ? "fclcert does not evaluate " + library + "'s '" + t.text() + "' terms"
-                    + (where == TermContext.INPUT ? " in an input" : "")
-                    : "'" + t.text() + "' is not a membership function of " + library);
-            throw new Skip();
-        }
-        List<Literal> written = new ArrayList<>();
-        while (peek().kind() == Kind.NUMBER) {
-            written.add(number(false));
-        }
-        return new MembershipFunction.NamedShape(kind.get(), dialect.shapes().canonical(kind.get(), written));
-    }
-
-    /** (x, y) (x, y) ...; no commas between the points (both libraries reject them). */
+    /** (x, y) (x, y) ...: the points of a term. */
     List<Point> points() {
-        List<Point> pts = new ArrayList<>();
-        while (peek().kind() == Kind.LPAREN) {
-            Token open = next();
-            Literal x = number(false);
-            expect(Kind.COMMA, "',' between x and degree");
-            Literal y = number(false);
-            expect(Kind.RPAREN, "')'");
-            pts.add(new Point(x, y, at(open)));
-            if (peek().kind() == Kind.COMMA) {
-                error(peek(), DialectCode.NOT_IN_DIALECT, library + " rejects ',' between points");
-                next();
-            }
-        }
-        return pts;
+        return terms.points();
     }
 
     // ---------------------------------------------------------------- RULEBLOCK

@@ -40,7 +40,7 @@ import org.fclcert.syntax.dialect.DialectReader.Giveaway;
  * COGSS, unnamed RULEBLOCKs and verbatim engine names. An output defuzzified by a weighted average (COGS,
  * COGSS) whose ACCU is left out adds every rule's degree, which is ACCU SUM.
  */
-final class FuzzyliteDialect extends LibraryDialect {
+class FuzzyliteDialect extends LibraryDialect {
     private static final DialectLexer.Style STYLE = new DialectLexer.Style(true, false, true, "fuzzylite");
 
     @Override
