@@ -46,6 +46,9 @@ final class BlockCompiler {
     private final Map<String, List<int[]>> contributions = new HashMap<>();
     private final Map<String, AccumulationMethod> outputAccumulation = new HashMap<>();
     private int contributionCount;
+    private int inputTermCount;
+    /** 'output IS term' in conditions (dialects): key output\0term to its degree entry after the input terms'. */
+    private final Map<String, Integer> chained = new LinkedHashMap<>();
 
     private BlockCompiler(FunctionBlock fb) {
         this.fb = fb;
@@ -73,6 +76,7 @@ final class BlockCompiler {
         }
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
+        chainedDegrees(b);
         return new BlockPlan(b);
     }
 
@@ -126,6 +130,27 @@ final class BlockCompiler {
         b.termShape = shape.stream().mapToInt(Integer::intValue).toArray();
         b.termVariableName = varName.toArray(String[]::new);
         b.termName = name.toArray(String[]::new);
+        inputTermCount = varSlot.size();
+    }
+
+    /** Which contribution feeds which chained degree, and with which accumulation. */
+    private void chainedDegrees(BlockPlan.Builder b) {
+        b.chainedTerms = chained.size();
+        b.chainedDegree = new int[contributionCount];
+        b.chainedAccumulation = new AccumulationMethod[contributionCount];
+        java.util.Arrays.fill(b.chainedDegree, -1);
+        for (Map.Entry<String, Integer> e : chained.entrySet()) {
+            String output = e.getKey().substring(0, e.getKey().indexOf('\0'));
+            String term = e.getKey().substring(e.getKey().indexOf('\0') + 1);
+            Defuzzification d = fb.defuzzification(output).orElseThrow();
+            int position = termPosition(d, term);
+            for (int[] c : contributions.getOrDefault(output, List.of())) {
+                if (c[1] == position) {
+                    b.chainedDegree[c[0]] = e.getValue();
+                    b.chainedAccumulation[c[0]] = outputAccumulation.getOrDefault(output, AccumulationMethod.MAX);
+                }
+            }
+        }
     }
 
     private int addShape(Term t) {
@@ -283,6 +308,11 @@ final class BlockCompiler {
 
     private int termIndexOf(String variable, String term) {
         Integer i = termIndex.get(Names.key(variable) + '\0' + Names.key(term));
+        java.util.Optional<Defuzzification> output = fb.defuzzification(variable);
+        if (i == null && output.isPresent() && output.get().terms().stream().anyMatch(t -> Names.same(t.name(), term))) {
+            String key = Names.key(variable) + '\0' + Names.key(term);
+            return chained.computeIfAbsent(key, k -> inputTermCount + chained.size());
+        }
         if (i == null) {
             throw new IllegalArgumentException("no term " + term + " of input " + variable);
         }

@@ -39,6 +39,13 @@ final class BlockPlan {
     final boolean[] smoothOutputs;
     /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
     final int contributionCount;
+    /**
+     * Dialects (fuzzylite's 'output IS term' in a condition): per contribution, the entry of the degrees after
+     * the input terms' that accumulates it, or -1; with the accumulation of each contribution and the count.
+     */
+    final int[] chainedDegree;
+    final org.fclcert.model.AccumulationMethod[] chainedAccumulation;
+    final int chainedTerms;
     final int maxStack;
     final int maxBareTargets;
 
@@ -61,6 +68,10 @@ final class BlockPlan {
         outputs = b.outputs;
         smoothOutputs = b.smoothOutputs;
         contributionCount = b.contributionCount;
+        chainedDegree = b.chainedDegree != null ? b.chainedDegree : new int[0];
+        chainedAccumulation = b.chainedAccumulation != null ? b.chainedAccumulation
+                : new org.fclcert.model.AccumulationMethod[0];
+        chainedTerms = b.chainedTerms;
         int stack = 1;
         int bare = 0;
         for (RuleBlockPlan rb : ruleBlocks) {
@@ -93,6 +104,9 @@ final class BlockPlan {
         OutputPlan[] outputs;
         boolean[] smoothOutputs;
         int contributionCount;
+        int[] chainedDegree;
+        org.fclcert.model.AccumulationMethod[] chainedAccumulation;
+        int chainedTerms;
     }
 
     /** One rule block: operators, methods, and per rule its condition and subconclusions. */

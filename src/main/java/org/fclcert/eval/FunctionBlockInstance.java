@@ -44,7 +44,7 @@ public final class FunctionBlockInstance {
     FunctionBlockInstance(BlockPlan plan) {
         this.plan = plan;
         this.values = plan.initialValues.clone();
-        this.termDegrees = new double[plan.termShape.length];
+        this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         int shapes = plan.shapes.length;
         this.curX = new double[shapes][];
         this.curY = new double[shapes][];
@@ -133,6 +133,9 @@ public final class FunctionBlockInstance {
         }
         resolveVariableShapes();
         fuzzify(trace);
+        for (int t = plan.termShape.length; t < termDegrees.length; t++) {
+            termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
+        }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
@@ -206,6 +209,11 @@ public final class FunctionBlockInstance {
                 if (sc.contribution() >= 0) {
                     contributionDegree[sc.contribution()] = d;
                     contributionWeight[sc.contribution()] = w;
+                    int chained = plan.chainedDegree.length == 0 ? -1 : plan.chainedDegree[sc.contribution()];
+                    if (chained >= 0) {
+                        termDegrees[chained] = accumulate(plan.chainedAccumulation[sc.contribution()],
+                                termDegrees[chained], w * d);
+                    }
                 } else {
                     bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w * d);
                 }

@@ -129,6 +129,12 @@ public final class StandardConversion {
             if (JUDGED_ELSEWHERE.contains(u.feature())) {
                 continue;
             }
+            if (u.feature() == Feature.O_OUTPUT_CONDITION) {
+                findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("kept as read"),
+                        "a condition on an output's term (the degree it has reached so far): standard conditions"
+                                + " read inputs only (5.2.4)"));
+                continue;
+            }
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
                     DialectSyntaxText.standardForm(u.feature())));
         }

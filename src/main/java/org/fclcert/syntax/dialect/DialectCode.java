@@ -78,6 +78,11 @@ public enum DialectCode {
             "fuzzylite's COGS counts every rule separately; fclcert accumulates per term first (Table 5)"),
     NSUM_AS_BSUM("FCL-W307", Severity.WARNING,
             "the library computes NSUM as BSUM; fclcert normalises (Table 5)"),
+    WEIGHT_BEFORE_ACTIVATION("FCL-W310", Severity.WARNING,
+            "fuzzylite multiplies a rule's degree by its WITH weight before activation; fclcert weighs the activated"
+                    + " set, which differs under ACT MIN on fuzzy-set outputs"),
+    FIRST_PLATEAU("FCL-W311", Severity.WARNING,
+            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point"),
     TOLERATED("FCL-W308", Severity.WARNING,
             "a construct the library tolerates and the standard does not (text after END_FUNCTION_BLOCK, a block"
                     + " name that is no identifier, a rule name used twice); read as the library reads it"),

@@ -160,6 +160,9 @@ class FuzzyliteDialect extends LibraryDialect {
             case "RM" -> DefuzzificationMethod.RM;
             case "MM" -> {
                 p.feature(Feature.O_METHOD_MM, p.at(w));
+                p.warn(p.at(w), DialectCode.FIRST_PLATEAU, "fuzzylite's MM is the middle of the first plateau of"
+                        + " maximum (sampled); fclcert's MoM the mean of every maximal point: they differ when the"
+                        + " maximum is reached on separate intervals");
                 yield DefuzzificationMethod.MOM;
             }
             default -> null;
@@ -332,7 +335,62 @@ class FuzzyliteDialect extends LibraryDialect {
         FunctionBlock out = new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(),
                 blocks, fb.options(), fb.location());
         cogsPerRule(p, out);
+        outputConditions(p, out);
+        weights(p, out);
         return out;
+    }
+
+    /** FCL-W310 at each weighted rule whose weight fclcert applies after ACT MIN to a fuzzy-set output. */
+    private static void weights(DialectParser p, FunctionBlock fb) {
+        for (RuleBlock rb : fb.ruleBlocks()) {
+            boolean min = rb.activation().map(a -> a.value() == org.fclcert.model.ActivationMethod.MIN).orElse(true);
+            for (Rule r : rb.rules()) {
+                for (Subconclusion s : r.conclusion()) {
+                    boolean weighted = s.weight().map(w -> !(w instanceof Literal l) || l.value() != 1).orElse(false);
+                    boolean fuzzySet = fb.defuzzification(s.variable()).map(d -> d.terms().stream().anyMatch(t ->
+                            !(t.function() instanceof MembershipFunction.Singleton)
+                                    && !(t.function() instanceof MembershipFunction.Computed))).orElse(false);
+                    if (min && weighted && fuzzySet) {
+                        p.warn(s.location(), DialectCode.WEIGHT_BEFORE_ACTIVATION, "rule " + r.name() + ": fuzzylite"
+                                + " activates '" + s.variable() + "' by MIN(term, weight x degree); fclcert weighs the"
+                                + " activated set, weight x MIN(term, degree), so the results differ");
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * 'output is term' in a condition: fuzzylite takes the degree the term has reached in the output's fuzzy set
+     * so far in this evaluation (the rules before, accumulated by the output's ACCU); an Open Level reading the
+     * evaluator follows, recorded where written.
+     */
+    private static void outputConditions(DialectParser p, FunctionBlock fb) {
+        Set<String> outputs = new java.util.HashSet<>();
+        fb.variables().stream().filter(v -> v.kind() == VariableKind.OUTPUT).forEach(v -> outputs.add(Names.key(v.name())));
+        for (RuleBlock rb : fb.ruleBlocks()) {
+            for (Rule r : rb.rules()) {
+                walk(r.condition(), c -> {
+                    if (c instanceof org.fclcert.model.Condition.TermSubcondition t && !t.any()
+                            && outputs.contains(Names.key(t.variable()))) {
+                        p.feature(Feature.O_OUTPUT_CONDITION, t.location());
+                    }
+                });
+            }
+        }
+    }
+
+    private static void walk(org.fclcert.model.Condition c, java.util.function.Consumer<org.fclcert.model.Condition> f) {
+        f.accept(c);
+        if (c instanceof org.fclcert.model.Condition.And a) {
+            a.operands().forEach(x -> walk(x, f));
+        } else if (c instanceof org.fclcert.model.Condition.Or o) {
+            o.operands().forEach(x -> walk(x, f));
+        } else if (c instanceof org.fclcert.model.Condition.Not n) {
+            walk(n.operand(), f);
+        } else if (c instanceof org.fclcert.model.Condition.Parenthesized q) {
+            walk(q.inner(), f);
+        }
     }
 
     private static boolean weightedAverage(DialectParser.Output o) {
