@@ -242,6 +242,7 @@ public final class FeatureDetector {
             case MIN -> Feature.B_AND_MIN;
             case PROD -> Feature.E_AND_PROD;
             case BDIF -> Feature.E_AND_BDIF;
+            case EPROD, HPROD, DPROD, NMIN -> Feature.O_OTHER_NORM;
         };
     }
 
@@ -250,6 +251,7 @@ public final class FeatureDetector {
             case MAX -> Feature.E_OR_MAX;
             case ASUM -> Feature.E_OR_ASUM;
             case BSUM -> Feature.E_OR_BSUM;
+            case ESUM, HSUM, DSUM, NMAX -> Feature.O_OTHER_NORM;
         };
     }
 

@@ -47,6 +47,8 @@ final class BlockCompiler {
     private final Map<String, AccumulationMethod> outputAccumulation = new HashMap<>();
     private int contributionCount;
     private int inputTermCount;
+    /** Per contribution id: the hedges of its subconclusion (dialects), or null. */
+    private final Map<Integer, org.fclcert.model.Hedge[]> hedges = new HashMap<>();
     /** 'output IS term' in conditions (dialects): key output\0term to its degree entry after the input terms'. */
     private final Map<String, Integer> chained = new LinkedHashMap<>();
 
@@ -77,6 +79,10 @@ final class BlockCompiler {
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
         chainedDegrees(b);
+        if (!hedges.isEmpty()) {
+            b.contributionHedges = new org.fclcert.model.Hedge[contributionCount][];
+            hedges.forEach((id, h) -> b.contributionHedges[id] = h);
+        }
         return new BlockPlan(b);
     }
 
@@ -243,6 +249,9 @@ final class BlockCompiler {
                 () -> new IllegalArgumentException("no DEFUZZIFY for " + s.variable()));
         int termInOutput = termPosition(d, s.term().get());
         int id = contributionCount++;
+        if (!s.hedges().isEmpty()) {
+            hedges.put(id, s.hedges().toArray(org.fclcert.model.Hedge[]::new));
+        }
         contributions.computeIfAbsent(key, k -> new ArrayList<>())
                 .add(new int[] {id, termInOutput, act == ActivationMethod.PROD ? 1 : 0});
         outputAccumulation.putIfAbsent(key, accu);

@@ -46,6 +46,8 @@ final class BlockPlan {
     final int[] chainedDegree;
     final org.fclcert.model.AccumulationMethod[] chainedAccumulation;
     final int chainedTerms;
+    /** Dialects (fuzzylite hedges in conclusions): per contribution, the hedges applied to the rule's degree, or null. */
+    final org.fclcert.model.Hedge[][] contributionHedges;
     final int maxStack;
     final int maxBareTargets;
 
@@ -72,6 +74,7 @@ final class BlockPlan {
         chainedAccumulation = b.chainedAccumulation != null ? b.chainedAccumulation
                 : new org.fclcert.model.AccumulationMethod[0];
         chainedTerms = b.chainedTerms;
+        contributionHedges = b.contributionHedges != null ? b.contributionHedges : new org.fclcert.model.Hedge[0][];
         int stack = 1;
         int bare = 0;
         for (RuleBlockPlan rb : ruleBlocks) {
@@ -107,6 +110,7 @@ final class BlockPlan {
         int[] chainedDegree;
         org.fclcert.model.AccumulationMethod[] chainedAccumulation;
         int chainedTerms;
+        org.fclcert.model.Hedge[][] contributionHedges;
     }
 
     /** One rule block: operators, methods, and per rule its condition and subconclusions. */

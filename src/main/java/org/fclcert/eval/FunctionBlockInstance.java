@@ -201,10 +201,14 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
+            double ruleDegree = d;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
             for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                org.fclcert.model.Hedge[] hedged = sc.contribution() < 0 || plan.contributionHedges.length == 0 ? null
+                        : plan.contributionHedges[sc.contribution()];
+                d = hedged == null ? ruleDegree : org.fclcert.model.Hedge.applyAll(java.util.List.of(hedged), ruleDegree);
                 double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
                 if (sc.contribution() >= 0) {
                     contributionDegree[sc.contribution()] = d;
@@ -279,6 +283,10 @@ public final class FunctionBlockInstance {
             case MIN -> Math.min(x, y);
             case PROD -> x * y;
             case BDIF -> Math.max(0.0, x + y - 1.0);
+            case EPROD -> x * y / (2 - (x + y - x * y));
+            case HPROD -> x + y == 0 ? 0.0 : x * y / (x + y - x * y);
+            case DPROD -> Math.max(x, y) == 1.0 ? Math.min(x, y) : 0.0;
+            case NMIN -> x + y > 1.0 ? Math.min(x, y) : 0.0;
         };
     }
 
@@ -287,6 +295,10 @@ public final class FunctionBlockInstance {
             case MAX -> Math.max(x, y);
             case ASUM -> x + y - x * y;
             case BSUM -> Math.min(1.0, x + y);
+            case ESUM -> (x + y) / (1 + x * y);
+            case HSUM -> x * y == 1.0 ? 1.0 : (x + y - 2 * x * y) / (1 - x * y);
+            case DSUM -> Math.min(x, y) == 0.0 ? Math.max(x, y) : 1.0;
+            case NMAX -> x + y < 1.0 ? Math.max(x, y) : 1.0;
         };
     }
 

@@ -169,6 +169,11 @@ public enum Feature {
     O_OUTPUT_CONDITION("O-OUTPUT-CONDITION", ConformanceLevel.OPEN, "condition",
             "'output IS term' in a condition: the degree the term has reached so far in this evaluation (fuzzylite)",
             true),
+    O_HEDGE_IN_CONCLUSION("O-HEDGE-IN-CONCLUSION", ConformanceLevel.OPEN, "conclusion",
+            "hedges before a conclusion's term, applied to the rule's degree (fuzzylite: for every later"
+                    + " subconclusion of the rule too)", true),
+    O_OTHER_NORM("O-OTHER-NORM", ConformanceLevel.OPEN, "conditional aggregation",
+            "AND / OR algorithms outside Table 3: Einstein, Hamacher, drastic and nilpotent norms", true),
     O_SHAPE_SINGLETONS("O-SHAPE-SINGLETONS", ConformanceLevel.OPEN, "membership function",
             "jFuzzyLogic 'singletons (x, 1)' written for a single singleton", true),
     O_SHAPE_DISCRETE("O-SHAPE-DISCRETE", ConformanceLevel.OPEN, "membership function",

@@ -129,6 +129,11 @@ public final class StandardConversion {
             if (JUDGED_ELSEWHERE.contains(u.feature())) {
                 continue;
             }
+            if (u.feature() == Feature.O_HEDGE_IN_CONCLUSION) {
+                findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("left out"),
+                        "a hedge in a conclusion (applied to the rule's degree): standard conclusions have none"));
+                continue;
+            }
             if (u.feature() == Feature.O_OUTPUT_CONDITION) {
                 findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("kept as read"),
                         "a condition on an output's term (the degree it has reached so far): standard conditions"
@@ -146,6 +151,7 @@ public final class StandardConversion {
      * a block whose rules use both has no standard spelling.
      */
     private static Program unpairedOperators(Program program, List<Finding> findings) {
+        program = otherNorms(program, findings);
         Set<SourceLocation> at = new java.util.HashSet<>();
         program.dialectFeatures().stream().filter(u -> u.feature() == Feature.O_UNPAIRED_OPERATORS)
                 .forEach(u -> at.add(u.location()));
@@ -185,6 +191,37 @@ public final class StandardConversion {
                     fb.options(), fb.location()));
         }
         return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    /** AND / OR outside Table 3 (Einstein, Hamacher, drastic, nilpotent): not expressible; MIN / MAX written. */
+    private static Program otherNorms(Program program, List<Finding> findings) {
+        List<FunctionBlock> blocks = new ArrayList<>();
+        boolean changed = false;
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<RuleBlock> rbs = new ArrayList<>();
+            for (RuleBlock rb : fb.ruleBlocks()) {
+                var and = rb.and();
+                var or = rb.or();
+                if (and.isPresent() && !and.get().value().standard()) {
+                    findings.add(new Finding(Feature.O_OTHER_NORM.id(), and.get().location(),
+                            new Kind.NotExpressible("AND : MIN"), "AND " + and.get().value() + " of rule block "
+                                    + rb.name() + " is not an algorithm of Table 3"));
+                    and = Optional.of(new Located<>(org.fclcert.model.AndAlgorithm.MIN, and.get().location()));
+                    changed = true;
+                }
+                if (or.isPresent() && !or.get().value().standard()) {
+                    findings.add(new Finding(Feature.O_OTHER_NORM.id(), or.get().location(),
+                            new Kind.NotExpressible("OR : MAX"), "OR " + or.get().value() + " of rule block "
+                                    + rb.name() + " is not an algorithm of Table 3"));
+                    or = Optional.of(new Located<>(org.fclcert.model.OrAlgorithm.MAX, or.get().location()));
+                    changed = true;
+                }
+                rbs.add(new RuleBlock(rb.name(), and, or, rb.activation(), rb.accumulation(), rb.rules(), rb.location()));
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(), rbs,
+                    fb.options(), fb.location()));
+        }
+        return changed ? new Program(program.sourceName(), blocks, program.dialectFeatures()) : program;
     }
 
     private static boolean uses(Condition c, boolean and) {

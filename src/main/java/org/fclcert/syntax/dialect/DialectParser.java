@@ -650,10 +650,10 @@ final class DialectParser {
             }
             try {
                 if (isKeyword(t, "AND") && peek(1).kind() == Kind.COLON) {
-                    block.and = Optional.of(new Located<>(algorithm(AndAlgorithm.class, "MIN, PROD, BDIF"), at(t)));
+                    block.and = Optional.of(new Located<>(algorithm(AndAlgorithm.class, dialect.andNames()), at(t)));
                     block.lastOperator = "AND";
                 } else if (isKeyword(t, "OR") && peek(1).kind() == Kind.COLON) {
-                    block.or = Optional.of(new Located<>(algorithm(OrAlgorithm.class, "MAX, ASUM, BSUM"), at(t)));
+                    block.or = Optional.of(new Located<>(algorithm(OrAlgorithm.class, dialect.orNames()), at(t)));
                     block.lastOperator = "OR";
                 } else if (isKeyword(t, "ACT")) {
                     block.act = Optional.of(new Located<>(algorithm(ActivationMethod.class, "MIN, PROD"), at(t)));
@@ -688,6 +688,8 @@ final class DialectParser {
         String upper = word.toUpperCase(Locale.ROOT);
         if (type == OrAlgorithm.class) {
             upper = dialect.orAlgorithm(upper);
+        } else if (type == AndAlgorithm.class) {
+            upper = dialect.andAlgorithm(upper);
         }
         for (E value : type.getEnumConstants()) {
             if (value.name().equals(upper)) {

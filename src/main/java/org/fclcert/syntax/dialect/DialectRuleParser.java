@@ -197,6 +197,8 @@ final class DialectRuleParser {
     private List<Subconclusion> conclusion() {
         List<Token> starts = new ArrayList<>();
         List<String[]> parts = new ArrayList<>();
+        List<List<Hedge>> hedgesOf = new ArrayList<>();
+        List<Hedge> cumulative = new ArrayList<>();
         while (true) {
             Token v = ruleToken();
             if (v == null || v.kind() != Kind.WORD) {
@@ -213,11 +215,25 @@ final class DialectRuleParser {
             if (term == null || term.kind() != Kind.WORD) {
                 throw ruleFail("a term");
             }
-            if (dialect.hedge(term).isPresent() && ruleTokenAfter(term)) {
-                p.error(term, DialectCode.UNSUPPORTED, "a hedge in a conclusion ('" + term.text() + "'): "
-                        + p.library + " applies it to the rule's activation degree; fclcert does not evaluate it");
-                throw new DialectParser.Skip();
+            List<Hedge> written = new ArrayList<>();
+            while (dialect.hedge(term).isPresent() && ruleTokenAfter(term)) {
+                if (!dialect.hedgesInConclusions()) {
+                    p.error(term, DialectCode.UNSUPPORTED, "a hedge in a conclusion ('" + term.text() + "'): "
+                            + p.library + " does not read it");
+                    throw new DialectParser.Skip();
+                }
+                written.add(dialect.hedge(term).get());
+                p.feature(Feature.O_HEDGE_IN_CONCLUSION, p.at(term));
+                p.next();
+                term = ruleToken();
+                if (term == null || term.kind() != Kind.WORD) {
+                    throw ruleFail("a term");
+                }
             }
+            // fuzzylite applies a conclusion's hedges to the rule's degree itself, so they also hold for every
+            // later subconclusion of the rule; applyAll takes the list nearest-the-term first, hence the prepend
+            cumulative.addAll(0, written);
+            hedgesOf.add(List.copyOf(cumulative));
             p.next();
             starts.add(v);
             parts.add(new String[] {v.text(), term.text()});
@@ -244,7 +260,8 @@ final class DialectRuleParser {
         // the library weighs the whole rule: every subconclusion carries the weight
         List<Subconclusion> out = new ArrayList<>();
         for (int i = 0; i < parts.size(); i++) {
-            out.add(new Subconclusion(parts.get(i)[0], Optional.of(parts.get(i)[1]), weight, p.at(starts.get(i))));
+            out.add(new Subconclusion(parts.get(i)[0], Optional.of(parts.get(i)[1]), weight, hedgesOf.get(i),
+                    p.at(starts.get(i))));
         }
         return out;
     }

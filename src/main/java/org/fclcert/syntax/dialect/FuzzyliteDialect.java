@@ -187,6 +187,21 @@ class FuzzyliteDialect extends LibraryDialect {
     }
 
     @Override
+    String andNames() {
+        return "MIN, PROD, BDIF, EPROD, HPROD, DPROD, NMIN";
+    }
+
+    @Override
+    String orNames() {
+        return "MAX, ASUM, BSUM, ESUM, HSUM, DSUM, NMAX";
+    }
+
+    @Override
+    boolean hedgesInConclusions() {
+        return true;
+    }
+
+    @Override
     String accumulationNames() {
         return "MAX, BSUM, NSUM, ASUM, SUM";
     }
@@ -350,7 +365,11 @@ class FuzzyliteDialect extends LibraryDialect {
                     boolean fuzzySet = fb.defuzzification(s.variable()).map(d -> d.terms().stream().anyMatch(t ->
                             !(t.function() instanceof MembershipFunction.Singleton)
                                     && !(t.function() instanceof MembershipFunction.Computed))).orElse(false);
-                    if (min && weighted && fuzzySet) {
+                    if (weighted && !s.hedges().isEmpty()) {
+                        p.warn(s.location(), DialectCode.WEIGHT_BEFORE_ACTIVATION, "rule " + r.name() + ": fuzzylite"
+                                + " hedges the weighted degree of '" + s.variable() + "', h(weight x degree); fclcert"
+                                + " weighs the hedged degree, weight x h(degree), so the results differ");
+                    } else if (min && weighted && fuzzySet) {
                         p.warn(s.location(), DialectCode.WEIGHT_BEFORE_ACTIVATION, "rule " + r.name() + ": fuzzylite"
                                 + " activates '" + s.variable() + "' by MIN(term, weight x degree); fclcert weighs the"
                                 + " activated set, weight x MIN(term, degree), so the results differ");

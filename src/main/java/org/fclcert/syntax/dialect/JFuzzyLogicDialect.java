@@ -118,7 +118,37 @@ final class JFuzzyLogicDialect extends LibraryDialect {
 
     @Override
     String orAlgorithm(String upper) {
-        return upper.equals("PROBOR") ? "ASUM" : upper;
+        return switch (upper) {
+            case "PROBOR" -> "ASUM";
+            case "DMAX" -> "DSUM";
+            case "NIPMAX" -> "NMAX";
+            case "EINSTEIN" -> "ESUM";
+            case "HAMACHER" -> "HSUM";
+            case "ESUM", "HSUM", "DSUM", "NMAX" -> "not " + upper;    // fuzzylite's names, not jFuzzyLogic's
+            default -> upper;
+        };
+    }
+
+    @Override
+    String andAlgorithm(String upper) {
+        return switch (upper) {
+            case "DMIN" -> "DPROD";
+            case "NIPMIN" -> "NMIN";
+            case "EINSTEIN" -> "EPROD";
+            case "HAMACHER" -> "HPROD";
+            case "EPROD", "HPROD", "DPROD", "NMIN" -> "not " + upper;
+            default -> upper;
+        };
+    }
+
+    @Override
+    String andNames() {
+        return "MIN, PROD, BDIF, DMIN, NIPMIN, HAMACHER, EINSTEIN";
+    }
+
+    @Override
+    String orNames() {
+        return "MAX, ASUM, PROBOR, BSUM, DMAX, NIPMAX, HAMACHER, EINSTEIN";
     }
 
     @Override

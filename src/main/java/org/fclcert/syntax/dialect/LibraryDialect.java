@@ -83,6 +83,16 @@ abstract class LibraryDialect {
         return upper;
     }
 
+    /** An AND algorithm's name as the model spells it. */
+    String andAlgorithm(String upper) {
+        return upper;
+    }
+
+    /** The AND and OR algorithms the dialect names, for messages. */
+    abstract String andNames();
+
+    abstract String orNames();
+
     /** A term of the dialect's own forms (named-shape words are read from {@link #shapes()}), or empty. */
     Optional<MembershipFunction> specialTerm(DialectParser p, Token word, DialectParser.TermContext where) {
         return Optional.empty();
@@ -113,7 +123,7 @@ abstract class LibraryDialect {
     /** A hedge word before a term, or empty. */
     abstract Optional<Hedge> hedge(Token t);
 
-    /** Whether hedges may stand before a term of a conclusion (fuzzylite applies them to the activation degree). */
+    /** The hedges before a conclusion's term, applied to the rule's degree (fuzzylite). */
     boolean hedgesInConclusions() {
         return false;
     }

@@ -206,6 +206,57 @@ class DialectsInTheWildTest {
         assertEquals(0.5 / 0.7, eval(p, Map.of("a", 0.5, "b", 0.4), "y"), 1e-12);
     }
 
+    /**
+     * fuzzylite applies a conclusion's hedge to the rule's degree itself, so it holds for the later subconclusions
+     * of the rule too (the fuzzylite binary gives y = 0.2, z = 0.310345 here); EPROD is the Einstein product.
+     */
+    @Test
+    void fuzzyliteHedgesInConclusionsAndEinsteinProduct() throws Exception {
+        String text = """
+                FUNCTION_BLOCK h
+                VAR_INPUT
+                  a: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                  z: REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM hi := Ramp 0.000 1.000;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  TERM one := 1.000;
+                  TERM zero := 0.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                DEFUZZIFY z
+                  TERM one := 1.000;
+                  TERM zero := 0.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  AND : EPROD;
+                  RULE 1 : if a is hi then y is very one and z is one
+                  RULE 2 : if a is any then y is zero and z is zero
+                  RULE 3 : if a is hi and a is hi then z is one
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = read(new FuzzyliteReader(), text);
+        // a = 0.5: rule 1 degree 0.5, very → 0.25 for y and for z; rule 3: 0.25 / (2 − 0.75) = 0.2
+        assertEquals(0.25 / 1.25, eval(p, Map.of("a", 0.5), "y"), 1e-15);
+        assertEquals((0.25 + 0.2) / 1.45, eval(p, Map.of("a", 0.5), "z"), 1e-15);
+        StandardConversion.Result r = new StandardConversion().convert(p);
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-HEDGE-IN-CONCLUSION")
+                && f.kind() instanceof StandardConversion.Kind.NotExpressible));
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-OTHER-NORM")
+                && f.kind() instanceof StandardConversion.Kind.NotExpressible));
+        // the strict reader does not take EPROD
+        assertTrue(analyze(new StrictReader(), text.replace("RULEBLOCK\n", "RULEBLOCK r\n")).program().isEmpty());
+    }
+
     private static final String JFL_HEAD = """
             FUNCTION_BLOCK tipper
             VAR_INPUT
