@@ -36,7 +36,7 @@ public enum DialectCode {
     FFLL_RANGES_DISAGREE("FCL-D120", Severity.WARNING,
             "an output whose RANGE and RANGE comment disagree; fclcert uses the RANGE"),
 
-    // the jFuzzyLogic and fuzzylite readers (one shared reader, LibraryDialectParser): FCL-S3nn errors, FCL-W3nn
+    // the jFuzzyLogic and fuzzylite readers (one shared reading core, DialectParser, with a LibraryDialect strategy each): FCL-S3nn errors, FCL-W3nn
     // warnings where the library gives the program another meaning than fclcert reads
     UNEXPECTED_CHARACTER("FCL-S301", Severity.ERROR,
             "a character the dialect does not accept"),
