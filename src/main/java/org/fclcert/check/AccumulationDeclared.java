@@ -5,14 +5,13 @@ import org.fclcert.model.RuleBlock;
 
 /** FCL-C018: every rule block names its accumulation method with ACCU (5.2.4, 5.4). */
 public final class AccumulationDeclared implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C018";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C018", "5.2.4, 5.4",
+            "every rule block declares ACCU");
 
     @Override
-    public String asserts() {
-        return "every rule block declares ACCU";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -11,14 +11,13 @@ import org.fclcert.model.RuleBlock;
  * pairs of Table 3 (MIN/MAX, PROD/ASUM, BDIF/BSUM). Reported at whichever declaration comes second.
  */
 public final class AndOrPaired implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C014";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C014", "5.2.4, Table 3",
+            "a rule block declaring both AND and OR uses a Table 3 pair of algorithms");
 
     @Override
-    public String asserts() {
-        return "a rule block declaring both AND and OR uses a Table 3 pair of algorithms";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     /**

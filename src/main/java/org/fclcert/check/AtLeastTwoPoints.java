@@ -6,14 +6,13 @@ import org.fclcert.model.Term;
 
 /** FCL-C029: a term given by points has at least two points (5.2.2); one value alone is a singleton. */
 public final class AtLeastTwoPoints implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C029";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C029", "5.2.2",
+            "every term given by points has at least two points");
 
     @Override
-    public String asserts() {
-        return "every term given by points has at least two points";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

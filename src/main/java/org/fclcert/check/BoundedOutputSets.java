@@ -24,15 +24,14 @@ public final class BoundedOutputSets implements FunctionBlockRule {
             DefuzzificationMethod.COG, DefuzzificationMethod.COA, DefuzzificationMethod.LM, DefuzzificationMethod.RM,
             DefuzzificationMethod.MOM);
 
-    @Override
-    public String code() {
-        return "FCL-C025";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C025", "5.2.2, 5.2.3",
+            "an output using CoG, CoA, LM or RM without RANGE has no term that is non-zero at an outer end"
+                    + " (and no smooth named shape)");
 
     @Override
-    public String asserts() {
-        return "an output using CoG, CoA, LM or RM without RANGE has no term that is non-zero at an outer end"
-                + " (and no smooth named shape)";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

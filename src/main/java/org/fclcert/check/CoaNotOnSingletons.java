@@ -7,14 +7,13 @@ import org.fclcert.model.MembershipFunction;
 
 /** FCL-C020: METHOD CoA is not used with singleton terms (Table 1, note 3). */
 public final class CoaNotOnSingletons implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C020";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C020", "Table 1 note 3",
+            "an output defuzzified with CoA has no singleton terms");
 
     @Override
-    public String asserts() {
-        return "an output defuzzified with CoA has no singleton terms";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

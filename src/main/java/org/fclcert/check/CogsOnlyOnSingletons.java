@@ -8,14 +8,13 @@ import org.fclcert.model.Term;
 
 /** FCL-C019: METHOD CoGS (centre of gravity for singletons, Table 1) is used only on singleton terms. */
 public final class CogsOnlyOnSingletons implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C019";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C019", "Table 1",
+            "an output defuzzified with CoGS has only singleton terms");
 
     @Override
-    public String asserts() {
-        return "an output defuzzified with CoGS has only singleton terms";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -11,14 +11,13 @@ import org.fclcert.model.VariableKind;
  * variable, a local variable), never the inputs the function block receives (5.2.4).
  */
 public final class ConclusionsOnOutputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C024";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C024", "5.2.4",
+            "no subconclusion names an input variable");
 
     @Override
-    public String asserts() {
-        return "no subconclusion names an input variable";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -5,14 +5,13 @@ import org.fclcert.model.FunctionBlock;
 
 /** FCL-C017: every DEFUZZIFY block gives a DEFAULT value or NC (the 5.4 production requires it). */
 public final class DefaultDeclared implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C017";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C017", "5.2.3, 5.4",
+            "every DEFUZZIFY block declares DEFAULT (a value or NC)");
 
     @Override
-    public String asserts() {
-        return "every DEFUZZIFY block declares DEFAULT (a value or NC)";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -6,14 +6,13 @@ import org.fclcert.model.VariableKind;
 
 /** FCL-C009: DEFUZZIFY names a VAR_OUTPUT variable (5.2.3). Undeclared names are FCL-C001's. */
 public final class DefuzzifyOnlyOutputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C009";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C009", "5.2.3",
+            "every DEFUZZIFY block is for a VAR_OUTPUT variable");
 
     @Override
-    public String asserts() {
-        return "every DEFUZZIFY block is for a VAR_OUTPUT variable";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

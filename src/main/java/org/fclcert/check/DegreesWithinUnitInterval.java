@@ -5,14 +5,13 @@ import org.fclcert.model.Literal;
 
 /** FCL-C011: a constant membership degree of a point lies in [0, 1] (5.2.2). */
 public final class DegreesWithinUnitInterval implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C011";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C011", "5.2.2",
+            "every constant membership degree of a point is between 0 and 1");
 
     @Override
-    public String asserts() {
-        return "every constant membership degree of a point is between 0 and 1";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

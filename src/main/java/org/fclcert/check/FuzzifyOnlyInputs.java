@@ -6,14 +6,13 @@ import org.fclcert.model.VariableKind;
 
 /** FCL-C008: FUZZIFY names a VAR_INPUT variable (5.2.2). Undeclared names are FCL-C001's. */
 public final class FuzzifyOnlyInputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C008";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C008", "5.2.2",
+            "every FUZZIFY block is for a VAR_INPUT variable");
 
     @Override
-    public String asserts() {
-        return "every FUZZIFY block is for a VAR_INPUT variable";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

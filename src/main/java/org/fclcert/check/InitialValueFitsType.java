@@ -11,14 +11,13 @@ import org.fclcert.model.Variable;
  * for REAL and LREAL. A real literal with a whole value (e.g. {@code 2.0} for INT) is accepted.
  */
 public final class InitialValueFitsType implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C030";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C030", "5.2.1 (IEC 61131-3 data types)",
+            "every initial value can be represented in its variable's data type");
 
     @Override
-    public String asserts() {
-        return "every initial value can be represented in its variable's data type";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

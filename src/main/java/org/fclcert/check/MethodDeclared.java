@@ -5,14 +5,13 @@ import org.fclcert.model.FunctionBlock;
 
 /** FCL-C016: every DEFUZZIFY block names its defuzzification METHOD (5.2.3, 5.4). */
 public final class MethodDeclared implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C016";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C016", "5.2.3, 5.4",
+            "every DEFUZZIFY block declares METHOD");
 
     @Override
-    public String asserts() {
-        return "every DEFUZZIFY block declares METHOD";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -11,14 +11,13 @@ import org.fclcert.model.RuleBlock;
  * at the first parenthesis beyond the limit.
  */
 public final class NestingWithinLimit implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C026";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C026", "Table 11",
+            "no condition nests parentheses deeper than " + Limits.MAX_NESTING_DEPTH);
 
     @Override
-    public String asserts() {
-        return "no condition nests parentheses deeper than " + Limits.MAX_NESTING_DEPTH;
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

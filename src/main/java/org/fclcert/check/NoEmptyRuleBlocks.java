@@ -5,14 +5,13 @@ import org.fclcert.model.RuleBlock;
 
 /** FCL-W002 (warning): every rule block has at least one rule; an empty block is never used. */
 public final class NoEmptyRuleBlocks implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-W002";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.warning("FCL-W002", "—",
+            "every rule block contains a rule");
 
     @Override
-    public String asserts() {
-        return "every rule block contains a rule";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

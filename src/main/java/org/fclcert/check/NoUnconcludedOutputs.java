@@ -15,14 +15,13 @@ import org.fclcert.model.VariableKind;
  * bare variable; otherwise it only ever holds its default or initial value.
  */
 public final class NoUnconcludedOutputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-W003";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.warning("FCL-W003", "—",
+            "every output is concluded by some rule");
 
     @Override
-    public String asserts() {
-        return "every output is concluded by some rule";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -24,14 +24,13 @@ import org.fclcert.model.Term;
  * (conclusions).
  */
 public final class NoUndefinedTerms implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C002";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C002", "5.2.4",
+            "the term of every 'variable IS term' is defined for that variable");
 
     @Override
-    public String asserts() {
-        return "the term of every 'variable IS term' is defined for that variable";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

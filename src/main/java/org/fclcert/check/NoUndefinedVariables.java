@@ -15,14 +15,13 @@ import org.fclcert.model.VariableRef;
 
 /** FCL-C001: every name used as a variable is declared in the function block (5.2.1). */
 public final class NoUndefinedVariables implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C001";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C001", "5.2.1",
+            "every variable named in FUZZIFY, DEFUZZIFY, rules, points, singletons and WITH is declared");
 
     @Override
-    public String asserts() {
-        return "every variable named in FUZZIFY, DEFUZZIFY, rules, points, singletons and WITH is declared";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

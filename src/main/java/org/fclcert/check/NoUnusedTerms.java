@@ -21,14 +21,13 @@ import org.fclcert.model.VariableKind;
  * the first DEFUZZIFY block of an output are considered: other blocks are errors of their own.
  */
 public final class NoUnusedTerms implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-W001";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.warning("FCL-W001", "—",
+            "every defined term is used by some rule");
 
     @Override
-    public String asserts() {
-        return "every defined term is used by some rule";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -5,14 +5,13 @@ import org.fclcert.model.Literal;
 
 /** FCL-W004 (warning): no subconclusion has the constant weighting factor 0, which disables it. */
 public final class NoZeroWeights implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-W004";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.warning("FCL-W004", "5.2.4",
+            "no constant weighting factor is 0");
 
     @Override
-    public String asserts() {
-        return "no constant weighting factor is 0";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -21,14 +21,13 @@ public final class OneAccumulationPerOutput implements FunctionBlockRule {
     private record First(RuleBlock block, AccumulationMethod method) {
     }
 
-    @Override
-    public String code() {
-        return "FCL-C022";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C022", "5.2.4, Table 5",
+            "all rule blocks concluding one output declare the same ACCU");
 
     @Override
-    public String asserts() {
-        return "all rule blocks concluding one output declare the same ACCU";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

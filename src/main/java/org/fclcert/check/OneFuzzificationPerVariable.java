@@ -11,14 +11,13 @@ import org.fclcert.model.SourceLocation;
  * for one linguistic variable would leave its terms ambiguous (5.2.2, 5.2.3).
  */
 public final class OneFuzzificationPerVariable implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C028";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C028", "5.2.2, 5.2.3",
+            "no variable has a second FUZZIFY block or a second DEFUZZIFY block");
 
     @Override
-    public String asserts() {
-        return "no variable has a second FUZZIFY block or a second DEFUZZIFY block";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

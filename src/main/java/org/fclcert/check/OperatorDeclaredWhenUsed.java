@@ -11,14 +11,13 @@ import org.fclcert.model.RuleBlock;
  * the two is enough: the other is its Table 3 pair.
  */
 public final class OperatorDeclaredWhenUsed implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C015";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C015", "5.2.4, Table 3",
+            "a rule block whose rules use AND or OR declares 'AND:' or 'OR:'");
 
     @Override
-    public String asserts() {
-        return "a rule block whose rules use AND or OR declares 'AND:' or 'OR:'";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

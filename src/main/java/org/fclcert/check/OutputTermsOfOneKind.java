@@ -10,14 +10,13 @@ import org.fclcert.model.Term;
  * of Table 1 is defined over a mixture. Reported at the first term whose kind differs from the first term's.
  */
 public final class OutputTermsOfOneKind implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C021";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C021", "5.2.3, Table 1",
+            "an output's terms are all singletons or all given by points");
 
     @Override
-    public String asserts() {
-        return "an output's terms are all singletons or all given by points";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

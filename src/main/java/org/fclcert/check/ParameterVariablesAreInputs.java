@@ -9,14 +9,13 @@ import org.fclcert.model.VariableRef;
  * declared in VAR_INPUT: these are parameters set from outside the function block (5.2.2, 5.2.4).
  */
 public final class ParameterVariablesAreInputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C013";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C013", "5.2.2, 5.2.4",
+            "variables used as points, degrees, singletons or WITH factors are VAR_INPUT variables");
 
     @Override
-    public String asserts() {
-        return "variables used as points, degrees, singletons or WITH factors are VAR_INPUT variables";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

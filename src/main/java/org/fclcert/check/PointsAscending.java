@@ -14,14 +14,13 @@ import org.fclcert.model.Term;
  * time (5.2.2 notes they may then be out of sequence).
  */
 public final class PointsAscending implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C010";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C010", "5.2.2",
+            "the constant x values of every term's points are in ascending order");
 
     @Override
-    public String asserts() {
-        return "the constant x values of every term's points are in ascending order";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -6,14 +6,13 @@ import org.fclcert.model.Range;
 
 /** FCL-C023: a RANGE's minimum is less than its maximum (5.2.3). */
 public final class RangeAscending implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C023";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C023", "5.2.3",
+            "every RANGE has its minimum below its maximum");
 
     @Override
-    public String asserts() {
-        return "every RANGE has its minimum below its maximum";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -9,14 +9,13 @@ import org.fclcert.model.Term;
  * takes ({@link org.fclcert.model.ShapeKind#parameterNames()}), e.g. three for a triangle.
  */
 public final class ShapeParameterCount implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C040";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C040", "Open Level (docs/dialects.md)",
+            "a named shape has exactly the number of parameters its formula takes");
 
     @Override
-    public String asserts() {
-        return "a named shape has exactly the number of parameters its formula takes";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -12,14 +12,13 @@ import org.fclcert.model.Term;
  * parameter count are left to FCL-C040.
  */
 public final class ShapeParametersValid implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C041";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C041", "Open Level (docs/dialects.md)",
+            "a named shape's parameters are ordered and positive where its formula needs it");
 
     @Override
-    public String asserts() {
-        return "a named shape's parameters are ordered and positive where its formula needs it";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

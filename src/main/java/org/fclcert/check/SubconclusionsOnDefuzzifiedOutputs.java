@@ -13,14 +13,13 @@ import org.fclcert.model.VariableKind;
  * variable. Undeclared names are FCL-C001's, inputs FCL-C024's.
  */
 public final class SubconclusionsOnDefuzzifiedOutputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C031";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C031", "5.2.3, 5.2.4",
+            "'v IS t' in a conclusion names an output with a DEFUZZIFY block");
 
     @Override
-    public String asserts() {
-        return "'v IS t' in a conclusion names an output with a DEFUZZIFY block";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -14,14 +14,13 @@ import org.fclcert.model.VariableKind;
  * Undeclared names are FCL-C001's.
  */
 public final class SubconditionsOnInputs implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C027";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C027", "5.2.2, 5.2.4",
+            "'v IS t' names a fuzzified input, and a bare-variable subcondition an input or local variable");
 
     @Override
-    public String asserts() {
-        return "'v IS t' names a fuzzified input, and a bare-variable subcondition an input or local variable";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     /**

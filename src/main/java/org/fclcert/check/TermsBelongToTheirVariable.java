@@ -20,14 +20,13 @@ import org.fclcert.model.Term;
  * {@link NoUndefinedTerms}).
  */
 public final class TermsBelongToTheirVariable implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C003";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C003", "5.2.4",
+            "a term named after 'variable IS' is not a term of another input (condition) or output (conclusion)");
 
     @Override
-    public String asserts() {
-        return "a term named after 'variable IS' is not a term of another input (condition) or output (conclusion)";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -8,14 +8,13 @@ import org.fclcert.model.RuleBlock;
 
 /** FCL-C006: each rule block of a function block has a unique name (5.2.4); case does not count. */
 public final class UniqueRuleBlockNames implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C006";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C006", "5.2.4",
+            "each rule block name is used once per function block, ignoring case");
 
     @Override
-    public String asserts() {
-        return "each rule block name is used once per function block, ignoring case";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -12,14 +12,13 @@ import org.fclcert.model.RuleBlock;
  * normalises numbers, so {@code RULE 01} and {@code RULE 1} are the same rule name here.
  */
 public final class UniqueRuleNames implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C007";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C007", "5.2.4",
+            "each rule number or name is used once per rule block");
 
     @Override
-    public String asserts() {
-        return "each rule number or name is used once per rule block";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

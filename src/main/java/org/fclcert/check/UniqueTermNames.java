@@ -9,14 +9,13 @@ import org.fclcert.model.Term;
 
 /** FCL-C005: the terms of one linguistic variable have distinct names; case does not count (5.2.2). */
 public final class UniqueTermNames implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C005";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C005", "5.2.2",
+            "each term name is defined once in a FUZZIFY or DEFUZZIFY block, ignoring case");
 
     @Override
-    public String asserts() {
-        return "each term name is defined once in a FUZZIFY or DEFUZZIFY block, ignoring case";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

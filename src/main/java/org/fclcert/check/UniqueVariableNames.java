@@ -8,14 +8,13 @@ import org.fclcert.model.Variable;
 
 /** FCL-C004: no two variables of a function block share a name; case does not count (5.2.1). */
 public final class UniqueVariableNames implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C004";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C004", "5.2.1",
+            "each variable name is declared once per function block, ignoring case");
 
     @Override
-    public String asserts() {
-        return "each variable name is declared once per function block, ignoring case";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

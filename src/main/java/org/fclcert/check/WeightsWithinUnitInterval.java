@@ -5,14 +5,13 @@ import org.fclcert.model.Literal;
 
 /** FCL-C012: a constant weighting factor after WITH lies in [0, 1] (5.2.4). */
 public final class WeightsWithinUnitInterval implements FunctionBlockRule {
-    @Override
-    public String code() {
-        return "FCL-C012";
-    }
+    /** The code this rule owns. */
+    public static final CheckCode CODE = CheckCode.error("FCL-C012", "5.2.4",
+            "every constant weighting factor (WITH) is between 0 and 1");
 
     @Override
-    public String asserts() {
-        return "every constant weighting factor (WITH) is between 0 and 1";
+    public CheckCode diagnosticCode() {
+        return CODE;
     }
 
     @Override

@@ -30,9 +30,6 @@ import picocli.CommandLine.Spec;
             "1:the program has errors, or a construct is not expressible and --allow-lossy was not given",
             ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
 final class ConvertCommand implements Callable<Integer> {
-    static final String NOT_EXPRESSIBLE = "FCL-X001";
-    static final String APPROXIMATED = "FCL-X002";
-
     @Spec
     CommandSpec spec;
 
@@ -98,28 +95,12 @@ final class ConvertCommand implements Callable<Integer> {
         }
     }
 
-    /** One located line per finding: exact ones as notes, the others as errors (warnings with --allow-lossy). */
+    /** One located line per finding: exact ones as notes, the others as diagnostics (FCL-X001, FCL-X002). */
     static void printFindings(PrintWriter err, List<Finding> findings, boolean lossyAllowed) {
         for (Finding f : findings) {
-            if (f.kind() instanceof Kind.Exact) {
-                err.println(f.location() + ": note " + f.construct() + ": converted exactly: " + f.message());
-            } else if (f.kind() instanceof Kind.Approximated a) {
-                err.println(f.location() + ": warning " + APPROXIMATED + ": " + f.construct() + ": approximated, largest"
-                        + " membership error at most " + upTo3Digits(a.maxError()) + ": " + f.message());
-            } else {
-                err.println(f.location() + ": " + (lossyAllowed ? "warning " : "error ") + NOT_EXPRESSIBLE + ": "
-                        + f.construct() + " is not expressible in standard FCL: " + f.message());
-            }
+            f.diagnostic(lossyAllowed).ifPresentOrElse(err::println,
+                    () -> err.println(f.location() + ": note " + f.construct() + ": converted exactly: " + f.message()));
         }
-    }
-
-    /** The bound rounded up to 3 significant digits, so that the printed number is still a bound. */
-    static String upTo3Digits(double bound) {
-        if (!Double.isFinite(bound) || bound == 0) {
-            return Double.toString(bound);
-        }
-        return new java.math.BigDecimal(bound).round(new java.math.MathContext(3, java.math.RoundingMode.UP))
-                .stripTrailingZeros().toString();
     }
 
     static String summary(Dialect dialect, StandardConversion.Result result) {

@@ -29,7 +29,7 @@ enum DialectName {
 
     /**
      * The reader for FILE: the named dialect's, or auto's choice (explained on err); when auto cannot tell, a
-     * reader that reports the close call as a located FCL-S311 (or a detection failure as FCL-S398).
+     * reader that reports the close call as a located FCL-S311 (or a detection failure as FCL-S999).
      */
     FclReader reader(String file, String text, PrintWriter err) {
         if (this != auto) {

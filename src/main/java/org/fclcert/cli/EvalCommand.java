@@ -212,7 +212,7 @@ final class EvalCommand implements Callable<Integer> {
             try {
                 fb.set(name, value);
             } catch (EvaluationException e) {
-                throw new EvaluationException(e.code(), where + ": " + e.getMessage());
+                throw new EvaluationException(e.diagnosticCode(), where + ": " + e.getMessage());
             }
             hasValue.put(Names.key(name), true);
         }
@@ -227,7 +227,7 @@ final class EvalCommand implements Callable<Integer> {
             try {
                 fb.evaluate(trace);
             } catch (EvaluationException e) {
-                throw new EvaluationException(e.code(), where + e.getMessage());
+                throw new EvaluationException(e.diagnosticCode(), where + e.getMessage());
             }
         }
 

@@ -129,7 +129,11 @@ public final class CorpusLint {
             }
             Program program = analysis.program().get();
             features(program);
-            VectorReplay.check(c, program).forEach(m -> finding(vectorsLine(), m));
+            List<String> wrong = VectorReplay.check(c, program);
+            if (!wrong.isEmpty()) {
+                int line = vectorsLine();
+                wrong.forEach(m -> finding(line, m));
+            }
         }
 
         private void negative(Analysis analysis) {
@@ -172,22 +176,22 @@ public final class CorpusLint {
             }
         }
 
+        /** The line of {@code vectors:} in the case file (1 if none); a file that cannot be read again is a finding. */
         private int vectorsLine() {
-            List<String> lines = readLines();
+            List<String> lines;
+            try {
+                lines = Files.readAllLines(c.path());
+            } catch (IOException | RuntimeException e) {   // read once already: a race or a disk fault, never ignored
+                finding(1, "cannot read the case file again to place its vector findings ("
+                        + e.getClass().getSimpleName() + ": " + e.getMessage() + "); they are shown at line 1");
+                return 1;
+            }
             for (int i = 0; i < lines.size(); i++) {
                 if (lines.get(i).startsWith("vectors:")) {
                     return i + 1;
                 }
             }
             return 1;
-        }
-
-        private List<String> readLines() {
-            try {
-                return Files.readAllLines(c.path());
-            } catch (IOException e) {
-                return List.of();
-            }
         }
 
         private void finding(int line, String message) {

@@ -77,13 +77,13 @@ final class VectorReplay {
             try {
                 fb.set(in.getKey(), in.getValue());
             } catch (EvaluationException e) {
-                throw new EvaluationException(e.code(), "vector " + (index + 1) + ": " + e.getMessage());
+                throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
             }
         }
         try {
             fb.evaluate();
         } catch (EvaluationException e) {
-            throw new EvaluationException(e.code(), "vector " + (index + 1) + ": " + e.getMessage());
+            throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
         }
         return c.tolerance().compareAll(v.out(), fb.outputs(), scales);
     }

@@ -1,38 +1,34 @@
 package org.fclcert.eval;
 
+import java.util.Objects;
+
 /**
  * An evaluation that cannot produce a number: an unknown name, an input that is not a finite number,
- * a result that does not fit the output's data type. Carries a stable {@code FCL-Vnnn} code.
+ * a result that does not fit the output's data type. Carries a stable {@link EvaluationCode} ({@code FCL-Vnnn}).
  */
 public final class EvaluationException extends Exception {
     private static final long serialVersionUID = 1L;
 
-    /** A name (variable or function block) that the program does not declare. */
-    public static final String UNKNOWN_NAME = "FCL-V001";
-    /** An input value that is NaN or infinite. */
-    public static final String NOT_FINITE = "FCL-V002";
-    /** {@code set} on a variable that is not a VAR_INPUT. */
-    public static final String NOT_AN_INPUT = "FCL-V003";
-    /** A value that does not fit the data type of its variable (e.g. 300 for a SINT output). */
-    public static final String OUT_OF_RANGE = "FCL-V004";
-    /** A defuzzification whose result is not a finite number (overflow in the arithmetic). */
-    public static final String NO_RESULT = "FCL-V005";
+    private final EvaluationCode code;
 
-    private final String code;
-
-    public EvaluationException(String code, String message) {
+    public EvaluationException(EvaluationCode code, String message) {
         super(message);
-        this.code = code;
+        this.code = Objects.requireNonNull(code, "code");
     }
 
-    /** The stable diagnostic code, {@code FCL-Vnnn}. */
-    public String code() {
+    /** The catalogue entry of this failure. */
+    public EvaluationCode diagnosticCode() {
         return code;
+    }
+
+    /** The stable code as text, {@code FCL-Vnnn}. */
+    public String code() {
+        return code.code();
     }
 
     /** {@code FCL-Vnnn: message}. */
     @Override
     public String toString() {
-        return code + ": " + getMessage();
+        return code.code() + ": " + getMessage();
     }
 }

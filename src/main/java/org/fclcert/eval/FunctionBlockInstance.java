@@ -93,11 +93,11 @@ public final class FunctionBlockInstance {
     public void set(String name, double value) throws EvaluationException {
         int slot = slot(name);
         if (!plan.isInput[slot]) {
-            throw new EvaluationException(EvaluationException.NOT_AN_INPUT,
+            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
                     "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
         }
         if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationException.NOT_FINITE,
+            throw new EvaluationException(EvaluationCode.NOT_FINITE,
                     "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
         }
         store(slot, value);
@@ -150,7 +150,7 @@ public final class FunctionBlockInstance {
             slot = plan.slotByName.get(Names.key(name));
         }
         if (slot == null) {
-            throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                     "function block '" + plan.name + "' has no variable '" + name + "'");
         }
         return slot;
@@ -161,7 +161,7 @@ public final class FunctionBlockInstance {
         DataType type = plan.types[slot];
         double v = type.isInteger() ? Conversions.roundHalfAwayFromZero(value) : value;
         if (v < type.min() || v > type.max()) {
-            throw new EvaluationException(EvaluationException.OUT_OF_RANGE, "value " + value + " of '"
+            throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
         values[slot] = v;
@@ -317,7 +317,7 @@ public final class FunctionBlockInstance {
                 : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
         if (Double.isNaN(result) && !(smooth != null ? smooth.empty() : nothingFired(o))) {
-            throw new EvaluationException(EvaluationException.NO_RESULT,
+            throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
         }
         if (Double.isNaN(result)) {
@@ -326,7 +326,7 @@ public final class FunctionBlockInstance {
         }
         boolean nanDefault = Double.isNaN(result) && outcome == Trace.Outcome.DEFAULT;   // DEFAULT := nan (fuzzylite)
         if (!Double.isFinite(result) && !nanDefault) {
-            throw new EvaluationException(EvaluationException.NO_RESULT,
+            throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
         }
         double stored = store(o.slot(), result);

@@ -28,7 +28,7 @@ public final class LoadedProgram {
                 return new FunctionBlockInstance(b);
             }
         }
-        throw new EvaluationException(EvaluationException.UNKNOWN_NAME,
+        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
                 "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
     }
 }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import org.antlr.v4.runtime.Token;
 import org.fclcert.model.Diagnostic;
+import org.fclcert.model.DiagnosticCode;
 import org.fclcert.model.SourceLocation;
 
 /**
@@ -41,16 +42,12 @@ final class ReaderDiagnostics {
         return SourceLocation.of(sourceName, line, column);
     }
 
-    void error(Token at, SyntaxCode code, String message) {
-        error(at(at), code.code(), message);
-    }
-
-    void error(SourceLocation at, SyntaxCode code, String message) {
-        error(at, code.code(), message);
+    void error(Token at, DiagnosticCode code, String message) {
+        error(at(at), code, message);
     }
 
     /** Reports an error, unless one is already reported at the same place (one message per place). */
-    void error(SourceLocation at, String code, String message) {
+    void error(SourceLocation at, DiagnosticCode code, String message) {
         errors = true;
         if (errorCount >= STOP_AFTER_ERRORS) {
             errorCount++;
@@ -96,12 +93,8 @@ final class ReaderDiagnostics {
         return endOfTextExplained;
     }
 
-    void warning(Token at, SyntaxCode code, String message) {
-        warning(at, code.code(), message);
-    }
-
-    void warning(Token at, String code, String message) {
-        int n = warningCounts.merge(code, 1, Integer::sum);
+    void warning(Token at, DiagnosticCode code, String message) {
+        int n = warningCounts.merge(code.code(), 1, Integer::sum);
         if (n <= MAX_WARNINGS_PER_CODE + 1) {   // one more than shown marks where the summary goes
             all.add(Diagnostic.warning(at(at), code, message));
         }
@@ -116,12 +109,12 @@ final class ReaderDiagnostics {
             }
 
             @Override
-            public void error(Token at, String code, String message) {
+            public void error(Token at, DiagnosticCode code, String message) {
                 ReaderDiagnostics.this.error(ReaderDiagnostics.this.at(at), code, message);
             }
 
             @Override
-            public void warning(Token at, String code, String message) {
+            public void warning(Token at, DiagnosticCode code, String message) {
                 ReaderDiagnostics.this.warning(at, code, message);
             }
         };
@@ -159,12 +152,12 @@ final class ReaderDiagnostics {
         }
         for (Map.Entry<String, Diagnostic> e : firstDroppedWarning.entrySet()) {
             int more = warningCounts.get(e.getKey()) - MAX_WARNINGS_PER_CODE;
-            kept.add(Diagnostic.warning(e.getValue().location(), e.getKey(),
+            kept.add(Diagnostic.warning(e.getValue().location(), e.getValue().diagnosticCode(),
                     more + " more " + e.getKey() + " warning(s) like the ones above are not shown"));
         }
         if (firstDroppedError != null) {
             int more = errorCount - MAX_ERRORS;
-            kept.add(Diagnostic.error(firstDroppedError.location(), SyntaxCode.TOO_MANY_ERRORS.code(),
+            kept.add(Diagnostic.error(firstDroppedError.location(), SyntaxCode.TOO_MANY_ERRORS,
                     "too many syntax errors: " + more + " more not reported"
                             + (tooMany() ? " (reading stopped early)" : "") + "; fix the ones above first"));
         }

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import org.antlr.v4.runtime.Token;
 import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.DiagnosticCode;
 import org.fclcert.model.SourceLocation;
 
 /**
@@ -43,12 +44,12 @@ public record ReaderOptions(Set<DefuzzificationMethod> nonStandardMethods, boole
         List<Token> filter(List<Token> tokens, Report report);
     }
 
-    /** How a token filter reports: located diagnostics with the filter's own stable codes. */
+    /** How a token filter reports: located diagnostics with codes of the filter's own catalogue family. */
     public interface Report {
         SourceLocation at(Token token);
 
-        void error(Token at, String code, String message);
+        void error(Token at, DiagnosticCode code, String message);
 
-        void warning(Token at, String code, String message);
+        void warning(Token at, DiagnosticCode code, String message);
     }
 }

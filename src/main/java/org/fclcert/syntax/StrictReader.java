@@ -60,7 +60,7 @@ public final class StrictReader implements FclReader {
         } catch (RuntimeException | StackOverflowError e) {
             // A bug in fclcert, not in the program: still a diagnostic, never a stack trace.
             List<Diagnostic> list = List.of(Diagnostic.error(SourceLocation.of(sourceName, 1, 1),
-                    SyntaxCode.INTERNAL_ERROR.code(), "internal error of the FCL reader (" + e.getClass().getSimpleName()
+                    SyntaxCode.INTERNAL_ERROR, "internal error of the FCL reader (" + e.getClass().getSimpleName()
                             + (e.getMessage() == null ? "" : ": " + e.getMessage()) + "); please report this"));
             return new ReadResult(Optional.empty(), list);
         }

@@ -11,6 +11,7 @@ import org.fclcert.model.Condition;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Feature;
 import org.fclcert.model.FeatureUse;
 import org.fclcert.model.FunctionBlock;
@@ -23,6 +24,7 @@ import org.fclcert.model.Program;
 import org.fclcert.model.Range;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Severity;
 import org.fclcert.model.SourceLocation;
 import org.fclcert.model.Term;
 
@@ -64,6 +66,31 @@ public final class StandardConversion {
 
     /** One construct of the original program and how it converted. */
     public record Finding(String construct, SourceLocation location, Kind kind, String message) {
+        /**
+         * This finding as a diagnostic: {@link ConversionCode#APPROXIMATED} (a warning) or
+         * {@link ConversionCode#NOT_EXPRESSIBLE} (an error, a warning when {@code lossyAllowed}); none for an
+         * exact conversion, which is a note.
+         */
+        public Optional<Diagnostic> diagnostic(boolean lossyAllowed) {
+            if (kind instanceof Kind.Approximated a) {
+                return Optional.of(Diagnostic.of(location, ConversionCode.APPROXIMATED, construct + ": approximated,"
+                        + " largest membership error at most " + upTo3Digits(a.maxError()) + ": " + message));
+            }
+            if (kind instanceof Kind.NotExpressible) {
+                return Optional.of(new Diagnostic(location, lossyAllowed ? Severity.WARNING : Severity.ERROR,
+                        ConversionCode.NOT_EXPRESSIBLE, construct + " is not expressible in standard FCL: " + message));
+            }
+            return Optional.empty();
+        }
+    }
+
+    /** The bound rounded up to 3 significant digits, so that the printed number is still a bound. */
+    static String upTo3Digits(double bound) {
+        if (!Double.isFinite(bound) || bound == 0) {
+            return Double.toString(bound);
+        }
+        return new java.math.BigDecimal(bound).round(new java.math.MathContext(3, java.math.RoundingMode.UP))
+                .stripTrailingZeros().toString();
     }
 
     /** The standard program and the findings, in source order. */

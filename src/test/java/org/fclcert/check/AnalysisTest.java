@@ -16,6 +16,7 @@ import org.fclcert.model.Program;
 import org.fclcert.model.Rule;
 import org.fclcert.syntax.FclReader;
 import org.fclcert.syntax.ReadResult;
+import org.fclcert.syntax.SyntaxCode;
 import org.junit.jupiter.api.Test;
 
 /** How Analysis combines a reader's result with the checks, with readers that return fixed results. */
@@ -31,7 +32,7 @@ class AnalysisTest {
 
     @Test
     void aSyntaxErrorMeansNoProgramAndNoChecks() {
-        Diagnostic syntax = Diagnostic.error(at(3, 1), "FCL-S001", "expected ';'");
+        Diagnostic syntax = Diagnostic.error(at(3, 1), SyntaxCode.UNEXPECTED_CHARACTER, "expected ';'");
         Analysis a = Analysis.analyze(returning(Optional.empty(), syntax), "m.fcl", "");
         assertTrue(a.program().isEmpty());
         assertEquals(List.of(syntax), a.diagnostics());
@@ -47,11 +48,12 @@ class AnalysisTest {
     @Test
     void readerWarningsAndCheckWarningsKeepTheProgram() {
         List<Rule> rules = List.of(rule("1", is("temp", "cold", 21), "valve", "open", 21));
-        Diagnostic readerWarning = Diagnostic.warning(at(21, 5), "FCL-W101", "rule named by an identifier");
+        Diagnostic readerWarning = Diagnostic.warning(at(21, 5), SyntaxCode.RULE_NAMED_BY_IDENTIFIER,
+                "rule named by an identifier");
         Analysis a = Analysis.analyze(returning(Optional.of(tempValve(rules)), readerWarning), "m.fcl", "");
         assertTrue(a.program().isPresent());
         // 'hot' (line 10) and 'closed' (line 13) are never used
-        assertEquals(List.of("FCL-W001@10:5", "FCL-W001@13:5", "FCL-W101@21:5"), summary(a));
+        assertEquals(List.of("FCL-W001@10:5", "FCL-W001@13:5", "FCL-W104@21:5"), summary(a));
     }
 
     @Test
@@ -59,9 +61,10 @@ class AnalysisTest {
         List<Rule> rules = new ArrayList<>(validRules());
         // rule 3 at line 23 names an undefined term; the subcondition is at column 17
         rules.add(rule("3", is("temp", "warm", 23), "valve", "closed", 23));
-        Diagnostic readerWarning = Diagnostic.warning(at(23, 17), "FCL-W199", "a reader remark at the same place");
+        Diagnostic readerWarning = Diagnostic.warning(at(23, 17), SyntaxCode.RULE_NAMED_BY_IDENTIFIER,
+                "a reader remark at the same place");
         Analysis a = Analysis.analyze(returning(Optional.of(tempValve(rules)), readerWarning), "m.fcl", "");
         assertTrue(a.program().isEmpty());
-        assertEquals(List.of("FCL-W199@23:17", "FCL-C002@23:17"), summary(a));
+        assertEquals(List.of("FCL-W104@23:17", "FCL-C002@23:17"), summary(a));
     }
 }

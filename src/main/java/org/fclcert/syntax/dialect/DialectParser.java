@@ -126,7 +126,7 @@ final class DialectParser {
         }
     }
 
-    /** Reads a text in the dialect; an internal error becomes a located diagnostic (FCL-S399), never an exception. */
+    /** Reads a text in the dialect; an internal error becomes a located diagnostic (FCL-S999), never an exception. */
     static ReadResult read(String source, String text, LibraryDialect dialect) {
         String name = source == null ? "<input>" : source;
         DialectParser parser = null;
@@ -144,9 +144,9 @@ final class DialectParser {
         }
     }
 
-    /** The diagnostic of a reader's own bug: located at the top of the file, with its code, asking for a report. */
+    /** The diagnostic of a reader's own bug (FCL-S999): located at the top of the file, asking for a report. */
     static Diagnostic internalError(String source, String what, Throwable e) {
-        return Diagnostic.error(SourceLocation.of(source, 1, 1), DialectCode.INTERNAL_ERROR.code(),
+        return Diagnostic.error(SourceLocation.of(source, 1, 1), org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR,
                 "internal error of the " + what + " (" + e.getClass().getSimpleName()
                         + (e.getMessage() == null ? "" : ": " + e.getMessage()) + "); please report this");
     }
@@ -166,12 +166,12 @@ final class DialectParser {
             return;
         }
         if (++errors > MAX_ERRORS) {
-            diagnostics.add(Diagnostic.error(at(line, column), DialectCode.TOO_MANY_ERRORS.code(),
+            diagnostics.add(Diagnostic.error(at(line, column), DialectCode.TOO_MANY_ERRORS,
                     "more than " + MAX_ERRORS + " errors; the rest are not reported"));
             stopped = true;
             return;
         }
-        diagnostics.add(Diagnostic.error(at(line, column), code.code(), message));
+        diagnostics.add(Diagnostic.error(at(line, column), code, message));
     }
 
     void error(Token t, DialectCode code, String message) {
@@ -179,7 +179,7 @@ final class DialectParser {
     }
 
     void warn(SourceLocation where, DialectCode code, String message) {
-        diagnostics.add(Diagnostic.warning(where, code.code(), message));
+        diagnostics.add(Diagnostic.warning(where, code, message));
     }
 
     void feature(Feature f, SourceLocation where) {

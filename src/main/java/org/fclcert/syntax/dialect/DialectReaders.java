@@ -58,7 +58,7 @@ public final class DialectReaders {
      * @param giveaways  the constructs that decided it (empty for strict)
      * @param tiedWith   the other candidates of a close call (empty when the choice is clear)
      * @param problem    a located error instead of a choice: a close call (FCL-S311) or an internal error of a
-     *                   detector (FCL-S398); empty when the choice can be read in
+     *                   detector (FCL-S999); empty when the choice can be read in
      */
     public record Choice(Dialect dialect, List<DialectReader.Giveaway> giveaways, List<Dialect> tiedWith,
             Optional<Diagnostic> problem) {
@@ -87,7 +87,7 @@ public final class DialectReaders {
             Diagnostic d = problem.get();
             return (source, text) -> new ReadResult(Optional.empty(), List.of(Diagnostic.error(
                     SourceLocation.of(source == null ? "<input>" : source, d.location().line(), d.location().column()),
-                    d.code(), d.message())));
+                    d.diagnosticCode(), d.message())));
         }
 
         /** One line for the user: {@code read as FFLL: ACCUM: at line 30, term-only subcondition at line 41}. */
@@ -130,7 +130,7 @@ public final class DialectReaders {
      * strict when no dialect shows any (the case of every standard program: giveaways are constructs outside
      * the standard), and then the strict reader's errors, if any, say what is wrong. On a close call the choice
      * is {@link Choice#unsure()} with a located FCL-S311 naming the candidates and asking for {@code --dialect};
-     * a failure of a detector is a located FCL-S398. Giveaways decide even when the strict reader reads the text
+     * a failure of a detector is a located FCL-S999. Giveaways decide even when the strict reader reads the text
      * without a syntax error: an FFLL rule naming only terms parses as standard FCL but means something else.
      * Never throws.
      */
@@ -167,7 +167,7 @@ public final class DialectReaders {
         m.append(", none clearly ahead; name the dialect with --dialect ")
                 .append(String.join(" or --dialect ", candidates.stream().map(e -> e.dialect().cliName()).toList()));
         DialectReader.Giveaway first = best.giveaways().get(0);
-        Diagnostic d = Diagnostic.error(SourceLocation.of("<input>", first.line(), 1), DialectCode.DIALECT_UNCLEAR.code(),
+        Diagnostic d = Diagnostic.error(SourceLocation.of("<input>", first.line(), 1), DialectCode.DIALECT_UNCLEAR,
                 m.toString());
         return new Choice(best.dialect(), best.giveaways(), close.stream().map(Evidence::dialect).toList(),
                 Optional.of(d));

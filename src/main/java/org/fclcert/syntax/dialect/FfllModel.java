@@ -289,10 +289,10 @@ final class FfllModel {
     }
 
     private void warn(SourceLocation at, DialectCode code, String message) {
-        diagnostics.add(Diagnostic.warning(at, code.code(), message));
+        diagnostics.add(Diagnostic.warning(at, code, message));
     }
 
     private void error(SourceLocation at, DialectCode code, String message) {
-        diagnostics.add(Diagnostic.error(at, code.code(), message));
+        diagnostics.add(Diagnostic.error(at, code, message));
     }
 }

@@ -82,7 +82,7 @@ public final class FfllReader implements DialectReader {
         } catch (RuntimeException | StackOverflowError e) {
             throw new IllegalStateException("the FFLL giveaway scan failed", e);
         }
-        result.diagnostics().stream().filter(d -> d.code().equals(DialectCode.INTERNAL_ERROR.code())).findFirst()
+        result.diagnostics().stream().filter(d -> d.diagnosticCode() == org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR).findFirst()
                 .ifPresent(d -> {
                     throw new IllegalStateException(d.message());
                 });

@@ -128,7 +128,7 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                     for (Declaration d : section) {
                         if (!d.ranged && !d.names.isEmpty()) {
                             Token at = d.names.get(0);
-                            report.warning(at, DialectCode.FFLL_NO_RANGE_COMMENT.code(), "'" + at.getText()
+                            report.warning(at, DialectCode.FFLL_NO_RANGE_COMMENT, "'" + at.getText()
                                     + "' has no '(* RANGE(lo .. hi) *)' comment, without which FFLL does not load"
                                     + " the program; fclcert reads it as IEC 61131-7 does");
                         }
@@ -228,7 +228,7 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
             if (owner != null) {
                 owner.ranged = true;   // one message for one comment: no FCL-D118 on top
             }
-            report.error(comment, DialectCode.FFLL_MALFORMED_RANGE_COMMENT.code(), "this comment starts with RANGE"
+            report.error(comment, DialectCode.FFLL_MALFORMED_RANGE_COMMENT, "this comment starts with RANGE"
                     + " but is not '(* RANGE(lo .. hi) *)' with two numbers: FFLL cannot read the variable's range");
             return;
         }

@@ -1,0 +1,53 @@
+package org.fclcert.eval;
+
+import org.fclcert.model.DiagnosticCode;
+import org.fclcert.model.Severity;
+
+/**
+ * The codes of the reference evaluator ({@code FCL-Vnnn}): why a checked program cannot be evaluated for
+ * the values given. Carried by {@link EvaluationException}; docs/diagnostics.md lists the same table.
+ */
+public enum EvaluationCode implements DiagnosticCode {
+    /** A name (variable or function block) that the program does not declare. */
+    UNKNOWN_NAME("FCL-V001", "5.2.1", "a variable or function block name the program does not declare"),
+    /** An input value that is NaN or infinite. */
+    NOT_FINITE("FCL-V002", "5.2.1, IEC 61131-3 2.3.1", "an input value that is NaN or infinite"),
+    /** {@code set} on a variable that is not a VAR_INPUT. */
+    NOT_AN_INPUT("FCL-V003", "5.2.1", "a value given for a variable that is not a VAR_INPUT"),
+    /** A value that does not fit the data type of its variable (e.g. 300 for a SINT output). */
+    OUT_OF_RANGE("FCL-V004", "5.2.1, IEC 61131-3 2.3.1",
+            "a value that does not fit its variable's data type (e.g. 200 for a SINT output)"),
+    /** A defuzzification whose result is not a finite number (overflow in the arithmetic). */
+    NO_RESULT("FCL-V005", "Table 1", "a defuzzification whose arithmetic overflowed (result not finite)");
+
+    private final String code;
+    private final String clause;
+    private final String meaning;
+
+    EvaluationCode(String code, String clause, String meaning) {
+        this.code = code;
+        this.clause = clause;
+        this.meaning = meaning;
+    }
+
+    @Override
+    public String code() {
+        return code;
+    }
+
+    /** Always an error: no number comes out. */
+    @Override
+    public Severity severity() {
+        return Severity.ERROR;
+    }
+
+    @Override
+    public String clause() {
+        return clause;
+    }
+
+    @Override
+    public String meaning() {
+        return meaning;
+    }
+}
