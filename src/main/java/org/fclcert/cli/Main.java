@@ -53,6 +53,8 @@ public final class Main implements Runnable {
     /** The configured command line (tests add commands to it to exercise the error handling). */
     static CommandLine commandLine(PrintWriter out, PrintWriter err) {
         CommandLine cli = new CommandLine(new Main());
+        // enum options are typed (--fail-on, --level, --format) and written in lower case
+        cli.setCaseInsensitiveEnumValuesAllowed(true);
         cli.setOut(out);
         cli.setErr(err);
         cli.setExecutionExceptionHandler((e, command, parsed) -> {

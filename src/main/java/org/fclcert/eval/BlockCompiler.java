@@ -51,9 +51,14 @@ final class BlockCompiler {
     private final Map<Integer, org.fclcert.model.Hedge[]> hedges = new HashMap<>();
     /** 'output IS term' in conditions (dialects): key output\0term to its degree entry after the input terms'. */
     private final Map<String, Integer> chained = new LinkedHashMap<>();
+    /** DEFUZZIFY blocks by variable key (the first of duplicates, as FunctionBlock.defuzzification finds it). */
+    private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
+    private final Map<String, Map<String, Integer>> termPositions = new HashMap<>();
 
     private BlockCompiler(FunctionBlock fb) {
         this.fb = fb;
+        // a map, not a search per subconclusion: programs with 10^5 outputs would compile in quadratic time
+        fb.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(Names.key(d.variable()), d));
     }
 
     static BlockPlan compile(FunctionBlock fb) {
@@ -149,7 +154,7 @@ final class BlockCompiler {
             String output = e.getKey().substring(0, e.getKey().indexOf('\0'));
             String term = e.getKey().substring(e.getKey().indexOf('\0') + 1);
             Defuzzification d = fb.defuzzification(output).orElseThrow();
-            int position = termPosition(d, term);
+            int position = positions(d).getOrDefault(term, -1);
             for (int[] c : contributions.getOrDefault(output, List.of())) {
                 if (c[1] == position) {
                     b.chainedDegree[c[0]] = e.getValue();
@@ -245,9 +250,13 @@ final class BlockCompiler {
             return new SubconclusionPlan(variable, null, -1, target, wConst, wSlot);
         }
         String key = Names.key(s.variable());
-        Defuzzification d = fb.defuzzification(s.variable()).orElseThrow(
+        Defuzzification d = java.util.Optional.ofNullable(defuzzifications.get(key)).orElseThrow(
                 () -> new IllegalArgumentException("no DEFUZZIFY for " + s.variable()));
-        int termInOutput = termPosition(d, s.term().get());
+        int termInOutput = termPositions.computeIfAbsent(key, k -> positions(d))
+                .getOrDefault(Names.key(s.term().get()), -1);
+        if (termInOutput < 0) {
+            throw new IllegalArgumentException("output " + d.variable() + " has no term " + s.term().get());
+        }
         int id = contributionCount++;
         if (!s.hedges().isEmpty()) {
             hedges.put(id, s.hedges().toArray(org.fclcert.model.Hedge[]::new));
@@ -306,13 +315,13 @@ final class BlockCompiler {
         return t.function() instanceof MembershipFunction.Points p ? p.points().size() : 1;
     }
 
-    private static int termPosition(Defuzzification d, String term) {
+    /** Term key to its position in the output (the first of duplicates), built once per output. */
+    private static Map<String, Integer> positions(Defuzzification d) {
+        Map<String, Integer> m = new HashMap<>();
         for (int i = 0; i < d.terms().size(); i++) {
-            if (Names.same(d.terms().get(i).name(), term)) {
-                return i;
-            }
+            m.putIfAbsent(Names.key(d.terms().get(i).name()), i);
         }
-        throw new IllegalArgumentException("output " + d.variable() + " has no term " + term);
+        return m;
     }
 
     private int termIndexOf(String variable, String term) {

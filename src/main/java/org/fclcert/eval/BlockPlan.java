@@ -57,7 +57,8 @@ final class BlockPlan {
         types = b.types;
         isInput = b.isInput;
         initialValues = b.initialValues;
-        slotByName = Map.copyOf(b.slotByName);
+        // a HashMap behind a read-only view: Map.copyOf probes badly on 10^5 similar names (x1, x2, ...)
+        slotByName = java.util.Collections.unmodifiableMap(new java.util.HashMap<>(b.slotByName));
         inputNames = List.copyOf(b.inputNames);
         outputNames = List.copyOf(b.outputNames);
         outputSlots = b.outputSlots;

@@ -9,10 +9,10 @@ package org.fclcert.eval;
 final class Shape {
     final boolean singleton;
     final int n;
-    private final double[] xConst;
-    private final int[] xSlot;
-    private final double[] yConst;
-    private final int[] ySlot;
+    final double[] xConst;
+    final int[] xSlot;
+    final double[] yConst;
+    final int[] ySlot;
     /** True when no coordinate comes from a variable. */
     final boolean constant;
     /** The sorted points of a constant shape (shared, never written after construction). */

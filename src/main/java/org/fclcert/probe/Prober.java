@@ -32,7 +32,8 @@ import org.fclcert.iut.LoadOutcome;
  */
 public final class Prober {
     public static final long DEFAULT_CAP = 100_000;
-    public static final Duration DEFAULT_BUDGET = Duration.ofMinutes(3);
+    public static final int DEFAULT_BUDGET_MINUTES = 3;
+    public static final Duration DEFAULT_BUDGET = Duration.ofMinutes(DEFAULT_BUDGET_MINUTES);
     static final List<String> DATA_TYPES =
             List.of("REAL", "LREAL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT");
     static final int WARMUP_EVALS = 500;

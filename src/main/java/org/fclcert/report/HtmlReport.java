@@ -219,17 +219,19 @@ public final class HtmlReport {
                 .append(Texts.html(String.join(", ", c.tests()))).append("</span></summary>\n<p>")
                 .append(Texts.html(c.message())).append("</p>\n");
         comparison(c);
-        c.notes().forEach(n -> out.append("<p class=\"small\">Note: ").append(Texts.html(n)).append("</p>\n"));
-        out.append("<p class=\"small\">Tolerance: ").append(Texts.html(c.tolerance())).append(" · max measured error: ")
-                .append(c.maxError() == null ? "–" : c.maxError().toString()).append(" · export: <span class=\"st ")
-                .append(c.exportStatus().word()).append("\">").append(c.exportStatus().word()).append("</span> ")
-                .append(Texts.html(c.exportMessage())).append("</p>\n");
-        if (c.error() != null) {
-            out.append("<p>Implementation error:</p><pre>").append(Texts.html(c.error())).append("</pre>\n");
+        Double maxError = c.evidence().maxError();
+        c.verdict().notes().forEach(n -> out.append("<p class=\"small\">Note: ").append(Texts.html(n)).append("</p>\n"));
+        out.append("<p class=\"small\">Tolerance: ").append(Texts.html(c.setup().tolerance())).append(" · max measured error: ")
+                .append(maxError == null ? "–" : maxError.toString()).append(" · export: <span class=\"st ")
+                .append(c.export().status().word()).append("\">").append(c.export().status().word()).append("</span> ")
+                .append(Texts.html(c.export().message())).append("</p>\n");
+        if (c.evidence().error() != null) {
+            out.append("<p>Implementation error:</p><pre>").append(Texts.html(c.evidence().error())).append("</pre>\n");
         }
-        if (c.program() != null) {
-            out.append("<p>Program (").append(c.block() == null ? "first function block" : "block "
-                    + Texts.html(c.block())).append("):</p><pre>").append(numbered(c.program())).append("</pre>\n");
+        CaseResult.Setup setup = c.setup();
+        if (setup.program() != null) {
+            out.append("<p>Program (").append(setup.block() == null ? "first function block" : "block "
+                    + Texts.html(setup.block())).append("):</p><pre>").append(numbered(setup.program())).append("</pre>\n");
         }
         if (c.status() != CaseStatus.PASSED) {
             out.append("<code class=\"cmd\">").append(Texts.html(Texts.repro(r, c.id()))).append("</code>\n");
@@ -238,19 +240,22 @@ public final class HtmlReport {
     }
 
     private void comparison(CaseResult c) {
-        if (c.inputs() != null) {
-            out.append("<p>Step ").append(c.step()).append(", inputs: <code>")
-                    .append(Texts.html(Texts.describe(c.inputs()))).append("</code></p>\n");
+        CaseResult.Step step = c.evidence().step();
+        if (step != null) {
+            out.append("<p>Step ").append(step.number()).append(", inputs: <code>")
+                    .append(Texts.html(Texts.describe(step.inputs()))).append("</code></p>\n");
         }
-        if (c.expected() instanceof Map<?, ?> expected) {
-            Map<?, ?> actual = c.actual() instanceof Map<?, ?> m ? m : Map.of();
+        CaseResult.Mismatch mismatch = c.evidence().mismatch();
+        if (mismatch instanceof CaseResult.Mismatch.Outputs outputs) {
+            Map<String, Double> expected = outputs.expected();
+            Map<?, ?> actual = outputs.actual();
             out.append("<table><tr><th>output</th><th>expected</th><th>actual</th></tr>");
             expected.forEach((name, want) -> out.append("<tr><td>").append(Texts.html(String.valueOf(name)))
                     .append("</td><td>").append(Texts.html(String.valueOf(want))).append("</td><td>")
                     .append(Texts.html(String.valueOf(lookup(actual, String.valueOf(name))))).append("</td></tr>"));
             out.append("</table>\n");
-        } else if (c.expected() != null || c.actual() != null) {
-            out.append("<table>").append(row("expected", c.expected())).append(row("actual", c.actual()))
+        } else if (mismatch != null) {
+            out.append("<table>").append(row("expected", mismatch.expected())).append(row("actual", mismatch.actual()))
                     .append("</table>\n");
         }
     }

@@ -187,11 +187,11 @@ public final class MarkdownReport {
         line("## FCL export (clause 6 e)");
         line("");
         Map<ExportStatus, Integer> counts = new LinkedHashMap<>();
-        r.cases().forEach(c -> counts.merge(c.exportStatus(), 1, Integer::sum));
+        r.cases().forEach(c -> counts.merge(c.export().status(), 1, Integer::sum));
         line(counts.entrySet().stream().map(e -> e.getValue() + " " + e.getKey().word())
                 .reduce((a, b) -> a + ", " + b).orElse("no case") + ".");
-        r.cases().stream().filter(c -> c.exportStatus() == ExportStatus.FAILED)
-                .forEach(c -> line("- " + c.id() + ": " + Texts.cell(c.exportMessage())));
+        r.cases().stream().filter(c -> c.export().status() == ExportStatus.FAILED)
+                .forEach(c -> line("- " + c.id() + ": " + Texts.cell(c.export().message())));
         line("");
     }
 
@@ -231,13 +231,13 @@ public final class MarkdownReport {
 
     /** Observations that do not change a status, e.g. a rejection reported at another line than the error's. */
     private void notes() {
-        List<CaseResult> noted = r.cases().stream().filter(c -> !c.notes().isEmpty()).toList();
+        List<CaseResult> noted = r.cases().stream().filter(c -> !c.verdict().notes().isEmpty()).toList();
         if (noted.isEmpty()) {
             return;
         }
         line("## Notes");
         line("");
-        noted.forEach(c -> c.notes().forEach(n -> line("- " + c.id() + " (" + c.status().word() + "): " + Texts.cell(n))));
+        noted.forEach(c -> c.verdict().notes().forEach(n -> line("- " + c.id() + " (" + c.status().word() + "): " + Texts.cell(n))));
         line("");
     }
 
@@ -248,10 +248,8 @@ public final class MarkdownReport {
 
     private void failure(CaseResult c) {
         line("- **" + c.id() + "** " + c.status().word() + ": " + Texts.cell(c.message()));
-        if (c.expected() != null || c.actual() != null) {
-            line("  - expected: " + Texts.cell(Texts.describe(c.expected())) + "; actual: "
-                    + Texts.cell(Texts.describe(c.actual())));
-        }
+        c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
+                + Texts.cell(Texts.describe(m.actual()))));
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }

@@ -12,6 +12,7 @@ import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.RejectionPlace;
 import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.ResultsFile;
@@ -68,10 +69,11 @@ public final class ReportBuilder {
         int other = 0;
         int unlocated = 0;
         for (CaseResult c : cases) {
-            if (c.rejection() == null) {
+            RejectionPlace place = c.verdict().rejection();
+            if (place == null) {
                 continue;
             }
-            switch (c.rejection()) {
+            switch (place) {
                 case AT_ERROR_LINE -> at++;
                 case OTHER_LINE -> other++;
                 case UNLOCATED -> unlocated++;

@@ -23,7 +23,13 @@ public interface FclImplementation {
         return List.of();
     }
 
-    /** Limits the implementation declares (for example {@code maxPoints}), by name. */
+    /**
+     * Limits the implementation declares, by the ids of the Table 11 data check list (for example
+     * {@code max-rules-per-block}, {@code max-points-per-input-term}, {@code max-nesting-depth}; every id is
+     * listed in {@code docs/data-check-list.md}, matched ignoring case). {@code fclcert probe} and
+     * {@code certify} put each declared limit next to the measured one and flag a measured limit below it;
+     * a limit under any other name is kept in the report's header but compared with nothing.
+     */
     default Map<String, Long> limits() {
         return Map.of();
     }
