@@ -17,7 +17,7 @@ class FakeIut:
 
     def op_hello(self, req):
         return {"ok": True, "implementation": {"name": self.name, "version": "1.0",
-                                               "claims": ["B-FB"], "limits": {"maxPoints": 3}}}
+                                               "claims": ["B-FB"], "limits": {"max-points-per-input-term": 3}}}
 
     def op_load(self, req):
         self.blocks = re.findall(r"\bFUNCTION_BLOCK\s+(\w+)", req["fcl"], re.IGNORECASE)

@@ -5,7 +5,6 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.EnumSet;
@@ -17,19 +16,20 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.Certification;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.orchestration.Certification;
+import org.fclcert.orchestration.Defaults;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
 import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
-import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -47,12 +47,8 @@ final class CertifyCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
-    String iut;
-
-    @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found (jars or directories, separated as the platform's class path)")
-    String classpath;
+    @Mixin
+    IutMixin iut;
 
     @Option(names = "--corpus", paramLabel = "DIR",
             description = "Corpus directory (default: conformance/ when the current directory has one, else the"
@@ -79,7 +75,7 @@ final class CertifyCommand implements Callable<Integer> {
 
     @Option(names = "--level", paramLabel = "LEVEL", split = ",",
             description = "Only cases of these levels: basic, extension, open")
-    List<String> levels = new ArrayList<>();
+    List<ConformanceLevel> levels = new ArrayList<>();
 
     @Option(names = "--feature", paramLabel = "ID", arity = "1..*",
             description = "Only cases that are evidence for these feature ids (e.g. E-ACCU-NSUM)")
@@ -89,24 +85,22 @@ final class CertifyCommand implements Callable<Integer> {
             description = "Only cases whose id matches one of these globs (e.g. 'B-COGS-*')")
     List<String> cases = new ArrayList<>();
 
-    @Option(names = "--timeout", paramLabel = "DURATION", defaultValue = "5s",
-            description = "Per-request timeout for the implementation, e.g. 5s, 500ms (default: ${DEFAULT-VALUE})")
-    String timeout;
-
     @Option(names = "--fail-on", paramLabel = "WHAT", defaultValue = "none",
             description = "none | basic | claimed | any: exit 1 when this does not hold (default: ${DEFAULT-VALUE})")
-    String failOn;
+    FailOn failOn;
 
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
-    @Option(names = "--probe-cap", paramLabel = "N", defaultValue = "4096",
-            description = "Largest size the Table 11 probes try (default: ${DEFAULT-VALUE}; fclcert probe uses 100000)")
+    @Option(names = "--probe-cap", paramLabel = "N", defaultValue = Defaults.CERTIFY_PROBE_CAP_TEXT,
+            description = "Largest size the Table 11 probes try (default: ${DEFAULT-VALUE}; fclcert probe uses "
+                    + Defaults.PROBE_CAP_TEXT + ")")
     long probeCap;
 
-    @Option(names = "--probe-budget", paramLabel = "DURATION", defaultValue = "3m",
+    @Option(names = "--probe-budget", paramLabel = "DURATION", defaultValue = Defaults.PROBE_BUDGET,
+            converter = DurationConverter.class,
             description = "Time budget of the Table 11 probes (default: ${DEFAULT-VALUE})")
-    String probeBudget;
+    Duration probeBudget;
 
     @Override
     public Integer call() {
@@ -121,20 +115,17 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     private int certify(PrintWriter stdout, PrintWriter err) throws CannotRun {
-        FailOn condition = parseFailOn();
-        CaseSelection selection = new CaseSelection(parseLevels(), parseFeatures(), cases);
-        Duration requestTimeout = Durations.parse(timeout).orElseThrow(() -> new CannotRun(
-                "--timeout: '" + timeout + "' is not a duration (write e.g. 5s, 500ms or 2m)"));
-        Duration budget = Durations.parse(probeBudget).filter(d -> !d.isZero()).orElseThrow(() -> new CannotRun(
-                "--probe-budget: '" + probeBudget + "' is not a duration (write e.g. 3m, 90s)"));
+        Set<ConformanceLevel> levelSet = levels.isEmpty() ? Set.of() : EnumSet.copyOf(levels);
+        CaseSelection selection = new CaseSelection(levelSet, parseFeatures(), cases);
         if (probeCap < 1) {
             throw new CannotRun("--probe-cap must be at least 1, not " + probeCap);
         }
-        Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, budget, Set.of());
+        Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, probeBudget, Set.of());
         Corpus loaded = loadCorpus();
-        Certification.Request request = new Certification.Request(iut,
-                IutArguments.options(requestTimeout, classpath), classpath, loaded, corpusName(), selection, out,
-                Path.of("reports"), probe, List.of(levels, features, cases));
+        Certification.Request request = Certification.Request.builder(iut.spec, loaded)
+                .options(iut.options()).classpath(iut.classpath)
+                .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
+                .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal);
         Certification.Outcome outcome;
@@ -147,8 +138,8 @@ final class CertifyCommand implements Callable<Integer> {
         }
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
-        if (!condition.holds(report)) {
-            err.println("fclcert certify: --fail-on " + failOn + ": " + condition.explain(report));
+        if (!failOn.holds(report)) {
+            err.println("fclcert certify: --fail-on " + failOn.word() + ": " + failOn.explain(report));
             err.flush();
             return FAILED;
         }
@@ -209,8 +200,7 @@ final class CertifyCommand implements Callable<Integer> {
     private static void reportInterruptedRun(ImplementationUnderTest impl, Path resultsFile, Path dir,
             PrintWriter err) {
         try {
-            Report report = ReportBuilder.build(ResultsFile.read(resultsFile), Instant.now());
-            ReportFiles.writeAll(report, dir);
+            Report report = Certification.rebuildReports(ResultsFile.read(resultsFile), dir);
             err.println();
             err.println("fclcert certify: interrupted after " + (report.summary().cases() - report.summary().skipped())
                     + " of " + report.summary().cases() + " cases; reports of what was done are in " + dir);
@@ -223,6 +213,9 @@ final class CertifyCommand implements Callable<Integer> {
         }
     }
 
+    /** How many causes the terminal summary lists; the reports list them all. */
+    private static final int CAUSES_SHOWN = 8;
+
     private static void print(PrintWriter out, Report r, Path dir) {
         Report.Summary s = r.summary();
         out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
@@ -234,11 +227,18 @@ final class CertifyCommand implements Callable<Integer> {
                 + r.basicLevel().reason() + ")");
         out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
         out.println("Open Level features realised (Table 10): " + realised(r, 10));
+        if (!r.causes().isEmpty()) {
+            out.println("Failures by cause:");
+            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
+            if (r.causes().size() > CAUSES_SHOWN) {
+                out.println("  … and " + (r.causes().size() - CAUSES_SHOWN) + " more causes (report.md, \"Failures by cause\")");
+            }
+        }
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
-                + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", results.jsonl");
+                + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);
         out.flush();
     }
 
@@ -248,26 +248,6 @@ final class CertifyCommand implements Callable<Integer> {
                 .map(Report.FeatureRow::id).toList();
         long rows = r.features().stream().filter(f -> f.table() == table).count();
         return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
-    }
-
-    private FailOn parseFailOn() throws CannotRun {
-        try {
-            return FailOn.byWord(failOn);
-        } catch (IllegalArgumentException e) {
-            throw new CannotRun("--fail-on: '" + failOn + "' is not one of none, basic, claimed, any");
-        }
-    }
-
-    private Set<ConformanceLevel> parseLevels() throws CannotRun {
-        Set<ConformanceLevel> set = EnumSet.noneOf(ConformanceLevel.class);
-        for (String level : levels) {
-            try {
-                set.add(ConformanceLevel.byWord(level.trim()));
-            } catch (IllegalArgumentException e) {
-                throw new CannotRun("--level: '" + level + "' is not one of basic, extension, open");
-            }
-        }
-        return set;
     }
 
     private Set<String> parseFeatures() throws CannotRun {

@@ -25,8 +25,10 @@ import picocli.CommandLine.Command;
             CertifyCommand.class,
             ProbeCommand.class,
             ReportCommand.class,
+            CompareCommand.class,
             EvalCommand.class,
             PlotCommand.class,
+            FuzzCommand.class,
         })
 public final class Main implements java.util.concurrent.Callable<Integer> {
     @CommandLine.Spec
@@ -54,6 +56,8 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     /** The configured command line (tests add commands to it to exercise the error handling). */
     static CommandLine commandLine(PrintWriter out, PrintWriter err) {
         CommandLine cli = new CommandLine(new Main());
+        // enum options are typed (--fail-on, --level, --format) and written in lower case
+        cli.setCaseInsensitiveEnumValuesAllowed(true);
         cli.setOut(out);
         cli.setErr(err);
         cli.setParameterExceptionHandler((e, args) -> {

@@ -13,8 +13,10 @@ import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.probe.DataCheckEntry;
+import org.fclcert.orchestration.Defaults;
 import org.fclcert.probe.Prober;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -30,27 +32,20 @@ final class ProbeCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
-    String iut;
-
-    @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found")
-    String classpath;
+    @Mixin
+    IutMixin iut;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Also write the list to DIR/" + FILE)
     Path out;
 
-    @Option(names = "--cap", paramLabel = "N", defaultValue = "100000",
+    @Option(names = "--cap", paramLabel = "N", defaultValue = Defaults.PROBE_CAP_TEXT,
             description = "Largest size probed for each limit (default: ${DEFAULT-VALUE})")
     long cap;
 
-    @Option(names = "--budget", paramLabel = "DURATION", defaultValue = "3m",
+    @Option(names = "--budget", paramLabel = "DURATION", defaultValue = Defaults.PROBE_BUDGET,
+            converter = DurationConverter.class,
             description = "Time for the whole probe, e.g. 3m, 90s (default: ${DEFAULT-VALUE})")
-    String budget;
-
-    @Option(names = "--timeout", paramLabel = "DURATION", defaultValue = "5s",
-            description = "Per-request timeout for the implementation (default: ${DEFAULT-VALUE})")
-    String timeout;
+    Duration budget;
 
     @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text", description = "text | json")
     OutputFormat format;
@@ -59,22 +54,19 @@ final class ProbeCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        Duration total = Durations.parse(budget).orElse(null);
-        Duration request = Durations.parse(timeout).orElse(null);
-        if (total == null || total.isZero() || request == null || request.isZero() || cap < 1) {
-            err.println("fclcert probe: " + (cap < 1 ? "--cap must be at least 1"
-                    : "--budget and --timeout take a duration such as 3m, 90s or 500ms"));
+        if (cap < 1) {
+            err.println("fclcert probe: --cap must be at least 1");
             err.flush();
             return ExitCodes.USAGE;
         }
-        IutOptions options = IutArguments.options(request, classpath);
+        IutOptions options = iut.options();
         List<DataCheckEntry> entries;
         try {
-            entries = Prober.probe(() -> Iuts.open(iut, options), new Prober.Options(cap, total, Set.of()),
+            entries = Prober.probe(() -> Iuts.open(iut.spec, options), new Prober.Options(cap, budget, Set.of()),
                     (row, index, count) -> progress(err, row.id(), index, count));
         } catch (IutException e) {
             clearProgress(err);
-            err.println("fclcert probe: cannot probe '" + iut + "': " + e.getMessage() + IutArguments.stderrTail(e));
+            err.println("fclcert probe: cannot probe '" + iut.spec + "': " + e.getMessage() + IutArguments.stderrTail(e));
             err.flush();
             return ExitCodes.USAGE;
         }

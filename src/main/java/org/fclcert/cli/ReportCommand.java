@@ -4,12 +4,10 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Instant;
 import java.util.concurrent.Callable;
 import org.fclcert.harness.ResultsFile;
+import org.fclcert.orchestration.Certification;
 import org.fclcert.report.Report;
-import org.fclcert.report.ReportBuilder;
-import org.fclcert.report.ReportFiles;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -42,8 +40,7 @@ final class ReportCommand implements Callable<Integer> {
         try {
             ResultsFile results = ResultsFile.read(from);
             results.problems().forEach(p -> err.println("warning: " + p));
-            Report report = ReportBuilder.build(results, Instant.now());
-            ReportFiles.writeAll(report, dir);
+            Report report = Certification.rebuildReports(results, dir);
             PrintWriter o = spec.commandLine().getOut();
             o.println(report.summary().cases() + " cases (" + report.summary().passed() + " passed, "
                     + report.summary().skipped() + " skipped); Basic Level: "

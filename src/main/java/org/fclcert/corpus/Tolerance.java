@@ -1,11 +1,9 @@
 package org.fclcert.corpus;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.OptionalDouble;
-import org.fclcert.model.Names;
 
 /**
  * How close an implementation's output must be to the expected value (see {@code conformance/README.md}).
@@ -57,40 +55,21 @@ public enum Tolerance {
         return Math.max(exact, WIDTH_FRACTION * width.getAsDouble());
     }
 
-    /** Compares one output; a NaN or infinite actual value never passes. */
+    /** Compares one output by {@link OutputComparison}'s rule: a NaN or infinite actual value never passes. */
     public Comparison compare(String output, double expected, double actual, OptionalDouble width) {
-        double allowed = allowed(expected, width);
-        double error = Math.abs(actual - expected);
-        boolean passed = Double.isFinite(actual) && error <= allowed;
-        return new Comparison(output, expected, actual, Double.isFinite(actual) ? error : Double.NaN, allowed, passed);
+        return OutputComparison.compare(output, expected, actual, allowed(expected, width));
     }
 
     /**
-     * Compares every expected output of one step with what the implementation returned (names matched
-     * case-insensitively); an expected output that is missing fails. Extra actual outputs are ignored.
+     * Compares every expected output of one step with what was computed ({@link OutputComparison#compareAll}:
+     * names matched case-insensitively, a missing expected output fails, extra outputs are ignored).
      */
     public List<Comparison> compareAll(Map<String, Double> expected, Map<String, Double> actual, OutputScales scales) {
-        List<Comparison> result = new ArrayList<>();
-        for (Map.Entry<String, Double> e : expected.entrySet()) {
-            String name = e.getKey();
-            double want = e.getValue();
-            OptionalDouble width = scales.width(name);
-            Double got = lookup(actual, name);
-            result.add(got == null
-                    ? Comparison.missing(name, want, allowed(want, width))
-                    : compare(name, want, got, width));
-        }
-        return List.copyOf(result);
+        return OutputComparison.compareAll(expected, actual, allowance(scales));
     }
 
-    private static Double lookup(Map<String, Double> actual, String name) {
-        Double exact = actual.get(name);
-        if (exact != null) {
-            return exact;
-        }
-        return actual.entrySet().stream()
-                .filter(e -> Names.same(e.getKey(), name))
-                .map(Map.Entry::getValue)
-                .findFirst().orElse(null);
+    /** This class's allowance with one program's output widths. */
+    public OutputComparison.Allowance allowance(OutputScales scales) {
+        return (output, expected) -> allowed(expected, scales.width(output));
     }
 }

@@ -1,57 +1,151 @@
 package org.fclcert.harness;
 
-import com.fasterxml.jackson.annotation.JsonInclude;
+import com.fasterxml.jackson.databind.annotation.JsonDeserialize;
+import com.fasterxml.jackson.databind.annotation.JsonSerialize;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
 
 /**
- * The outcome of one case: one line of {@code results.jsonl}, carrying everything the reports need.
+ * The outcome of one case, carrying everything the reports need, in four parts: which case it is
+ * ({@link PlannedCase}), the {@link Verdict}, the {@link Evidence} measured while it ran, and the
+ * {@link Export} check of clause 6 e); plus how it {@link Setup ran}. A case that never ran is
+ * {@link #skipped}: it has a verdict and nothing else.
  *
- * <p>For a positive case {@code expected}/{@code actual} are output maps of the first wrong step (or of
- * the last step when all passed are not kept: both are then null); for a negative case they are sentences
- * ({@code reject FCL-C002 at line 14} / {@code accepted}). {@code maxError} is the largest absolute error
- * measured over every compared output of the case, whatever its status. The program text is kept only for
- * cases that did not pass, so a report can show it. {@code rejection} says, for a negative case the
- * implementation rejected, whether it named the error's line (null otherwise).
+ * <p>On disk this is one flat {@code "type":"case"} line of {@code results.jsonl} and one entry of
+ * {@code report.json}'s {@code cases} ({@link CaseResultJson}, fields in {@code docs/report-format.md}).
  */
-@JsonInclude(JsonInclude.Include.NON_NULL)
-public record CaseResult(
-        String id,
-        String title,
-        String level,
-        List<String> tests,
-        List<String> flags,
-        CaseStatus status,
-        String message,
-        Integer step,
-        Map<String, Double> inputs,
-        Object expected,
-        Object actual,
-        String error,
-        Double maxError,
-        String tolerance,
-        ExportStatus exportStatus,
-        String exportMessage,
-        List<String> notes,
-        String block,
-        String program,
-        Long durationMs,
-        RejectionPlace rejection) {
+@JsonSerialize(converter = CaseResultJson.FromResult.class)
+@JsonDeserialize(converter = CaseResultJson.ToResult.class)
+public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup) {
 
     public CaseResult {
-        tests = tests == null ? List.of() : List.copyOf(tests);
-        flags = flags == null ? List.of() : List.copyOf(flags);
-        notes = notes == null ? List.of() : List.copyOf(notes);
-        exportStatus = exportStatus == null ? ExportStatus.NOT_RUN : exportStatus;
+        Objects.requireNonNull(plan, "plan");
+        Objects.requireNonNull(verdict, "verdict");
+        evidence = evidence == null ? Evidence.NONE : evidence;
+        export = export == null ? Export.NOT_RUN : export;
+        setup = setup == null ? Setup.NOT_RUN : setup;
     }
 
-    public boolean interpretation() {
-        return Flags.interpretation(flags).isPresent();
+    /**
+     * The verdict: status, the one-sentence reason, further notes, and for a negative case the
+     * implementation rejected, where it placed the rejection (null otherwise).
+     */
+    public record Verdict(CaseStatus status, String message, List<String> notes, RejectionPlace rejection) {
+        public Verdict {
+            Objects.requireNonNull(status, "status");
+            notes = notes == null ? List.of() : List.copyOf(notes);
+        }
+    }
+
+    /**
+     * What was seen while the case ran; every part may be absent (null). {@code step}: the first wrong step,
+     * or the step at which the implementation broke down; {@code mismatch}: what was expected and what came;
+     * {@code error}: the implementation's own error text (with the end of its stderr); {@code maxError}: the
+     * largest absolute error over every compared output of the case, whatever its status (+&infin; once an
+     * output was not finite, see {@link org.fclcert.corpus.OutputComparison}).
+     */
+    public record Evidence(Step step, Mismatch mismatch, String error, Double maxError) {
+        public static final Evidence NONE = new Evidence(null, null, null, null);
+    }
+
+    /** A step of a positive case: its 1-based number and its inputs. */
+    public record Step(int number, Map<String, Double> inputs) {
+        public Step {
+            inputs = inputs == null ? Map.of() : Collections.unmodifiableMap(new LinkedHashMap<>(inputs));
+        }
+    }
+
+    /**
+     * Expected against actual: the output values of one step of a positive case, or two sentences
+     * ({@code reject: FCL-C002 at line 14} / {@code accepted}) for a load or a rejection.
+     */
+    public sealed interface Mismatch {
+        /** The expected side as the reports show it: a map of outputs or a sentence. */
+        Object expected();
+
+        /** The actual side as the reports show it. */
+        Object actual();
+
+        /** Output values; an implementation may leave an output out, or (over the protocol) send null. */
+        record Outputs(Map<String, Double> expected, Map<String, Double> actual) implements Mismatch {
+            public Outputs {
+                expected = Collections.unmodifiableMap(new LinkedHashMap<>(expected));
+                actual = Collections.unmodifiableMap(new LinkedHashMap<>(actual));
+            }
+        }
+
+        record Sentences(String expected, String actual) implements Mismatch {
+        }
+    }
+
+    /** The export check of clause 6 e): its status and why. */
+    public record Export(ExportStatus status, String message) {
+        public static final Export NOT_RUN = new Export(ExportStatus.NOT_RUN, null);
+
+        public Export {
+            status = status == null ? ExportStatus.NOT_RUN : status;
+        }
+    }
+
+    /**
+     * How the case was run: the function block evaluated (null: the first), the tolerance described,
+     * the program text (kept only for a case that did not pass, so a report can show it) and how long it took.
+     */
+    public record Setup(String block, String tolerance, String program, Long durationMs) {
+        public static final Setup NOT_RUN = new Setup(null, null, null, null);
     }
 
     /** A skipped result for a planned case that never ran. */
     public static CaseResult skipped(PlannedCase c, String reason) {
-        return new CaseResult(c.id(), c.title(), c.level(), c.tests(), c.flags(), CaseStatus.SKIPPED, reason,
-                null, null, null, null, null, null, null, ExportStatus.NOT_RUN, null, List.of(), null, null, null, null);
+        return new CaseResult(c, new Verdict(CaseStatus.SKIPPED, reason, List.of(), null), Evidence.NONE,
+                Export.NOT_RUN, Setup.NOT_RUN);
+    }
+
+    public String id() {
+        return plan.id();
+    }
+
+    public String title() {
+        return plan.title();
+    }
+
+    /** {@code basic}, {@code extension} or {@code open}. */
+    public String level() {
+        return plan.level();
+    }
+
+    /** The feature ids this case is evidence for, the first being the one it is filed under. */
+    public List<String> tests() {
+        return plan.tests();
+    }
+
+    public List<String> flags() {
+        return plan.flags();
+    }
+
+    public CaseStatus status() {
+        return verdict.status();
+    }
+
+    public String message() {
+        return verdict.message();
+    }
+
+    /** The 1-based steps reported as not judged: the vectors the case flags {@code knife-edge:<n>}. */
+    public java.util.SortedSet<Integer> notJudgedSteps() {
+        return Flags.knifeEdges(plan.flags());
+    }
+
+    public boolean interpretation() {
+        return plan.interpretation();
+    }
+
+    /** The mismatch, if the case recorded one. */
+    public Optional<Mismatch> mismatch() {
+        return Optional.ofNullable(evidence.mismatch());
     }
 }

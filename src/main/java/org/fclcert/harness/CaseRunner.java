@@ -57,7 +57,7 @@ final class CaseRunner {
         if (outcome instanceof LoadOutcome.Rejected rejected) {
             String where = rejected.line().isPresent() ? " at line " + rejected.line().getAsInt() : "";
             r.passed("rejected" + where + ": " + rejected.message())
-                    .outcome(expected, "rejected" + where + ": " + rejected.message());
+                    .sentences(expected, "rejected" + where + ": " + rejected.message());
             if (rejected.line().isEmpty()) {
                 r.rejection(RejectionPlace.UNLOCATED)
                         .note("the implementation gave no line for its rejection; the error is at line " + want.line());
@@ -70,7 +70,7 @@ final class CaseRunner {
             }
         } else {
             r.failed("accepted a program the standard rejects: " + want.code() + " at line " + want.line())
-                    .outcome(expected, "accepted");
+                    .sentences(expected, "accepted");
         }
     }
 
@@ -79,7 +79,7 @@ final class CaseRunner {
         if (outcome instanceof LoadOutcome.Rejected rejected) {
             String where = rejected.line().isPresent() ? " at line " + rejected.line().getAsInt() : "";
             r.failed("rejected a program the standard accepts" + where + ": " + rejected.message())
-                    .outcome("load and evaluate", "rejected" + where + ": " + rejected.message());
+                    .sentences("load and evaluate", "rejected" + where + ": " + rejected.message());
             return;
         }
         List<Map<String, Double>> forward = runForward(iut, c, r);
@@ -97,17 +97,27 @@ final class CaseRunner {
             Vector v = c.vectors().get(i);
             Map<String, Double> got = evaluate(iut, c, v, i + 1, r);
             actuals.add(got);
+            if (Flags.knifeEdges(c.flags()).contains(i + 1)) {
+                // a knife-edge vector (FairVectors) is not judged: its value rests on a tie rounding may break;
+                // its error is neither counted nor part of maxError
+                Optional<String> problem = StepComparison.compare(c, v.out(), got, new ResultBuilder(c));
+                r.note("step " + (i + 1) + " not judged (knife edge, flag knife-edge:" + (i + 1) + "): "
+                        + problem.map(p -> "differs: " + p).orElse("within tolerance"));
+                continue;
+            }
             Optional<String> problem = StepComparison.compare(c, v.out(), got, r);
             if (problem.isPresent() && wrong++ == 0) {
                 r.failed("step " + (i + 1) + " of " + c.vectors().size() + ": " + problem.get())
-                        .at(i + 1, v.in()).outcome(v.out(), got);
+                        .at(i + 1, v.in()).outputs(v.out(), got);
             }
         }
         if (wrong > 1) {
             r.note(wrong + " of " + c.vectors().size() + " steps gave a wrong result");
         }
         if (r.status() == CaseStatus.PASSED) {
-            r.passed(c.vectors().size() + " step(s) within tolerance");
+            int notJudged = Flags.knifeEdges(c.flags()).size();
+            r.passed((c.vectors().size() - notJudged) + " step(s) within tolerance"
+                    + (notJudged > 0 ? ", " + notJudged + " not judged (knife edge)" : ""));
         }
         return actuals;
     }
@@ -125,7 +135,7 @@ final class CaseRunner {
             Optional<String> leak = StepComparison.difference(v.out().keySet(), forward.get(i), again);
             if (leak.isPresent()) {
                 r.failed("state leaks between evaluations: after reset() and with the steps in reverse order, step "
-                        + (i + 1) + " gives " + leak.get()).at(i + 1, v.in()).outcome(forward.get(i), again);
+                        + (i + 1) + " gives " + leak.get()).at(i + 1, v.in()).outputs(forward.get(i), again);
                 return;
             }
         }

@@ -9,10 +9,8 @@ final class ResultBuilder {
     private final RunCase c;
     private CaseStatus status = CaseStatus.PASSED;
     private String message;
-    private Integer step;
-    private Map<String, Double> inputs;
-    private Object expected;
-    private Object actual;
+    private CaseResult.Step step;
+    private CaseResult.Mismatch mismatch;
     private String error;
     private Double maxError;
     private ExportStatus exportStatus = ExportStatus.NOT_RUN;
@@ -53,14 +51,19 @@ final class ResultBuilder {
     }
 
     ResultBuilder at(int oneBasedStep, Map<String, Double> in) {
-        step = oneBasedStep;
-        inputs = in;
+        step = new CaseResult.Step(oneBasedStep, in);
         return this;
     }
 
-    ResultBuilder outcome(Object expectedValue, Object actualValue) {
-        expected = expectedValue;
-        actual = actualValue;
+    /** The output values expected at a step and those the implementation gave. */
+    ResultBuilder outputs(Map<String, Double> expected, Map<String, Double> actual) {
+        mismatch = new CaseResult.Mismatch.Outputs(expected, actual);
+        return this;
+    }
+
+    /** What was expected of a load or a rejection, and what happened, in words. */
+    ResultBuilder sentences(String expected, String actual) {
+        mismatch = new CaseResult.Mismatch.Sentences(expected, actual);
         return this;
     }
 
@@ -90,8 +93,9 @@ final class ResultBuilder {
 
     CaseResult build(long durationMs) {
         boolean keepProgram = status != CaseStatus.PASSED || exportStatus == ExportStatus.FAILED;
-        return new CaseResult(c.id(), c.title(), c.level().word(), c.tests(), c.flags(), status, message, step,
-                inputs, expected, actual, error, maxError, c.tolerance().describe(), exportStatus, exportMessage,
-                notes, c.block().orElse(null), keepProgram ? c.program() : null, durationMs, rejection);
+        return new CaseResult(c.plan(), new CaseResult.Verdict(status, message, notes, rejection),
+                new CaseResult.Evidence(step, mismatch, error, maxError), new CaseResult.Export(exportStatus,
+                        exportMessage), new CaseResult.Setup(c.block().orElse(null), c.tolerance().describe(),
+                        keepProgram ? c.program() : null, durationMs));
     }
 }

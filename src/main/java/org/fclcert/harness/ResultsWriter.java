@@ -16,6 +16,9 @@ import java.util.List;
  * killed run leaves every finished case on disk.
  */
 public final class ResultsWriter implements ResultSink, Closeable {
+    /** The name of the results file in a run's output directory. */
+    public static final String FILE_NAME = "results.jsonl";
+
     private final BufferedWriter out;
 
     private ResultsWriter(BufferedWriter out) {

@@ -3,9 +3,10 @@ package org.fclcert.harness;
 import java.util.Collection;
 import java.util.Map;
 import java.util.Optional;
-import org.fclcert.model.Names;
+import org.fclcert.corpus.Comparison;
+import org.fclcert.corpus.OutputComparison;
 
-/** Compares the outputs of one evaluation with the expected ones (names are case-insensitive). */
+/** Judges the outputs of one evaluation by the corpus's one {@link OutputComparison} and words the problem. */
 final class StepComparison {
     private StepComparison() {
     }
@@ -17,18 +18,15 @@ final class StepComparison {
     static Optional<String> compare(RunCase c, Map<String, Double> expected, Map<String, Double> actual,
             ResultBuilder r) {
         String first = null;
-        for (Map.Entry<String, Double> e : expected.entrySet()) {
-            Optional<Double> got = lookup(actual, e.getKey());
-            if (got.isEmpty()) {
-                first = first != null ? first : "no value for output " + e.getKey();
+        for (Comparison cmp : OutputComparison.compareAll(expected, actual, c.tolerance())) {
+            if (cmp.missing()) {
+                first = first != null ? first : "no value for output " + cmp.output();
                 continue;
             }
-            double want = e.getValue();
-            double error = Double.isFinite(got.get()) ? Math.abs(got.get() - want) : Double.POSITIVE_INFINITY;
-            r.measured(error);
-            if (first == null && !c.tolerance().accepts(e.getKey(), want, got.get())) {
-                first = e.getKey() + " = " + got.get() + " where " + want + " is expected (error " + error
-                        + ", allowed " + c.tolerance().allowedError(e.getKey(), want) + ")";
+            r.measured(cmp.error());
+            if (first == null && !cmp.passed()) {
+                first = cmp.output() + " = " + cmp.actual() + " where " + cmp.expected() + " is expected (error "
+                        + cmp.error() + ", allowed " + cmp.allowed() + ")";
             }
         }
         return Optional.ofNullable(first);
@@ -38,22 +36,13 @@ final class StepComparison {
     static Optional<String> difference(Collection<String> outputs, Map<String, Double> before,
             Map<String, Double> after) {
         for (String name : outputs) {
-            Optional<Double> a = lookup(before, name);
-            Optional<Double> b = lookup(after, name);
+            Optional<Double> a = OutputComparison.lookup(before, name);
+            Optional<Double> b = OutputComparison.lookup(after, name);
             if (!a.equals(b)) {
                 return Optional.of(name + " = " + b.map(String::valueOf).orElse("nothing") + " instead of "
                         + a.map(String::valueOf).orElse("nothing"));
             }
         }
         return Optional.empty();
-    }
-
-    static Optional<Double> lookup(Map<String, Double> outputs, String name) {
-        Double exact = outputs.get(name);
-        if (exact != null) {
-            return Optional.of(exact);
-        }
-        return outputs.entrySet().stream().filter(e -> Names.same(e.getKey(), name) && e.getValue() != null)
-                .map(Map.Entry::getValue).findFirst();
     }
 }

@@ -1,23 +1,16 @@
 package org.fclcert.harness;
 
+import org.fclcert.corpus.OutputScales;
+import org.fclcert.corpus.Tolerance;
+
 /** Tolerances for tests and simple uses. */
 public final class Tolerances {
     private Tolerances() {
     }
 
-    /** |error| ≤ 1e-9 · max(1, |expected|). */
+    /** The corpus's exact class ({@link Tolerance#EXACT}): |error| ≤ 1e-9 · max(1, |expected|). */
     public static OutputTolerance exact() {
-        return new OutputTolerance() {
-            @Override
-            public String describe() {
-                return "exact";
-            }
-
-            @Override
-            public double allowedError(String output, double expected) {
-                return 1e-9 * Math.max(1, Math.abs(expected));
-            }
-        };
+        return new CorpusTolerance(Tolerance.EXACT, OutputScales.none());
     }
 
     /** |error| ≤ bound, for every output. */

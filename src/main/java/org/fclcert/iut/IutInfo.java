@@ -12,7 +12,8 @@ import java.util.Objects;
  * @param command        how fclcert reached it (the spec given to {@link Iuts#open})
  * @param claims         the feature ids (B-…, E-…, O-…) it says it realises; the report compares
  *                       them with what was measured
- * @param declaredLimits limits it declares (for example {@code maxPoints}), by name
+ * @param declaredLimits limits it declares, by Table 11 id (for example {@code max-rules-per-block}; the prober
+ *                       compares only those ids, see {@code docs/data-check-list.md}), other names kept as given
  */
 public record IutInfo(
         String name, String version, String command, List<String> claims, Map<String, Long> declaredLimits) {

@@ -19,7 +19,9 @@ import java.util.Objects;
 public record IutOptions(
         Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath) {
 
-    public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(5);
+    /** The per-request timeout unless the user sets one (the front ends show it through orchestration.Defaults). */
+    public static final int DEFAULT_TIMEOUT_SECONDS = 5;
+    public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(DEFAULT_TIMEOUT_SECONDS);
     public static final int DEFAULT_RESTART_BUDGET = 5;
     public static final int DEFAULT_MAX_REPLY_BYTES = 16 * 1024 * 1024;
     public static final int DEFAULT_STDERR_TAIL_BYTES = 8 * 1024;

@@ -19,10 +19,11 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.Certification;
 import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
+import org.fclcert.orchestration.Certification;
+import org.fclcert.orchestration.Defaults;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -34,7 +35,10 @@ import org.fclcert.report.ReportFiles;
 @Mojo(name = "certify", defaultPhase = LifecyclePhase.INTEGRATION_TEST, threadSafe = true,
         requiresDependencyResolution = ResolutionScope.TEST)
 public class CertifyMojo extends AbstractMojo {
-    /** The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND} or {@code reference}. */
+    /**
+     * The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND},
+     * {@code fuzzylite} or {@code fuzzylite:PATH} (the fuzzylite 6.0 command line), or {@code reference}.
+     */
     @Parameter(property = "fclcert.iut", required = true)
     private String iut;
 
@@ -59,7 +63,7 @@ public class CertifyMojo extends AbstractMojo {
     private List<String> cases;
 
     /** Per-request timeout for the implementation, in milliseconds. */
-    @Parameter(property = "fclcert.timeoutMillis", defaultValue = "5000")
+    @Parameter(property = "fclcert.timeoutMillis", defaultValue = Defaults.TIMEOUT_MILLIS)
     private long timeoutMillis;
 
     /** Also measure the Table 11 data check list by probing (off by default: it takes up to probeBudgetSeconds). */
@@ -67,11 +71,11 @@ public class CertifyMojo extends AbstractMojo {
     private boolean probe;
 
     /** Largest size the probes try. */
-    @Parameter(property = "fclcert.probeCap", defaultValue = "4096")
+    @Parameter(property = "fclcert.probeCap", defaultValue = Defaults.CERTIFY_PROBE_CAP_TEXT)
     private long probeCap;
 
     /** Time budget of the probes, in seconds. */
-    @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = "180")
+    @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = Defaults.PROBE_BUDGET_SECONDS)
     private long probeBudgetSeconds;
 
     /** Skip this goal (also skipped with -DskipTests or -DskipITs). */
@@ -99,12 +103,13 @@ public class CertifyMojo extends AbstractMojo {
         if (!classpath.isEmpty()) {
             options = options.withClasspath(classpath);
         }
-        Certification.Request request = new Certification.Request(iut, options,
-                classpath.isEmpty() ? null : "project test class path", corpus,
-                corpusDirectory == null ? BundledCorpus.NAME : corpusDirectory.toString(),
-                new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)),
-                reportsDirectory.toPath(), reportsDirectory.toPath(), probe ? new Prober.Options(probeCap,
-                        Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null);
+        Certification.Request request = Certification.Request.builder(iut, corpus).options(options)
+                .classpath(classpath.isEmpty() ? null : "project test class path")
+                .corpusName(corpusDirectory == null ? BundledCorpus.NAME : corpusDirectory.toString())
+                .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
+                .outDir(reportsDirectory.toPath())
+                .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
+                .build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));
@@ -116,6 +121,7 @@ public class CertifyMojo extends AbstractMojo {
         getLog().info(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant"));
+        r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
     }
 

@@ -14,6 +14,11 @@ public enum FailOn {
     CLAIMED,
     ANY;
 
+    /** The word the command line takes: {@code none}, {@code basic}, {@code claimed}, {@code any}. */
+    public String word() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
     public static FailOn byWord(String word) {
         return valueOf(word.toUpperCase(Locale.ROOT));
     }

@@ -90,19 +90,17 @@ public final class JunitReport {
         x.writeAttribute("message", safe(c.message()));
         x.writeAttribute("type", type);
         StringBuilder detail = new StringBuilder();
-        if (c.expected() != null || c.actual() != null) {
-            detail.append("expected: ").append(Texts.describe(c.expected())).append("\nactual:   ")
-                    .append(Texts.describe(c.actual())).append('\n');
-        }
-        if (c.error() != null) {
-            detail.append(c.error()).append('\n');
+        c.mismatch().ifPresent(m -> detail.append("expected: ").append(Texts.describe(m.expected()))
+                .append("\nactual:   ").append(Texts.describe(m.actual())).append('\n'));
+        if (c.evidence().error() != null) {
+            detail.append(c.evidence().error()).append('\n');
         }
         x.writeCharacters(safe(detail.toString()));
         x.writeEndElement();
     }
 
     private static long millis(CaseResult c) {
-        return c.durationMs() == null ? 0 : c.durationMs();
+        return c.setup().durationMs() == null ? 0 : c.setup().durationMs();
     }
 
     private static String seconds(long millis) {

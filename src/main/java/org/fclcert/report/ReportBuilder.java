@@ -12,6 +12,7 @@ import java.util.function.Predicate;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.RejectionPlace;
 import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.ResultsFile;
@@ -36,7 +37,7 @@ public final class ReportBuilder {
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
                 summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
-                claims(header.iut().claims(), features), cases);
+                claims(header.iut().claims(), features), Causes.of(cases), cases);
     }
 
     static final String NOT_RUN = "not run: the run ended before this case";
@@ -68,10 +69,11 @@ public final class ReportBuilder {
         int other = 0;
         int unlocated = 0;
         for (CaseResult c : cases) {
-            if (c.rejection() == null) {
+            RejectionPlace place = c.verdict().rejection();
+            if (place == null) {
                 continue;
             }
-            switch (c.rejection()) {
+            switch (place) {
                 case AT_ERROR_LINE -> at++;
                 case OTHER_LINE -> other++;
                 case UNLOCATED -> unlocated++;
@@ -135,7 +137,7 @@ public final class ReportBuilder {
     private static List<Report.InterpretationEntry> interpretation(List<CaseResult> cases) {
         return cases.stream().filter(CaseResult::interpretation)
                 .map(c -> new Report.InterpretationEntry(c.id(), c.title(), interpretationFlag(c), c.status().word(),
-                        c.message()))
+                        c.message(), Causes.rejectionCause(c).orElse(null)))
                 .toList();
     }
 

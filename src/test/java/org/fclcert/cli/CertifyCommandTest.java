@@ -83,7 +83,7 @@ class CertifyCommandTest {
                 "B-FB-003", CaseStatus.PASSED, "B-FB-901", CaseStatus.FAILED), statuses(r));
         CaseResult crashed = result(r, "B-FB-002");
         assertTrue(crashed.message().startsWith("step 1 of 2: the implementation crashed"), crashed.message());
-        assertTrue(crashed.error().contains("fatal: fifth evaluation, giving up"), crashed.error());
+        assertTrue(crashed.evidence().error().contains("fatal: fifth evaluation, giving up"), crashed.evidence().error());
         assertEquals("accepted a program the standard rejects: FCL-S001 at line 14", result(r, "B-FB-901").message());
         assertEquals("fake", r.iut().name());
         assertEquals(List.of("B-FB"), r.claims().claimed());
@@ -158,6 +158,12 @@ class CertifyCommandTest {
         assertEquals(2, certify("reference", "--feature", "E-HEDGES"));
         assertEquals(2, certify("reference", "--level", "expert"));
         assertEquals(2, certify("reference", "--timeout", "soon"));
+        assertTrue(err.toString().contains("Invalid value for option '--timeout': 'soon' is not a duration"),
+                err::toString);
+        assertTrue(err.toString().contains("Invalid value for option '--fail-on': expected one of [NONE, BASIC, CLAIMED,"
+                + " ANY] (case-insensitive) but was 'sometimes'"), err::toString);
+        assertTrue(err.toString().contains("Invalid value for option '--level' (LEVEL): expected one of [BASIC,"
+                + " EXTENSION, OPEN] (case-insensitive) but was 'expert'"), err::toString);
         assertEquals(2, certify("reference", "--case", "Z-*"));
         assertTrue(err.toString().contains("no case of " + CORPUS + " matches the selection"), err::toString);
     }

@@ -39,7 +39,11 @@ class ProbeCommandTest {
     void badOptionsAndUnreachableIutsExitWith2() {
         Cli bad = Cli.run("probe", "--budget", "soon");
         assertEquals(2, bad.exitCode());
-        assertTrue(bad.err().startsWith("fclcert probe: --budget and --timeout take a duration"), bad.err());
+        assertTrue(bad.err().startsWith("Invalid value for option '--budget': 'soon' is not a duration (write e.g. 5s,"
+                + " 500ms or 2m)"), bad.err());
+        Cli zero = Cli.run("probe", "--timeout", "0ms");
+        assertEquals(2, zero.exitCode());
+        assertTrue(zero.err().startsWith("Invalid value for option '--timeout': '0ms' is not a duration"), zero.err());
         Cli none = Cli.run("probe", "--iut", "java:no.such.Class");
         assertEquals(2, none.exitCode());
         assertTrue(none.err().startsWith("fclcert probe: cannot probe 'java:no.such.Class'"), none.err());

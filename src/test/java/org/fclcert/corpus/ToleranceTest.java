@@ -71,7 +71,7 @@ class ToleranceTest {
     void nanAndInfinityNeverPass() {
         Comparison nan = Tolerance.CONTINUOUS.compare("y", 0, Double.NaN, OptionalDouble.of(1e9));
         assertFalse(nan.passed());
-        assertTrue(Double.isNaN(nan.error()));
+        assertEquals(Double.POSITIVE_INFINITY, nan.error(), "one rule with certify: a non-finite value is infinitely off");
         assertFalse(Tolerance.CONTINUOUS.compare("y", 0, Double.POSITIVE_INFINITY, OptionalDouble.of(1e300)).passed());
     }
 
@@ -87,6 +87,8 @@ class ToleranceTest {
         assertEquals("power", result.get(1).output());
         assertFalse(result.get(1).passed());
         assertTrue(Double.isNaN(result.get(1).actual()));
+        assertTrue(result.get(1).missing());
+        assertFalse(result.get(0).missing());
     }
 
     @Test

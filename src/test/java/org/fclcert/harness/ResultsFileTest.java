@@ -31,10 +31,14 @@ class ResultsFileTest {
     }
 
     static CaseResult failed() {
-        return new CaseResult("B-COGS-001", "t1", "basic", List.of("B-COGS"), List.of(), CaseStatus.FAILED,
-                "step 1 of 1: y = NaN where 2.0 is expected", 1, Map.of("x", 1.0), Map.of("y", 2.0),
-                Map.of("y", Double.NaN), null, Double.POSITIVE_INFINITY, "exact", ExportStatus.UNSUPPORTED, null,
-                List.of("a note"), null, "FUNCTION_BLOCK fb\n", 12L, null);
+        return new CaseResult(new PlannedCase("B-COGS-001", "t1", "basic", List.of("B-COGS"), List.of()),
+                new CaseResult.Verdict(CaseStatus.FAILED, "step 1 of 1: y = NaN where 2.0 is expected",
+                        List.of("a note"), null),
+                new CaseResult.Evidence(new CaseResult.Step(1, Map.of("x", 1.0)),
+                        new CaseResult.Mismatch.Outputs(Map.of("y", 2.0), Map.of("y", Double.NaN)), null,
+                        Double.POSITIVE_INFINITY),
+                new CaseResult.Export(ExportStatus.UNSUPPORTED, null),
+                new CaseResult.Setup(null, "exact", "FUNCTION_BLOCK fb\n", 12L));
     }
 
     @Test
@@ -53,10 +57,13 @@ class ResultsFileTest {
         assertEquals(header(), read.header());
         CaseResult back = read.results().get(0);
         assertEquals(failed().message(), back.message());
-        assertEquals(Double.POSITIVE_INFINITY, back.maxError());
-        assertEquals(Map.of("y", 2.0), back.expected());
-        // JSON has no NaN: Jackson writes it as the string "NaN" (documented in docs/report-format.md)
-        assertEquals(Map.of("y", "NaN"), back.actual());
+        assertEquals(Double.POSITIVE_INFINITY, back.evidence().maxError());
+        assertEquals(Map.of("y", 2.0), back.mismatch().orElseThrow().expected());
+        // JSON has no NaN: Jackson writes it as the string "NaN" (documented in docs/report-format.md),
+        // which is read back as the number
+        assertEquals(Map.of("y", Double.NaN), back.mismatch().orElseThrow().actual());
+        assertTrue(lines.get(1).contains("\"actual\":{\"y\":\"NaN\"}"), lines.get(1));
+        assertEquals(failed(), back, "every part survives the round trip");
         assertTrue(lines.get(1).contains("\"maxError\":\"Infinity\""), lines.get(1));
         assertEquals(List.of(), read.problems());
     }

@@ -15,8 +15,8 @@ import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
 import org.fclcert.harness.CaseStatus;
-import org.fclcert.harness.Certification;
 import org.fclcert.harness.RunListener;
+import org.fclcert.orchestration.Certification;
 import org.fclcert.report.Report;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -33,9 +33,9 @@ class FuzzyliteCertificationTest {
     void standardProgramsAreRejectedForFuzzylitesDialectAndNegativeCasesPassOnlyAsRejections(@TempDir Path out)
             throws Exception {
         Fuzzylite.assumeInstalled();
-        Certification.Request request = new Certification.Request("fuzzylite", Fuzzylite.options(), null,
-                Corpus.load(Path.of("conformance")), "conformance", new CaseSelection(Set.of(), Set.of(), CASES),
-                out, null);
+        Certification.Request request = Certification.Request.builder("fuzzylite", Corpus.load(Path.of("conformance")))
+                .options(Fuzzylite.options()).corpusName("conformance")
+                .selection(new CaseSelection(Set.of(), Set.of(), CASES)).outDir(out).build();
         Report report = Certification.run(request, RunListener.NONE).report();
         Map<String, CaseResult> byId = report.cases().stream()
                 .collect(Collectors.toMap(CaseResult::id, Function.identity()));
@@ -64,8 +64,8 @@ class FuzzyliteCertificationTest {
         // a DEFUZZIFY without METHOD (error at line 26) is rejected, but for ACCU inside the rule block (line 34)
         CaseResult noMethod = byId.get("N-C016-001");
         assertEquals(CaseStatus.PASSED, noMethod.status());
-        assertEquals(List.of("the implementation reports line 34; the error (FCL-C016) is at line 26"), noMethod.notes());
-        assertEquals(org.fclcert.harness.RejectionPlace.OTHER_LINE, noMethod.rejection());
+        assertEquals(List.of("the implementation reports line 34; the error (FCL-C016) is at line 26"), noMethod.verdict().notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.OTHER_LINE, noMethod.verdict().rejection());
 
         // an unclosed comment (line 42): "passes", but fuzzylite never got there - it refused CoGS, naming no line
         CaseResult unclosed = byId.get("N-S002-001");
@@ -73,15 +73,15 @@ class FuzzyliteCertificationTest {
         assertEquals("rejected: fuzzylite: [factory error] constructor of Defuzzifier <CoGS> not registered",
                 unclosed.message());
         assertEquals(List.of("the implementation gave no line for its rejection; the error is at line 42"),
-                unclosed.notes());
-        assertEquals(org.fclcert.harness.RejectionPlace.UNLOCATED, unclosed.rejection());
+                unclosed.verdict().notes());
+        assertEquals(org.fclcert.harness.RejectionPlace.UNLOCATED, unclosed.verdict().rejection());
 
         // FUZZIFY temp never closed: rejected where the next FUZZIFY starts (line 21), the case's line
         CaseResult unclosedBlock = byId.get("N-S012-001");
         assertEquals(CaseStatus.PASSED, unclosedBlock.status());
         assertTrue(unclosedBlock.message().startsWith("rejected at line 21: fuzzylite: [syntax error] expected "
                 + "<END_FUZZIFY> before <FUZZIFY>"), unclosedBlock.message());
-        assertEquals(List.of(), unclosedBlock.notes());
+        assertEquals(List.of(), unclosedBlock.verdict().notes());
 
         assertFalse(report.basicLevel().conformant());
         assertTrue(report.features().stream().filter(r -> r.table() == 9).noneMatch(r -> r.passed() > 0));

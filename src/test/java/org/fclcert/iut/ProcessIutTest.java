@@ -41,7 +41,7 @@ class ProcessIutTest {
             assertEquals("fake", info.name());
             assertEquals("1.0", info.version());
             assertEquals(List.of("B-FB"), info.claims());
-            assertEquals(Map.of("maxPoints", 3L), info.declaredLimits());
+            assertEquals(Map.of("max-points-per-input-term", 3L), info.declaredLimits());
             assertTrue(info.command().startsWith("process:python3"));
             assertEquals(new LoadOutcome.Loaded(List.of("first", "second")), iut.load(PROGRAM));
             // the fake answers sum = x + y = 1.5 + 2.25

@@ -17,6 +17,7 @@ import java.util.regex.Pattern;
 import javax.xml.parsers.DocumentBuilderFactory;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.PlannedCase;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.w3c.dom.Document;
@@ -68,14 +69,15 @@ class RenderersTest {
 
     @Test
     void junitHasOneTestcasePerCaseAndSurvivesControlCharacters() throws Exception {
-        CaseResult garbage = new CaseResult("B-FB-009", "garbage", "basic", List.of("B-FB"), List.of(),
-                CaseStatus.ERRORED, "broke the protocol: reply 'x\u0001\u0007y'", null, null, null, null,
-                "\u0000\u001b[31mboom", null, "exact", null, null, List.of(), null, null, 1L, null);
+        CaseResult garbage = new CaseResult(new PlannedCase("B-FB-009", "garbage", "basic", List.of("B-FB"), List.of()),
+                new CaseResult.Verdict(CaseStatus.ERRORED, "broke the protocol: reply 'x\u0001\u0007y'", List.of(), null),
+                new CaseResult.Evidence(null, null, "\u0000\u001b[31mboom", null), null,
+                new CaseResult.Setup(null, "exact", null, 1L));
         List<CaseResult> cases = new java.util.ArrayList<>(REPORT.cases());
         cases.add(garbage);
         Report r = new Report(1, REPORT.generatedAt(), REPORT.iut(), REPORT.toolkit(), REPORT.corpus(), REPORT.run(),
                 new Report.Summary(9, 3, 3, 2, 1), REPORT.rejections(), REPORT.basicLevel(), REPORT.features(), List.of(),
-                REPORT.interpretation(), REPORT.claims(), cases);
+                REPORT.interpretation(), REPORT.claims(), REPORT.causes(), cases);
         Document doc = DocumentBuilderFactory.newInstance().newDocumentBuilder()
                 .parse(new ByteArrayInputStream(JunitReport.render(r).getBytes(StandardCharsets.UTF_8)));
         Element suite = doc.getDocumentElement();

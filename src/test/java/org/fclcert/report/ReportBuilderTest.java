@@ -82,7 +82,7 @@ class ReportBuilderTest {
     void interpretationCasesAreListedApart() {
         Report r = report(List.of());
         assertEquals(List.of(new Report.InterpretationEntry("E-COG-INT-001", "title of E-COG-INT-001",
-                "interpretation:3", "failed", "step 1 of 1: y = 1.0 where 2.0 is expected")), r.interpretation());
+                "interpretation:3", "failed", "step 1 of 1: y = 1.0 where 2.0 is expected", null)), r.interpretation());
     }
 
     @Test
@@ -151,7 +151,8 @@ class ReportBuilderTest {
 
     private static CaseResult rejected(String id, RejectionPlace place) {
         CaseResult r = result(id, "basic", CaseStatus.PASSED, List.of());
-        return new CaseResult(r.id(), r.title(), r.level(), r.tests(), r.flags(), r.status(), "rejected", null, null,
-                "reject", "rejected", null, null, "exact", r.exportStatus(), null, List.of(), null, null, 1L, place);
+        return new CaseResult(r.plan(), new CaseResult.Verdict(r.status(), "rejected", List.of(), place),
+                new CaseResult.Evidence(null, new CaseResult.Mismatch.Sentences("reject", "rejected"), null, null),
+                r.export(), new CaseResult.Setup(null, "exact", null, 1L));
     }
 }

@@ -15,11 +15,14 @@ final class Results {
 
     static CaseResult result(String id, String level, CaseStatus status, List<String> tests, String... flags) {
         boolean bad = status != CaseStatus.PASSED;
-        return new CaseResult(id, "title of " + id, level, tests, List.of(flags), status,
-                bad ? "step 1 of 1: y = 1.0 where 2.0 is expected" : "1 step(s) within tolerance", bad ? 1 : null,
-                bad ? Map.of("x", 0.5) : null, bad ? Map.of("y", 2.0) : null, bad ? Map.of("y", 1.0) : null,
-                status == CaseStatus.ERRORED ? "crashed\n--- stderr ---\nSegmentation fault" : null, 0.0, "exact",
-                ExportStatus.UNSUPPORTED, null, List.of(), null, bad ? "FUNCTION_BLOCK fb\n  (* x < y & z *)\nEND_FUNCTION_BLOCK" : null, 3L, null);
+        return new CaseResult(new PlannedCase(id, "title of " + id, level, tests, List.of(flags)),
+                new CaseResult.Verdict(status,
+                        bad ? "step 1 of 1: y = 1.0 where 2.0 is expected" : "1 step(s) within tolerance", List.of(), null),
+                new CaseResult.Evidence(bad ? new CaseResult.Step(1, Map.of("x", 0.5)) : null,
+                        bad ? new CaseResult.Mismatch.Outputs(Map.of("y", 2.0), Map.of("y", 1.0)) : null,
+                        status == CaseStatus.ERRORED ? "crashed\n--- stderr ---\nSegmentation fault" : null, 0.0),
+                new CaseResult.Export(ExportStatus.UNSUPPORTED, null),
+                new CaseResult.Setup(null, "exact", bad ? "FUNCTION_BLOCK fb\n  (* x < y & z *)\nEND_FUNCTION_BLOCK" : null, 3L));
     }
 
     static RunHeader header(int basicCasesInCorpus, List<CaseResult> planned, List<String> claims) {

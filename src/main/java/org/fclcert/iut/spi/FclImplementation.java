@@ -23,7 +23,13 @@ public interface FclImplementation {
         return List.of();
     }
 
-    /** Limits the implementation declares (for example {@code maxPoints}), by name. */
+    /**
+     * Limits the implementation declares, by the ids of the Table 11 data check list (for example
+     * {@code max-rules-per-block}, {@code max-points-per-input-term}, {@code max-nesting-depth}; every id is
+     * listed in {@code docs/data-check-list.md}, matched ignoring case). {@code fclcert probe} and
+     * {@code certify} put each declared limit next to the measured one and flag a measured limit below it;
+     * a limit under any other name is kept in the report's header but compared with nothing.
+     */
     default Map<String, Long> limits() {
         return Map.of();
     }
@@ -32,6 +38,13 @@ public interface FclImplementation {
      * Reads and prepares a program. A program the implementation does not accept must come back as
      * {@link FclLoadResult#rejected(String, int)} with the line of the first error; throwing is reported
      * as a crash.
+     *
+     * <p>Many libraries signal every refusal by throwing. An adapter for one must turn into a rejection only
+     * the exceptions the library throws on purpose (its own exception type, its parser's exceptions) and let
+     * everything else propagate: catching {@code Exception} wholesale would make a {@code NullPointerException}
+     * or an {@code ArrayIndexOutOfBoundsException} inside the library — a bug — look like a clean rejection,
+     * and a negative case would pass for the wrong reason. fclcert's own adapters show how
+     * ({@code docs/iut-protocol.md}, "jfuzzylite" and "jFuzzyLogic").
      */
     FclLoadResult load(String fcl);
 }

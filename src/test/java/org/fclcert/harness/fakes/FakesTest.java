@@ -82,9 +82,9 @@ class FakesTest {
         assertEquals(Map.of("E-ACCU-NSUM", FeatureStatus.NOT_REALISED), notRealised(r));
         assertEquals(Map.of("E-ACCU-NSUM-001", CaseStatus.FAILED), notPassed(r));
         CaseResult c = result(r, "E-ACCU-NSUM-001");
-        assertEquals(1, c.step());
+        assertEquals(1, c.evidence().step().number());
         // BSUM: lo 1, hi 0.5: y = 50/1.5
-        assertEquals(50 / 1.5, ((Map<?, ?>) c.actual()).get("y"));
+        assertEquals(50 / 1.5, ((Map<?, ?>) c.mismatch().orElseThrow().actual()).get("y"));
         assertTrue(r.basicLevel().conformant());
     }
 
@@ -94,8 +94,8 @@ class FakesTest {
         assertEquals(Map.of("E-WITH-CONST", FeatureStatus.NOT_REALISED), notRealised(r));
         CaseResult c = result(r, "E-WITH-CONST-001");
         // min(0.25, mu) for small: CoG = 1679.6875/29.6875 = 56.5789..., 1.75 off where 0.2 is allowed
-        assertEquals(1679.6875 / 29.6875, (Double) ((Map<?, ?>) c.actual()).get("y"), 1e-3);
-        assertEquals(1, c.step());
+        assertEquals(1679.6875 / 29.6875, (Double) ((Map<?, ?>) c.mismatch().orElseThrow().actual()).get("y"), 1e-3);
+        assertEquals(1, c.evidence().step().number());
     }
 
     @Test
@@ -103,7 +103,7 @@ class FakesTest {
         Report r = certify(new Fakes.EqualPrecedence());
         assertEquals(Map.of("E-OR-MAX", FeatureStatus.NOT_REALISED), notRealised(r));
         // (0.8 OR 0.3) AND 0.1 = 0.1: y = 10/0.3
-        assertEquals(10 / 0.3, (Double) ((Map<?, ?>) result(r, "E-OR-MAX-001").actual()).get("y"), 1e-9);
+        assertEquals(10 / 0.3, (Double) ((Map<?, ?>) result(r, "E-OR-MAX-001").mismatch().orElseThrow().actual()).get("y"), 1e-9);
     }
 
     @Test
@@ -111,7 +111,7 @@ class FakesTest {
         Report r = certify(new Fakes.CoupledAndOr());
         assertEquals(Map.of("E-RULEBLOCKS", FeatureStatus.NOT_REALISED), notRealised(r));
         // block one evaluated with PROD: 0.2 / (0.2 + 0.4)
-        assertEquals(100 * 0.2 / 0.6, (Double) ((Map<?, ?>) result(r, "E-RULEBLOCKS-001").actual()).get("y1"), 1e-9);
+        assertEquals(100 * 0.2 / 0.6, (Double) ((Map<?, ?>) result(r, "E-RULEBLOCKS-001").mismatch().orElseThrow().actual()).get("y1"), 1e-9);
     }
 
     @Test
@@ -119,11 +119,11 @@ class FakesTest {
         Report r = certify(new Fakes.SampledDefuzzification());
         assertEquals(Map.of("E-COG", FeatureStatus.NOT_REALISED, "E-LM", FeatureStatus.NOT_REALISED,
                 "E-RM", FeatureStatus.NOT_REALISED), notRealised(r));
-        assertEquals(Map.of("y", 30.5), result(r, "E-LM-001").actual(), "first midpoint on the plateau");
-        assertEquals(Map.of("y", 49.5), result(r, "E-RM-001").actual(), "last midpoint on the plateau");
-        assertEquals(Map.of("y", 0.0), result(r, "E-COG-001").actual(), "no sample hits the narrow term: DEFAULT");
+        assertEquals(Map.of("y", 30.5), result(r, "E-LM-001").mismatch().orElseThrow().actual(), "first midpoint on the plateau");
+        assertEquals(Map.of("y", 49.5), result(r, "E-RM-001").mismatch().orElseThrow().actual(), "last midpoint on the plateau");
+        assertEquals(Map.of("y", 0.0), result(r, "E-COG-001").mismatch().orElseThrow().actual(), "no sample hits the narrow term: DEFAULT");
         // step 2: the clipped set reaches 0.5 at 20.1; the first sample at or above it is 20.5
-        assertEquals(0.4, result(r, "E-LM-001").maxError(), 1e-9);
+        assertEquals(0.4, result(r, "E-LM-001").evidence().maxError(), 1e-9);
     }
 
     @Test
@@ -134,14 +134,14 @@ class FakesTest {
                 notRealised(r));
         assertFalse(r.basicLevel().conformant());
         // (950/12) / (14/12): both rules concluding 'closed' counted
-        assertEquals(950.0 / 14, (Double) ((Map<?, ?>) result(r, "B-COGS-001").actual()).get("valve"), 1e-9);
+        assertEquals(950.0 / 14, (Double) ((Map<?, ?>) result(r, "B-COGS-001").mismatch().orElseThrow().actual()).get("valve"), 1e-9);
     }
 
     @Test
     void ignoringDefaultLosesTheDefaultValueRow() throws Exception {
         Report r = certify(new Fakes.IgnoresDefault());
         assertEquals(Map.of("B-DEFAULT-VALUE", FeatureStatus.NOT_REALISED), notRealised(r));
-        assertEquals(2, result(r, "B-DEFAULT-VALUE-001").step());
+        assertEquals(2, result(r, "B-DEFAULT-VALUE-001").evidence().step().number());
         assertFalse(r.basicLevel().conformant());
     }
 
@@ -150,8 +150,8 @@ class FakesTest {
         Report r = certify(new Fakes.NcAsZero());
         assertEquals(Map.of("B-DEFAULT-NC", FeatureStatus.NOT_REALISED), notRealised(r));
         CaseResult c = result(r, "B-DEFAULT-NC-001");
-        assertEquals(2, c.step());
-        assertEquals(List.of("2 of 4 steps gave a wrong result"), c.notes());
+        assertEquals(2, c.evidence().step().number());
+        assertEquals(List.of("2 of 4 steps gave a wrong result"), c.verdict().notes());
     }
 
     @Test

@@ -1,11 +1,23 @@
-package org.fclcert.harness;
+package org.fclcert.orchestration;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
+import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ResultsFile;
+import org.fclcert.harness.ResultsWriter;
+import org.fclcert.harness.RunCase;
+import org.fclcert.harness.RunCases;
+import org.fclcert.harness.RunHeader;
+import org.fclcert.harness.RunHeaders;
+import org.fclcert.harness.RunListener;
+import org.fclcert.harness.Runner;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutInfo;
@@ -24,40 +36,49 @@ import org.fclcert.report.ReportFiles;
  * The only orchestration of a run: the front ends (the command line, the Maven plugin) parse their own
  * options into a {@link Request}, follow the run through a {@link RunListener} and {@link Hooks}, and
  * present the outcome. Nothing here prints.
+ *
+ * <p>It lives above {@code harness} (which runs the cases), {@code probe} (Table 11) and {@code report}
+ * (verdicts and renderings), so that none of those three needs to know the others' flow
+ * ({@code docs/architecture.md}).
  */
 public final class Certification {
     private Certification() {
     }
 
     /**
-     * What to certify.
+     * What to certify. Build one with {@link #builder(String, Corpus)}: only the implementation and the
+     * corpus are required, everything else has the default the command line uses.
      *
-     * @param iutSpec   {@code reference}, {@code java:CLASS} or {@code process:COMMAND}
-     * @param options   timeouts, class path and the like for the implementation
-     * @param classpath the class path as the user wrote it, for the report (null when none)
-     * @param corpus    the loaded corpus
-     * @param corpusName how the report names the corpus (its directory, or {@code bundled})
-     * @param selection which cases run
-     * @param outDir    where results and reports go; null for {@code <reportsRoot>/<iut-name>}
+     * @param iutSpec     {@code reference}, {@code java:CLASS}, {@code process:COMMAND} or {@code fuzzylite[:PATH]}
+     * @param options     timeouts, class path and the like for the implementation
+     * @param classpath   the class path as the user wrote it, for the report (null when none)
+     * @param corpus      the loaded corpus
+     * @param corpusName  how the report names the corpus (its directory, or {@code bundled})
+     * @param selection   which cases run
+     * @param outDir      where results and reports go; null for {@code <reportsRoot>/<iut-name>}
      * @param reportsRoot parent of the default output directory
-     * @param probe     how to measure the Table 11 data check list after the cases; null: not measured
-     * @param filters   the filters as the user gave them (levels, features, case globs), for the report;
-     *                  null to describe {@code selection}
+     * @param probe       how to measure the Table 11 data check list after the cases; null: not measured
+     * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
+     *                    null to describe {@code selection}
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
             List<List<String>> filters) {
 
-        /** A run whose report describes the selection itself. */
-        public Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
-                CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe) {
-            this(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot, probe, null);
+        public Request {
+            Objects.requireNonNull(iutSpec, "iutSpec");
+            Objects.requireNonNull(options, "options");
+            Objects.requireNonNull(corpus, "corpus");
+            Objects.requireNonNull(corpusName, "corpusName");
+            Objects.requireNonNull(selection, "selection");
+            if (outDir == null && reportsRoot == null) {
+                throw new IllegalArgumentException("a request needs an output directory or a reports root");
+            }
         }
 
-        /** A run without the data check list. */
-        public Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
-                CaseSelection selection, Path outDir, Path reportsRoot) {
-            this(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot, null);
+        /** A request for {@code iutSpec} on {@code corpus}; the builder's setters change the defaults. */
+        public static Builder builder(String iutSpec, Corpus corpus) {
+            return new Builder(iutSpec, corpus);
         }
 
         private List<List<String>> filtersForReport() {
@@ -69,6 +90,84 @@ public final class Certification {
                     s.features().stream().sorted().toList(), s.globs());
         }
     }
+
+    /**
+     * Builds a {@link Request}. Defaults: {@link IutOptions#defaults()}, no class path, the corpus named
+     * {@code bundled}, every case, output to {@code reports/<iut-name>}, no Table 11 probes, the filters
+     * described from the selection.
+     */
+    public static final class Builder {
+        private final String iutSpec;
+        private final Corpus corpus;
+        private IutOptions options = IutOptions.defaults();
+        private String classpath;
+        private String corpusName = BundledCorpus.NAME;
+        private CaseSelection selection = CaseSelection.all();
+        private Path outDir;
+        private Path reportsRoot = DEFAULT_REPORTS_ROOT;
+        private Prober.Options probe;
+        private List<List<String>> filters;
+
+        private Builder(String iutSpec, Corpus corpus) {
+            this.iutSpec = iutSpec;
+            this.corpus = corpus;
+        }
+
+        /** Timeouts, class path and the like for opening the implementation. */
+        public Builder options(IutOptions value) {
+            options = value;
+            return this;
+        }
+
+        /** The class path as the user wrote it, for the report. */
+        public Builder classpath(String value) {
+            classpath = value;
+            return this;
+        }
+
+        /** How the report names the corpus: its directory, or {@code bundled}. */
+        public Builder corpusName(String value) {
+            corpusName = value;
+            return this;
+        }
+
+        public Builder selection(CaseSelection value) {
+            selection = value;
+            return this;
+        }
+
+        /** The output directory itself (instead of {@code <reportsRoot>/<iut-name>}). */
+        public Builder outDir(Path value) {
+            outDir = value;
+            return this;
+        }
+
+        /** The parent of the default output directory (default {@code reports}). */
+        public Builder reportsRoot(Path value) {
+            reportsRoot = value;
+            return this;
+        }
+
+        /** Measure the Table 11 data check list after the cases (null: do not). */
+        public Builder probe(Prober.Options value) {
+            probe = value;
+            return this;
+        }
+
+        /** The filters as the user spelled them (levels, features, case globs), for the report. */
+        public Builder filters(List<String> levels, List<String> features, List<String> cases) {
+            filters = List.of(List.copyOf(levels), List.copyOf(features), List.copyOf(cases));
+            return this;
+        }
+
+        public Request build() {
+            return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
+                    probe, filters);
+        }
+    }
+
+    /** The parent of the default output directory: {@code reports/} of the working directory. */
+    public static final Path DEFAULT_REPORTS_ROOT = Path.of("reports");
 
     /** The finished run: its report and the directory holding the files. */
     public record Outcome(Report report, Path directory) {
@@ -118,7 +217,7 @@ public final class Certification {
     }
 
     /** The name of the results file in the output directory. */
-    public static final String RESULTS = "results.jsonl";
+    public static final String RESULTS = ResultsWriter.FILE_NAME;
 
     public static Outcome run(Request request, RunListener listener) throws CannotCertify {
         return run(request, listener, Hooks.NONE);
@@ -159,6 +258,16 @@ public final class Certification {
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
         }
+    }
+
+    /**
+     * Builds and writes the four reports from a results file read back: {@code fclcert report --from}, and
+     * a run cut short (the cases it planned but did not finish are reported as skipped).
+     */
+    public static Report rebuildReports(ResultsFile results, Path dir) throws IOException {
+        Report report = ReportBuilder.build(results, Instant.now());
+        ReportFiles.writeAll(report, dir);
+        return report;
     }
 
     /**
