@@ -26,7 +26,8 @@ public record Report(
         List<DataCheckEntry> dataCheckList,
         List<InterpretationEntry> interpretation,
         Claims claims,
-        List<CaseResult> cases) {
+        List<CaseResult> cases,
+        Semantic semantic) {
 
     public static final int FORMAT_VERSION = 1;
 
@@ -35,6 +36,45 @@ public record Report(
         dataCheckList = List.copyOf(dataCheckList);
         interpretation = List.copyOf(interpretation);
         cases = List.copyOf(cases);
+    }
+
+    /** A report of the language axis only. */
+    public Report(int formatVersion, String generatedAt, RunHeader.Iut iut, RunHeader.Toolkit toolkit,
+            RunHeader.CorpusInfo corpus, Run run, Summary summary, Rejections rejections, BasicLevel basicLevel,
+            List<FeatureRow> features, List<DataCheckEntry> dataCheckList, List<InterpretationEntry> interpretation,
+            Claims claims, List<CaseResult> cases) {
+        this(formatVersion, generatedAt, iut, toolkit, corpus, run, summary, rejections, basicLevel, features,
+                dataCheckList, interpretation, claims, cases, null);
+    }
+
+    /** What the two axes of a feature row mean, for every rendering. */
+    public static final String LANGUAGE_AXIS = "language: reads the standard's text (the clause 6 statement)";
+    public static final String SEMANTIC_AXIS = "semantic: computes the standard's results on programs it can read"
+            + " (the positive cases written in the library's layout)";
+
+    /**
+     * The semantic axis of the run ({@code --present-as}), absent when the run had none: the layout, and what
+     * became of the positive cases presented in it ({@code notPresentable}: the layout cannot say the program).
+     */
+    public record Semantic(String presentAs, int cases, int passed, int failed, int errored, int skipped,
+            int notPresentable) {
+        /** {@code semantic axis (fuzzylite layout): 90 presented, 70 passed, 20 failed, …}. */
+        public String sentence() {
+            return "Semantic axis (" + presentAs + " layout): " + (cases - notPresentable) + " of " + cases
+                    + " positive cases presented, " + passed + " passed, " + failed + " failed, " + errored
+                    + " errored, " + skipped + " skipped, " + notPresentable + " not presentable";
+        }
+    }
+
+    /**
+     * The semantic verdict of one feature row: its positive cases presented in the layout ({@code total}, the
+     * not presentable ones left out and counted apart), how many passed, and those that did not.
+     */
+    public record SemanticRow(FeatureStatus status, int passed, int total, int notPresentable,
+            List<String> notPassed) {
+        public SemanticRow {
+            notPassed = List.copyOf(notPassed);
+        }
     }
 
     /** How the run went: when, with which filters, whether every selected case ran, problems reading results. */
@@ -78,10 +118,18 @@ public record Report(
     /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed) {
+            List<String> notPassed, SemanticRow semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
+        }
+
+        /** A row of the language axis only. */
+        public FeatureRow(String id, int table, String level, String element, String description,
+                FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
+                List<String> notPassed) {
+            this(id, table, level, element, description, status, passed, failed, errored, skipped, cases, notPassed,
+                    null);
         }
     }
 
