@@ -118,7 +118,7 @@ public record Report(
     /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed, SemanticRow semantic) {
+            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) SemanticRow semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
