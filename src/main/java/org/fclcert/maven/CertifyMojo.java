@@ -140,6 +140,7 @@ public class CertifyMojo extends AbstractMojo {
         if (r.semantic() != null) {
             getLog().info(r.semantic().sentence());
         }
+        r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
     }
 

@@ -26,7 +26,7 @@ public final class JunitReport {
             x.writeCharacters("\n");
             x.writeStartElement("testsuite");
             x.writeAttribute("name", "fclcert certify " + safe(r.iut().name()));
-            Report.Semantic sem = r.semantic() != null ? r.semantic() : new Report.Semantic("", 0, 0, 0, 0, 0, 0);
+            Report.SemanticAxis sem = r.semantic() != null ? r.semantic() : new Report.SemanticAxis("", 0, 0, 0, 0, 0, 0);
             x.writeAttribute("tests", String.valueOf(r.summary().cases() + sem.cases()));
             x.writeAttribute("failures", String.valueOf(r.summary().failed() + sem.failed()));
             x.writeAttribute("errors", String.valueOf(r.summary().errored() + sem.errored()));

@@ -26,8 +26,9 @@ public record Report(
         List<DataCheckEntry> dataCheckList,
         List<InterpretationEntry> interpretation,
         Claims claims,
+        List<Causes.Cause> causes,
         List<CaseResult> cases,
-        Semantic semantic) {
+        SemanticAxis semantic) {
 
     public static final int FORMAT_VERSION = 1;
 
@@ -35,6 +36,7 @@ public record Report(
         features = List.copyOf(features);
         dataCheckList = List.copyOf(dataCheckList);
         interpretation = List.copyOf(interpretation);
+        causes = causes == null ? List.of() : List.copyOf(causes);
         cases = List.copyOf(cases);
     }
 
@@ -42,9 +44,9 @@ public record Report(
     public Report(int formatVersion, String generatedAt, RunHeader.Iut iut, RunHeader.Toolkit toolkit,
             RunHeader.CorpusInfo corpus, Run run, Summary summary, Rejections rejections, BasicLevel basicLevel,
             List<FeatureRow> features, List<DataCheckEntry> dataCheckList, List<InterpretationEntry> interpretation,
-            Claims claims, List<CaseResult> cases) {
+            Claims claims, List<Causes.Cause> causes, List<CaseResult> cases) {
         this(formatVersion, generatedAt, iut, toolkit, corpus, run, summary, rejections, basicLevel, features,
-                dataCheckList, interpretation, claims, cases, null);
+                dataCheckList, interpretation, claims, causes, cases, null);
     }
 
     /** What the two axes of a feature row mean, for every rendering. */
@@ -56,7 +58,7 @@ public record Report(
      * The semantic axis of the run ({@code --present-as}), absent when the run had none: the layout, and what
      * became of the positive cases presented in it ({@code notPresentable}: the layout cannot say the program).
      */
-    public record Semantic(String presentAs, int cases, int passed, int failed, int errored, int skipped,
+    public record SemanticAxis(String presentAs, int cases, int passed, int failed, int errored, int skipped,
             int notPresentable) {
         /** {@code semantic axis (fuzzylite layout): 90 presented, 70 passed, 20 failed, …}. */
         public String sentence() {
@@ -66,16 +68,6 @@ public record Report(
         }
     }
 
-    /**
-     * The semantic verdict of one feature row: its positive cases presented in the layout ({@code total}, the
-     * not presentable ones left out and counted apart), how many passed, and those that did not.
-     */
-    public record SemanticRow(FeatureStatus status, int passed, int total, int notPresentable,
-            List<String> notPassed) {
-        public SemanticRow {
-            notPassed = List.copyOf(notPassed);
-        }
-    }
 
     /** How the run went: when, with which filters, whether every selected case ran, problems reading results. */
     public record Run(String startedAt, boolean complete, RunHeader.Selection selection, List<String> problems) {
@@ -115,16 +107,21 @@ public record Report(
     public record BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
     }
 
-    /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
+    /**
+     * One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded).
+     * {@code status} and the counts are the language verdict: the corpus programs as the standard writes them.
+     * {@code semantic} is the second verdict — the same cases sent in the implementation's own layout — when
+     * that axis was run; null (absent from report.json) otherwise.
+     */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) SemanticRow semantic) {
+            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) Semantic semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
         }
 
-        /** A row of the language axis only. */
+        /** A row with the language verdict only. */
         public FeatureRow(String id, int table, String level, String element, String description,
                 FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
                 List<String> notPassed) {
@@ -133,8 +130,35 @@ public record Report(
         }
     }
 
-    /** A case that depends on a reading of the standard: shown on its own, counted against no verdict. */
-    public record InterpretationEntry(String id, String title, String flag, String status, String message) {
+    /**
+     * The semantic verdict of a feature row: of {@code total} positive cases the implementation's dialect can
+     * express ({@code --present-as}), {@code passed} computed the standard's values when sent in that layout;
+     * {@code notPresentable} cases the layout cannot say are left out of {@code total}; {@code notPassed} names
+     * the presented cases that did not pass.
+     */
+    public record Semantic(FeatureStatus status, int passed, int total, int notPresentable,
+            List<String> notPassed) {
+        public Semantic {
+            notPassed = notPassed == null ? List.of() : List.copyOf(notPassed);
+        }
+
+        public Semantic(FeatureStatus status, int passed, int total) {
+            this(status, passed, total, 0, List.of());
+        }
+    }
+
+    /**
+     * A case that depends on a reading of the standard: shown on its own, counted against no verdict. {@code
+     * cause} is set when the implementation rejected the program at load (a reason of its own dialect, which
+     * says nothing about the point the case depends on); null otherwise.
+     */
+    public record InterpretationEntry(String id, String title, String flag, String status, String message,
+            String cause) {
+        /** Rejected at load: the case never reached the point it depends on. */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public boolean rejectedAtLoad() {
+            return cause != null;
+        }
     }
 
     /**

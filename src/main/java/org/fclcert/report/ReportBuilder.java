@@ -39,7 +39,8 @@ public final class ReportBuilder {
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
                 summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
-                claims(header.iut().claims(), features), cases, semantic ? semantic(header.presentAs(), cases) : null);
+                claims(header.iut().claims(), features), Causes.of(cases), cases,
+                semantic ? semantic(header.presentAs(), cases) : null);
     }
 
     static final String NOT_RUN = "not run: the run ended before this case";
@@ -115,10 +116,10 @@ public final class ReportBuilder {
     }
 
     /** The positive cases' semantic results; a positive case without one (a run cut short) counts as skipped. */
-    private static Report.Semantic semantic(String presentAs, List<CaseResult> cases) {
+    private static Report.SemanticAxis semantic(String presentAs, List<CaseResult> cases) {
         List<PresentedStatus> s = cases.stream().filter(c -> !c.interpretation()).filter(ReportBuilder::positive)
                 .map(ReportBuilder::presentedStatus).toList();
-        return new Report.Semantic(presentAs, s.size(), count(s, PresentedStatus.PASSED),
+        return new Report.SemanticAxis(presentAs, s.size(), count(s, PresentedStatus.PASSED),
                 count(s, PresentedStatus.FAILED), count(s, PresentedStatus.ERRORED), count(s, PresentedStatus.SKIPPED),
                 count(s, PresentedStatus.NOT_PRESENTABLE));
     }
@@ -139,14 +140,14 @@ public final class ReportBuilder {
         return (int) statuses.stream().filter(s -> s == status).count();
     }
 
-    private static Report.SemanticRow semanticRow(List<CaseResult> evidence) {
+    private static Report.Semantic semanticRow(List<CaseResult> evidence) {
         List<CaseResult> positive = evidence.stream().filter(ReportBuilder::positive).toList();
         int notPresentable = (int) positive.stream()
                 .filter(c -> presentedStatus(c) == PresentedStatus.NOT_PRESENTABLE).count();
         List<CaseResult> presented = positive.stream()
                 .filter(c -> presentedStatus(c) != PresentedStatus.NOT_PRESENTABLE).toList();
         int passed = (int) presented.stream().filter(c -> presentedStatus(c) == PresentedStatus.PASSED).count();
-        return new Report.SemanticRow(FeatureStatus.of(passed, presented.size()), passed, presented.size(),
+        return new Report.Semantic(FeatureStatus.of(passed, presented.size()), passed, presented.size(),
                 notPresentable, presented.stream().filter(c -> presentedStatus(c) != PresentedStatus.PASSED)
                         .map(CaseResult::id).toList());
     }
@@ -177,7 +178,7 @@ public final class ReportBuilder {
     private static List<Report.InterpretationEntry> interpretation(List<CaseResult> cases) {
         return cases.stream().filter(CaseResult::interpretation)
                 .map(c -> new Report.InterpretationEntry(c.id(), c.title(), interpretationFlag(c), c.status().word(),
-                        c.message()))
+                        c.message(), Causes.rejectionCause(c).orElse(null)))
                 .toList();
     }
 

@@ -58,6 +58,8 @@ final class LibraryText {
             case S_SHAPE -> "SShape";
             case Z_SHAPE -> "ZShape";
             case PI_SHAPE -> "PiShape";
+            case CONCAVE -> "Concave";
+            case SPIKE -> "Spike";
         };
     }
 

@@ -48,7 +48,7 @@ class PresentedReferenceTest {
                 .selection(new CaseSelection(Set.of(), Set.of(), List.of("B-*", "E-*", "O-*"))).outDir(out)
                 .presentAs(PresentAs.FUZZYLITE).build();
         Report report = Certification.run(request, RunListener.NONE).report();
-        Report.Semantic s = report.semantic();
+        Report.SemanticAxis s = report.semantic();
         assertEquals("fuzzylite", s.presentAs());
         assertEquals(0, s.failed() + s.errored() + s.skipped(), s.toString());
         assertEquals(s.cases() - s.notPresentable(), s.passed());
