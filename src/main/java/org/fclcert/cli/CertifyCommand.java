@@ -22,6 +22,7 @@ import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.orchestration.PresentAs;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
@@ -89,6 +90,12 @@ final class CertifyCommand implements Callable<Integer> {
             description = "none | basic | claimed | any: exit 1 when this does not hold (default: ${DEFAULT-VALUE})")
     FailOn failOn;
 
+    @Option(names = "--present-as", paramLabel = "LAYOUT", defaultValue = "auto",
+            description = "auto | none | fuzzylite | jfuzzylogic | ffll: also send each positive case the layout can"
+                    + " express written in that library's layout, the semantic axis (default: ${DEFAULT-VALUE}: the"
+                    + " built-in library adapters in their library's layout, none for reference, java: and process:)")
+    PresentAs presentAs;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
@@ -125,7 +132,8 @@ final class CertifyCommand implements Callable<Integer> {
         Certification.Request request = Certification.Request.builder(iut.spec, loaded)
                 .options(iut.options()).classpath(iut.classpath)
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
-                .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases).build();
+                .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
+                .presentAs(presentAs).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal);
         Certification.Outcome outcome;
@@ -225,8 +233,15 @@ final class CertifyCommand implements Callable<Integer> {
         }
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
-        out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
-        out.println("Open Level features realised (Table 10): " + realised(r, 10));
+        String axis = r.semantic() != null ? " (language axis)" : "";
+        out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
+        out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));
+        if (r.semantic() != null) {
+            out.println(r.semantic().sentence());
+            out.println("Basic Level rows realised (Table 8, semantic axis): " + semanticRealised(r, 8));
+            out.println("Standard Extensions realised (Table 9, semantic axis): " + semanticRealised(r, 9));
+            out.println("Open Level features realised (Table 10, semantic axis): " + semanticRealised(r, 10));
+        }
         if (!r.causes().isEmpty()) {
             out.println("Failures by cause:");
             r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
@@ -248,6 +263,19 @@ final class CertifyCommand implements Callable<Integer> {
                 .map(Report.FeatureRow::id).toList();
         long rows = r.features().stream().filter(f -> f.table() == table).count();
         return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
+    }
+
+    /** As {@link #realised}, by the rows' semantic verdicts; {@code (n not presentable)} counts rows none of whose cases the layout can say. */
+    private static String semanticRealised(Report r, int table) {
+        List<Report.FeatureRow> rows = r.features().stream().filter(f -> f.table() == table && f.semantic() != null)
+                .toList();
+        List<String> ids = rows.stream().filter(f -> f.semantic().status() == FeatureStatus.REALISED)
+                .map(Report.FeatureRow::id).toList();
+        List<String> not = rows.stream().filter(f -> f.semantic().status() == FeatureStatus.NOT_REALISED
+                || f.semantic().status() == FeatureStatus.PARTIAL).map(f -> f.id() + " " + f.semantic().passed()
+                + "/" + f.semantic().total()).toList();
+        return ids.size() + " of " + rows.size() + (table == 8 || ids.isEmpty() ? "" : ": " + String.join(", ", ids))
+                + (not.isEmpty() ? "" : "; not realised: " + String.join(", ", not));
     }
 
     private Set<String> parseFeatures() throws CannotRun {

@@ -24,6 +24,7 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.orchestration.PresentAs;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -78,6 +79,14 @@ public class CertifyMojo extends AbstractMojo {
     @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = Defaults.PROBE_BUDGET_SECONDS)
     private long probeBudgetSeconds;
 
+    /**
+     * The semantic axis: auto, none, fuzzylite, jfuzzylogic or ffll. Each positive case the layout can express
+     * is also sent written in that library's layout (auto: the built-in library adapters in their library's
+     * layout, none for reference, java: and process:).
+     */
+    @Parameter(property = "fclcert.presentAs", defaultValue = "auto")
+    private String presentAs;
+
     /** Skip this goal (also skipped with -DskipTests or -DskipITs). */
     @Parameter(property = "fclcert.skip", defaultValue = "false")
     private boolean skip;
@@ -97,6 +106,13 @@ public class CertifyMojo extends AbstractMojo {
             getLog().info("fclcert:certify skipped");
             return;
         }
+        PresentAs layout;
+        try {
+            layout = PresentAs.byWord(presentAs == null ? "auto" : presentAs);
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException("fclcert:certify: presentAs '" + presentAs
+                    + "' is not one of auto, none, fuzzylite, jfuzzylogic, ffll");
+        }
         Corpus corpus = corpus();
         IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis));
         List<Path> classpath = iut.startsWith("java:") ? testClasspath() : List.of();
@@ -109,7 +125,7 @@ public class CertifyMojo extends AbstractMojo {
                 .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
-                .build();
+                .presentAs(layout).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));
@@ -121,6 +137,9 @@ public class CertifyMojo extends AbstractMojo {
         getLog().info(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant"));
+        if (r.semantic() != null) {
+            getLog().info(r.semantic().sentence());
+        }
         r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
     }

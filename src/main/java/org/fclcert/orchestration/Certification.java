@@ -10,6 +10,7 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.ReferenceExportCheck;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
@@ -29,6 +30,7 @@ import org.fclcert.probe.Table11;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * One certification run from start to finish: select the cases, start the implementation, run the cases
@@ -60,10 +62,11 @@ public final class Certification {
      * @param probe       how to measure the Table 11 data check list after the cases; null: not measured
      * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
      *                    null to describe {@code selection}
+     * @param presentAs   the semantic axis: in which library's layout positive cases are also sent (null: auto)
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters) {
+            List<List<String>> filters, PresentAs presentAs) {
 
         public Request {
             Objects.requireNonNull(iutSpec, "iutSpec");
@@ -71,6 +74,7 @@ public final class Certification {
             Objects.requireNonNull(corpus, "corpus");
             Objects.requireNonNull(corpusName, "corpusName");
             Objects.requireNonNull(selection, "selection");
+            presentAs = presentAs == null ? PresentAs.AUTO : presentAs;
             if (outDir == null && reportsRoot == null) {
                 throw new IllegalArgumentException("a request needs an output directory or a reports root");
             }
@@ -107,6 +111,7 @@ public final class Certification {
         private Path reportsRoot = DEFAULT_REPORTS_ROOT;
         private Prober.Options probe;
         private List<List<String>> filters;
+        private PresentAs presentAs = PresentAs.AUTO;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -160,9 +165,15 @@ public final class Certification {
             return this;
         }
 
+        /** The semantic axis ({@code --present-as}, default {@link PresentAs#AUTO}). */
+        public Builder presentAs(PresentAs value) {
+            presentAs = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters);
+                    probe, filters, presentAs);
         }
     }
 
@@ -231,8 +242,10 @@ public final class Certification {
         }
         try (ImplementationUnderTest iut = open(request)) {
             IutInfo info = hello(iut, request.iutSpec());
-            RunHeader header = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
+            RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
                     request.corpus().sha256(), all, selected, request.filtersForReport());
+            RunHeader header = request.presentAs().resolve(request.iutSpec())
+                    .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
             Path dir = request.outDir() != null ? request.outDir()
                     : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
             return new Outcome(runAndReport(request, iut, header, selected, dir, listener, hooks), dir);
@@ -244,7 +257,9 @@ public final class Certification {
         Path resultsFile = dir.resolve(RESULTS);
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             hooks.started(iut, dir, resultsFile);
-            List<CaseResult> done = new Runner(listener).run(iut, header, selected, results);
+            Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
+            List<CaseResult> done = new Runner(new ReferenceExportCheck(), listener, layout).run(iut, header, selected,
+                    results);
             hooks.casesFinished();
             List<DataCheckEntry> dataCheckList = List.of();
             if (request.probe() != null) {

@@ -131,14 +131,34 @@ public final class HtmlReport {
             out.append("<p>Standard Extensions realised: ")
                     .append(realised.isEmpty() ? "none" : Texts.html(String.join(", ", realised))).append("</p>\n");
         }
-        out.append("<table><tr><th>Language element</th><th>Feature</th><th>Verdict</th><th>Passed</th>")
-                .append("<th>Not passed</th></tr>\n");
+        boolean semantic = r.semantic() != null;
+        if (semantic) {
+            out.append("<p class=\"small\"><b>").append(Texts.html(Report.LANGUAGE_AXIS)).append("</b>; <b>")
+                    .append(Texts.html(Report.SEMANTIC_AXIS)).append("</b> (").append(Texts.html(r.semantic()
+                    .presentAs())).append(" layout).</p>\n");
+        }
+        out.append("<table><tr><th>Language element</th><th>Feature</th><th>")
+                .append(semantic ? "Language verdict" : "Verdict").append("</th><th>Passed</th>")
+                .append("<th>Not passed</th>")
+                .append(semantic ? "<th>Semantic verdict</th><th>Passed</th><th>Not passed</th><th>Not presentable</th>"
+                        : "")
+                .append("</tr>\n");
         for (Report.FeatureRow f : rows) {
             out.append("<tr><td>").append(Texts.html(f.element())).append("</td><td><b>").append(f.id())
                     .append("</b> ").append(Texts.html(f.description())).append("</td><td><span class=\"st ")
                     .append(f.status().word()).append("\">").append(f.status().label()).append("</span></td><td>")
                     .append(f.passed()).append(" / ").append(f.cases().size()).append("</td><td>")
-                    .append(links(f.notPassed())).append("</td></tr>\n");
+                    .append(links(f.notPassed())).append("</td>");
+            if (semantic && f.semantic() != null) {
+                Report.Semantic sem = f.semantic();
+                out.append("<td><span class=\"st ").append(sem.status().word()).append("\">")
+                        .append(sem.status().label()).append("</span></td><td>").append(sem.passed()).append(" / ")
+                        .append(sem.total()).append("</td><td>").append(links(sem.notPassed())).append("</td><td>")
+                        .append(sem.notPresentable()).append("</td>");
+            } else if (semantic) {
+                out.append("<td></td><td></td><td></td><td></td>");
+            }
+            out.append("</tr>\n");
         }
         out.append("</table>\n");
     }

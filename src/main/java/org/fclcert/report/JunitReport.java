@@ -6,6 +6,7 @@ import javax.xml.stream.XMLOutputFactory;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamWriter;
 import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.PresentedStatus;
 
 /**
  * {@code junit.xml} in the Surefire shape CI servers read: one testcase per case, classname
@@ -25,15 +26,21 @@ public final class JunitReport {
             x.writeCharacters("\n");
             x.writeStartElement("testsuite");
             x.writeAttribute("name", "fclcert certify " + safe(r.iut().name()));
-            x.writeAttribute("tests", String.valueOf(r.summary().cases()));
-            x.writeAttribute("failures", String.valueOf(r.summary().failed()));
-            x.writeAttribute("errors", String.valueOf(r.summary().errored()));
-            x.writeAttribute("skipped", String.valueOf(r.summary().skipped()));
+            Report.SemanticAxis sem = r.semantic() != null ? r.semantic() : new Report.SemanticAxis("", 0, 0, 0, 0, 0, 0);
+            x.writeAttribute("tests", String.valueOf(r.summary().cases() + sem.cases()));
+            x.writeAttribute("failures", String.valueOf(r.summary().failed() + sem.failed()));
+            x.writeAttribute("errors", String.valueOf(r.summary().errored() + sem.errored()));
+            x.writeAttribute("skipped", String.valueOf(r.summary().skipped() + sem.skipped() + sem.notPresentable()));
             x.writeAttribute("time", seconds(r.cases().stream().mapToLong(c -> millis(c)).sum()));
             x.writeAttribute("timestamp", r.generatedAt());
             properties(x, r);
             for (CaseResult c : r.cases()) {
                 testcase(x, c);
+            }
+            for (CaseResult c : r.cases()) {
+                if (c.presented() != null) {
+                    presentedTestcase(x, c);
+                }
             }
             x.writeEndElement();
             x.writeEndDocument();
@@ -77,6 +84,40 @@ public final class JunitReport {
             case SKIPPED -> {
                 x.writeEmptyElement("skipped");
                 x.writeAttribute("message", safe(c.message()));
+            }
+            case PASSED -> {
+            }
+        }
+        x.writeEndElement();
+    }
+
+    /** The semantic axis of a case: its own testcase, classname {@code fclcert.semantic.<layout>.<level>.<feature>}. */
+    private static void presentedTestcase(XMLStreamWriter x, CaseResult c) throws XMLStreamException {
+        CaseResult.Presented p = c.presented();
+        x.writeCharacters("\n  ");
+        x.writeStartElement("testcase");
+        x.writeAttribute("name", c.id() + " [semantic, " + safe(p.dialect()) + " layout]"
+                + (c.title() == null ? "" : ": " + safe(c.title())));
+        x.writeAttribute("classname", "fclcert.semantic." + safe(p.dialect()) + "." + safe(c.level()) + "."
+                + (c.tests().isEmpty() ? "other" : c.tests().get(0).toUpperCase(Locale.ROOT)));
+        x.writeAttribute("time", "0.000");
+        switch (p.status()) {
+            case FAILED, ERRORED -> {
+                x.writeStartElement(p.status() == PresentedStatus.FAILED ? "failure" : "error");
+                x.writeAttribute("message", safe(p.message()));
+                x.writeAttribute("type", p.status() == PresentedStatus.FAILED ? "wrong-result" : "implementation-fault");
+                StringBuilder detail = new StringBuilder();
+                java.util.Optional.ofNullable(p.evidence().mismatch()).ifPresent(m -> detail.append("expected: ").append(Texts.describe(m.expected()))
+                        .append("\nactual:   ").append(Texts.describe(m.actual())).append('\n'));
+                if (p.evidence().error() != null) {
+                    detail.append(p.evidence().error()).append('\n');
+                }
+                x.writeCharacters(safe(detail.toString()));
+                x.writeEndElement();
+            }
+            case SKIPPED, NOT_PRESENTABLE -> {
+                x.writeEmptyElement("skipped");
+                x.writeAttribute("message", safe(p.message()));
             }
             case PASSED -> {
             }
