@@ -24,6 +24,7 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.report.JunitReport;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -117,11 +118,18 @@ public class CertifyMojo extends AbstractMojo {
             throw new MojoExecutionException("fclcert:certify could not run: " + e.getMessage(), e);
         }
         Report r = outcome.report();
-        Report.Summary s = r.summary();
-        getLog().info(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
-                + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
-        getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant"));
-        getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
+        // Surefire's summary, counted as the JUnit file counts (unclaimed features' cases skipped)
+        JunitReport.Counts counts = JunitReport.counts(r);
+        String summary = counts.surefireLine() + " - " + r.iut().name() + " " + r.iut().version();
+        if (counts.failures() + counts.errors() > 0) {
+            getLog().warn(summary);
+        } else {
+            getLog().info(summary);
+        }
+        getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant ("
+                + r.basicLevel().reason() + ")"));
+        getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
+                + outcome.directory().resolve(ReportFiles.SUREFIRE));
     }
 
     private Corpus corpus() throws MojoExecutionException {

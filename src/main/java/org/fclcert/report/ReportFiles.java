@@ -13,6 +13,9 @@ public final class ReportFiles {
     public static final String HTML = "report.html";
     public static final String JUNIT = "junit.xml";
 
+    /** The same JUnit results under the name Surefire gives them, which CI servers and surefire-report find. */
+    public static final String SUREFIRE = "TEST-fclcert.xml";
+
     private ReportFiles() {
     }
 
@@ -24,7 +27,8 @@ public final class ReportFiles {
         return List.of(json,
                 write(dir.resolve(MARKDOWN), MarkdownReport.render(report)),
                 write(dir.resolve(HTML), HtmlReport.render(report)),
-                write(dir.resolve(JUNIT), JunitReport.render(report)));
+                write(dir.resolve(JUNIT), JunitReport.render(report)),
+                write(dir.resolve(SUREFIRE), JunitReport.render(report)));
     }
 
     private static Path write(Path file, String text) throws IOException {

@@ -87,11 +87,20 @@ class RenderersTest {
         NodeList testcases = suite.getElementsByTagName("testcase");
         assertEquals(9, testcases.getLength());
         Element first = (Element) testcases.item(0);
-        assertEquals("fclcert.basic.B-COGS", first.getAttribute("classname"));
+        assertEquals("fclcert.B-COGS", first.getAttribute("classname"));
         assertEquals(0, first.getChildNodes().getLength(), "a passed case has no child element");
-        assertEquals(3, suite.getElementsByTagName("failure").getLength());
+        // B-COGS-002 and E-NOT-001 (E-NOT is claimed) fail; E-COG-INT-001 failed too, but E-COG is not claimed
+        assertEquals(2, suite.getElementsByTagName("failure").getLength());
+        assertEquals("2", suite.getAttribute("failures"));
         assertEquals(2, suite.getElementsByTagName("error").getLength());
-        Element skipped = (Element) suite.getElementsByTagName("skipped").item(0);
+        assertEquals("2", suite.getAttribute("skipped"));
+        assertEquals(new JunitReport.Counts(9, 2, 2, 2), JunitReport.counts(r));
+        assertEquals("Tests run: 9, Failures: 2, Errors: 2, Skipped: 2", JunitReport.counts(r).surefireLine());
+        Element unclaimed = (Element) suite.getElementsByTagName("skipped").item(0);
+        assertEquals("fclcert.E-COG", ((Element) unclaimed.getParentNode()).getAttribute("classname"));
+        assertTrue(unclaimed.getAttribute("message").startsWith("not claimed: Fake <FLC> does not claim E-COG (failed: "),
+                unclaimed.getAttribute("message"));
+        Element skipped = (Element) suite.getElementsByTagName("skipped").item(1);
         assertEquals("not run: the run ended before this case", skipped.getAttribute("message"));
         Element last = (Element) testcases.item(8);
         assertTrue(last.getElementsByTagName("error").item(0).getTextContent().contains("\uFFFD[31mboom"));
@@ -100,7 +109,7 @@ class RenderersTest {
     @Test
     void allFourFilesAreWrittenAndTheJsonReadsBack(@TempDir Path dir) throws Exception {
         List<Path> files = ReportFiles.writeAll(REPORT, dir.resolve("reports/fake"));
-        assertEquals(Set.of("report.json", "report.md", "report.html", "junit.xml"),
+        assertEquals(Set.of("report.json", "report.md", "report.html", "junit.xml", "TEST-fclcert.xml"),
                 Set.copyOf(files.stream().map(p -> p.getFileName().toString()).toList()));
         Report back = JsonReport.read(files.get(0));
         assertEquals(REPORT.features(), back.features());
