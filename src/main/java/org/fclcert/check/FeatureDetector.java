@@ -49,7 +49,8 @@ import org.fclcert.model.VariableRef;
  * <li>AND: the declared algorithm at its declaration (B-AND-MIN, E-AND-PROD, E-AND-BDIF), used by the
  *     rules or not. When a block declares only OR, every AND in its rules needs the Table 3 pair of
  *     that OR, reported at the AND. OR likewise (E-OR-MAX, E-OR-ASUM, E-OR-BSUM).</li>
- * <li>ACT, ACCU, METHOD, DEFAULT, RANGE: the declared choice at its declaration.</li>
+ * <li>ACT, ACCU, METHOD, DEFAULT, RANGE: the declared choice at its declaration. A rule block without ACT
+ *     that concludes on an output's point term is activated by MIN: E-ACT-MIN at the rule block.</li>
  * <li>B-ONE-RULEBLOCK at the rule block of a function block with exactly one; with more, E-RULEBLOCKS
  *     at the second and every later block.</li>
  * <li>B-SUBCONDITIONS at every {@code v IS t}; E-NOT at every NOT and every {@code IS NOT}; E-PARENS at
@@ -112,6 +113,25 @@ public final class FeatureDetector {
                     use(Feature.E_RULEBLOCKS, ruleBlocks.get(i).location());
                 }
                 ruleBlock(ruleBlocks.get(i));
+                impliedActivation(block, ruleBlocks.get(i));
+            }
+        }
+
+        /**
+         * A block without ACT that concludes {@code v IS t} on an output with point (non-singleton) terms is
+         * activated by MIN (docs/semantics.md, point 3): E-ACT-MIN at the rule block, as the implied AND/OR pairs
+         * are counted where they are needed. Singleton outputs are activated alike by MIN and PROD (w·d).
+         */
+        private void impliedActivation(FunctionBlock block, RuleBlock rb) {
+            if (rb.activation().isPresent()) {
+                return;
+            }
+            boolean pointConclusion = rb.rules().stream().flatMap(r -> r.conclusion().stream())
+                    .filter(s -> !s.bareVariable())
+                    .anyMatch(s -> block.defuzzification(s.variable()).flatMap(d -> d.term(s.term().get()))
+                            .map(t -> !(t.function() instanceof MembershipFunction.Singleton)).orElse(false));
+            if (pointConclusion) {
+                use(Feature.E_ACT_MIN, rb.location());
             }
         }
 
@@ -143,6 +163,10 @@ public final class FeatureDetector {
 
         private void outputTerm(Term term) {
             if (namedShape(term)) {
+                return;
+            }
+            if (term.function() instanceof MembershipFunction.Computed) {
+                use(Feature.O_TAKAGI_SUGENO, term.location());
                 return;
             }
             if (term.function() instanceof MembershipFunction.Singleton s) {
@@ -238,6 +262,7 @@ public final class FeatureDetector {
             case MIN -> Feature.B_AND_MIN;
             case PROD -> Feature.E_AND_PROD;
             case BDIF -> Feature.E_AND_BDIF;
+            case EPROD, HPROD, DPROD, NMIN -> Feature.O_OTHER_NORM;
         };
     }
 
@@ -246,6 +271,7 @@ public final class FeatureDetector {
             case MAX -> Feature.E_OR_MAX;
             case ASUM -> Feature.E_OR_ASUM;
             case BSUM -> Feature.E_OR_BSUM;
+            case ESUM, HSUM, DSUM, NMAX -> Feature.O_OTHER_NORM;
         };
     }
 

@@ -29,7 +29,7 @@ final class CaseFileReader {
             "flags", "derivation", "block", "vectors", "expect", "error");
     private static final Pattern ID = Pattern.compile("[BEON]-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]{3}");
     private static final Pattern CODE = Pattern.compile("FCL-[SCWV][0-9]{3}");
-    private static final Pattern FLAG = Pattern.compile("stateful|interpretation:[0-9A-Za-z.]+");
+    private static final Pattern FLAG = Pattern.compile("stateful|interpretation:[0-9A-Za-z.]+|knife-edge:[1-9][0-9]*");
     private static final Pattern DECIMAL = Pattern.compile("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
     private static final YAMLMapper YAML = YAMLMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
@@ -204,7 +204,7 @@ final class CaseFileReader {
         for (JsonNode item : n) {
             String flag = item.asText();
             if (!FLAG.matcher(flag).matches()) {
-                problem(lineOf("flags"), "unknown flag '" + flag + "' (allowed: stateful, interpretation:<point>)");
+                problem(lineOf("flags"), "unknown flag '" + flag + "' (allowed: stateful, interpretation:<point>, knife-edge:<vector>)");
             } else {
                 result.add(flag);
             }

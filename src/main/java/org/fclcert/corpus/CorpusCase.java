@@ -17,7 +17,8 @@ import org.fclcert.model.Feature;
  * @param features      every feature the program uses, in the order the file lists them
  * @param tests         the features this case is evidence for (a subset of {@code features})
  * @param tolerance     how outputs are compared
- * @param flags         {@code stateful}, {@code interpretation:<point of docs/semantics.md>}
+ * @param flags         {@code stateful}, {@code interpretation:<point of docs/semantics.md>},
+ *                      {@code knife-edge:<vector>} (a vector not fair to judge: docs/corpus-format.md)
  * @param derivation    the hand derivation of the expected numbers, when given
  * @param block         the function block to instantiate, when the file has several (else the first)
  * @param vectors       ordered steps on one instance (positive cases; empty for negative ones)
@@ -50,6 +51,9 @@ public record CorpusCase(
     /** Prefix of the flag naming the {@code docs/semantics.md} point a case depends on. */
     public static final String INTERPRETATION = "interpretation:";
 
+    /** Prefix of the flag naming a vector (1-based) that is a knife edge, judged by no one (FairVectors). */
+    public static final String KNIFE_EDGE = "knife-edge:";
+
     public CorpusCase {
         Objects.requireNonNull(id, "id");
         features = List.copyOf(features);
@@ -61,6 +65,26 @@ public record CorpusCase(
     /** True when the steps must run in order on one instance (never replayed in reverse). */
     public boolean stateful() {
         return flags.contains(STATEFUL);
+    }
+
+    /** The 1-based vectors flagged {@code knife-edge:<n>}, ascending. */
+    public java.util.SortedSet<Integer> knifeEdges() {
+        return knifeEdges(flags);
+    }
+
+    /** The vectors named by {@code knife-edge:<n>} flags in a list of flags. */
+    public static java.util.SortedSet<Integer> knifeEdges(List<String> flags) {
+        java.util.SortedSet<Integer> steps = new java.util.TreeSet<>();
+        for (String f : flags) {
+            if (f.startsWith(KNIFE_EDGE)) {
+                try {
+                    steps.add(Integer.parseInt(f.substring(KNIFE_EDGE.length())));
+                } catch (NumberFormatException e) {
+                    // the reader admits only digits; anything else is not a knife-edge flag
+                }
+            }
+        }
+        return steps;
     }
 
     /** The semantics point this case's expectations depend on, when it is flagged {@code interpretation:N}. */

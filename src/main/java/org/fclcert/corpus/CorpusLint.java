@@ -11,6 +11,9 @@ import java.util.Set;
 import org.fclcert.check.Analysis;
 import org.fclcert.check.FeatureDetector;
 import org.fclcert.check.FeatureReport;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FairVectors;
+import org.fclcert.eval.LoadedProgram;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Feature;
@@ -133,6 +136,44 @@ public final class CorpusLint {
             if (!wrong.isEmpty()) {
                 int line = vectorsLine();
                 wrong.forEach(m -> finding(line, m));
+            }
+            fairness(program);
+        }
+
+        /**
+         * Every vector is fair to judge (FairVectors, docs/semantics.md point 10) unless the case flags it
+         * {@code knife-edge:<n>}; a flagged vector must really be one, and a case needs one fair vector.
+         */
+        private void fairness(Program program) {
+            int[] line = {0};   // the vectors' line, read once and only when there is a finding
+            java.util.function.IntSupplier at = () -> line[0] > 0 ? line[0] : (line[0] = vectorsLine());
+            LoadedProgram loaded = Evaluator.load(program);
+            OutputScales scales = OutputScales.of(blockOf(c, program));
+            FairVectors.Verdict verdict;
+            try {
+                verdict = FairVectors.judge(loaded, c.block().orElse(null),
+                        c.vectors().stream().map(Vector::in).toList(),
+                        (out, a, b) -> c.tolerance().compare(out, a, b, scales.width(out)).passed());
+            } catch (IllegalArgumentException e) {
+                finding(at.getAsInt(), "the vectors cannot be judged for fairness: " + e.getMessage());
+                return;
+            }
+            java.util.SortedSet<Integer> flagged = c.knifeEdges();
+            for (FairVectors.KnifeEdge k : verdict.knifeEdges()) {
+                if (!flagged.contains(k.step())) {
+                    finding(at.getAsInt(), "vector " + k.step() + " is a knife edge, not fair to judge: " + k
+                            + "; move the inputs off the tie, or flag the case knife-edge:" + k.step());
+                }
+            }
+            for (int step : flagged) {
+                if (step > c.vectors().size()) {
+                    finding(1, "flag knife-edge:" + step + " names a vector the case does not have");
+                } else if (verdict.fair(step)) {
+                    finding(1, "flag knife-edge:" + step + ", but vector " + step + " is fair to judge; remove the flag");
+                }
+            }
+            if (!c.vectors().isEmpty() && flagged.size() >= c.vectors().size()) {
+                finding(at.getAsInt(), "every vector is flagged knife-edge: a case needs at least one fair vector");
             }
         }
 

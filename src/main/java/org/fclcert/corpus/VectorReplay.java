@@ -5,12 +5,13 @@ import java.util.List;
 import java.util.Map;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.eval.LoadedProgram;
+import org.fclcert.eval.NumberReading;
 import org.fclcert.model.Program;
 
 /**
- * Runs a positive case's vectors on the reference evaluator: in order on one instance (every expected output
+ * Runs a positive case's vectors on the reference evaluator's exact judging path: in order on one instance (every expected output
  * must be reproduced within the case's tolerance), then, for a case not flagged {@code stateful}, in reverse
  * order on a fresh instance, as the harness does, so that a case whose steps depend on each other is caught
  * here rather than blamed on an implementation.
@@ -40,12 +41,12 @@ final class VectorReplay {
         return List.copyOf(replay.messages);
     }
 
-    private FunctionBlockInstance instance() throws EvaluationException {
-        return c.block().isPresent() ? loaded.newInstance(c.block().get()) : loaded.newInstance();
+    private ExactInstance instance() throws EvaluationException {
+        return loaded.newExactInstance(c.block().orElse(null), NumberReading.DECIMAL);
     }
 
     private boolean forward() throws EvaluationException {
-        FunctionBlockInstance fb = instance();
+        ExactInstance fb = instance();
         boolean ok = true;
         for (int i = 0; i < c.vectors().size(); i++) {
             for (Comparison cmp : step(fb, i)) {
@@ -59,7 +60,7 @@ final class VectorReplay {
     }
 
     private void reversed() throws EvaluationException {
-        FunctionBlockInstance fb = instance();
+        ExactInstance fb = instance();
         for (int i = c.vectors().size() - 1; i >= 0; i--) {
             for (Comparison cmp : step(fb, i)) {
                 if (!cmp.passed()) {
@@ -71,7 +72,7 @@ final class VectorReplay {
         }
     }
 
-    private List<Comparison> step(FunctionBlockInstance fb, int index) throws EvaluationException {
+    private List<Comparison> step(ExactInstance fb, int index) throws EvaluationException {
         Vector v = c.vectors().get(index);
         for (Map.Entry<String, Double> in : v.in().entrySet()) {
             try {

@@ -18,7 +18,14 @@ public enum EvaluationCode implements DiagnosticCode {
     OUT_OF_RANGE("FCL-V004", "5.2.1, IEC 61131-3 2.3.1",
             "a value that does not fit its variable's data type (e.g. 200 for a SINT output)"),
     /** A defuzzification whose result is not a finite number (overflow in the arithmetic). */
-    NO_RESULT("FCL-V005", "Table 1", "a defuzzification whose arithmetic overflowed (result not finite)");
+    NO_RESULT("FCL-V005", "Table 1", "a defuzzification whose arithmetic overflowed (result not finite)"),
+    /**
+     * An output without RANGE whose set is unbounded at run time: a fired term, its variable points re-sorted,
+     * is non-zero at its first or last point (the static case is FCL-C025; docs/semantics.md, point 5).
+     */
+    UNBOUNDED("FCL-V006", "5.2.2, 5.2.3",
+            "an output without RANGE whose fired term, its points given by variables, is non-zero at an outer point"
+                    + " (the set is unbounded)");
 
     private final String code;
     private final String clause;

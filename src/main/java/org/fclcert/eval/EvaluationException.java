@@ -16,6 +16,13 @@ public final class EvaluationException extends Exception {
         this.code = Objects.requireNonNull(code, "code");
     }
 
+    /** FCL-V006 for output {@code variable}, whose fired term keeps a positive degree beyond {@code at}. */
+    static EvaluationException unbounded(String variable, double at) {
+        return new EvaluationException(EvaluationCode.UNBOUNDED, "the set of output '" + variable + "' is unbounded: a"
+                + " fired term is non-zero at its outer point " + at + " (its points come from variables) and the output"
+                + " has no RANGE; declare a RANGE (5.2.3) or keep the variable points inside the term");
+    }
+
     /** The catalogue entry of this failure. */
     public EvaluationCode diagnosticCode() {
         return code;

@@ -38,13 +38,18 @@ public final class FunctionBlockInstance {
     /** Per output: the smooth-set integrator when its set is not piece-wise linear, else null. */
     private final SmoothSet[] smoothSets;
     private static final org.fclcert.model.Hedge[] HEDGES = org.fclcert.model.Hedge.values();
+    /**
+     * Per output: its value when this evaluation began, which DEFAULT NC keeps (point 6) even when a bare
+     * conclusion on the same variable wrote to it during the rule blocks.
+     */
+    private final double[] previous;
     /** Shapes with points from variables, re-read at each evaluation. */
     private final int[] variableShapes;
 
     FunctionBlockInstance(BlockPlan plan) {
         this.plan = plan;
         this.values = plan.initialValues.clone();
-        this.termDegrees = new double[plan.termShape.length];
+        this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         int shapes = plan.shapes.length;
         this.curX = new double[shapes][];
         this.curY = new double[shapes][];
@@ -65,6 +70,7 @@ public final class FunctionBlockInstance {
         this.contributionWeight = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
         this.singletonValue = new double[terms];
+        this.previous = new double[plan.outputs.length];
         this.smoothSets = new SmoothSet[plan.outputs.length];
         for (int i = 0; i < smoothSets.length; i++) {
             smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
@@ -131,13 +137,19 @@ public final class FunctionBlockInstance {
         if (trace != null) {
             trace.clear();
         }
+        for (int i = 0; i < plan.outputs.length; i++) {
+            previous[i] = values[plan.outputs[i].slot()];
+        }
         resolveVariableShapes();
         fuzzify(trace);
+        for (int t = plan.termShape.length; t < termDegrees.length; t++) {
+            termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
+        }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
         for (int i = 0; i < plan.outputs.length; i++) {
-            defuzzify(plan.outputs[i], smoothSets[i], trace);
+            defuzzify(plan.outputs[i], previous[i], smoothSets[i], trace);
         }
     }
 
@@ -198,14 +210,23 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
+            double ruleDegree = d;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
             for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                org.fclcert.model.Hedge[] hedged = sc.contribution() < 0 || plan.contributionHedges.length == 0 ? null
+                        : plan.contributionHedges[sc.contribution()];
+                d = hedged == null ? ruleDegree : org.fclcert.model.Hedge.applyAll(java.util.List.of(hedged), ruleDegree);
                 double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
                 if (sc.contribution() >= 0) {
                     contributionDegree[sc.contribution()] = d;
                     contributionWeight[sc.contribution()] = w;
+                    int chained = plan.chainedDegree.length == 0 ? -1 : plan.chainedDegree[sc.contribution()];
+                    if (chained >= 0) {
+                        termDegrees[chained] = accumulate(plan.chainedAccumulation[sc.contribution()],
+                                termDegrees[chained], w * d);
+                    }
                 } else {
                     bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w * d);
                 }
@@ -231,7 +252,7 @@ public final class FunctionBlockInstance {
             case MAX -> Math.max(a, b);
             case BSUM -> Math.min(1.0, a + b);
             case NSUM, SUM -> a + b;
-            case PROBOR -> a + b - a * b;
+            case PROBOR -> a == 1.0 || b == 1.0 ? 1.0 : a + b - a * b;
         };
     }
 
@@ -271,14 +292,22 @@ public final class FunctionBlockInstance {
             case MIN -> Math.min(x, y);
             case PROD -> x * y;
             case BDIF -> Math.max(0.0, x + y - 1.0);
+            case EPROD -> x * y / (2 - (x + y - x * y));
+            case HPROD -> x + y == 0 ? 0.0 : x * y / (x + y - x * y);
+            case DPROD -> Math.max(x, y) == 1.0 ? Math.min(x, y) : 0.0;
+            case NMIN -> x + y > 1.0 ? Math.min(x, y) : 0.0;
         };
     }
 
     static double or(OrAlgorithm o, double x, double y) {
         return switch (o) {
             case MAX -> Math.max(x, y);
-            case ASUM -> x + y - x * y;
+            case ASUM -> x == 1.0 || y == 1.0 ? 1.0 : x + y - x * y;   // exactly 1 when an operand is (NOT of it: 0)
             case BSUM -> Math.min(1.0, x + y);
+            case ESUM -> (x + y) / (1 + x * y);
+            case HSUM -> x * y == 1.0 ? 1.0 : (x + y - 2 * x * y) / (1 - x * y);
+            case DSUM -> Math.min(x, y) == 0.0 ? Math.max(x, y) : 1.0;
+            case NMAX -> x + y < 1.0 ? Math.max(x, y) : 1.0;
         };
     }
 
@@ -287,7 +316,13 @@ public final class FunctionBlockInstance {
     }
 
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
-    private void defuzzify(OutputPlan o, SmoothSet smooth, Trace trace) throws EvaluationException {
+    private void defuzzify(OutputPlan o, double previousValue, SmoothSet smooth, Trace trace)
+            throws EvaluationException {
+        for (int s : o.termShapes()) {
+            if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
+                plan.shapes[s].resolve(values, curX[s], curY[s]);
+            }
+        }
         double result = o.singletons() ? singletons(o, trace) : smooth != null ? smoothSet(o, smooth, trace)
                 : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
@@ -297,7 +332,7 @@ public final class FunctionBlockInstance {
         }
         if (Double.isNaN(result)) {
             outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
-            result = o.noChange() ? values[o.slot()] : o.defaultValue();
+            result = o.noChange() ? previousValue : o.defaultValue();
         }
         boolean nanDefault = Double.isNaN(result) && outcome == Trace.Outcome.DEFAULT;   // DEFAULT := nan (fuzzylite)
         if (!Double.isFinite(result) && !nanDefault) {
@@ -437,11 +472,18 @@ public final class FunctionBlockInstance {
     }
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
-    private double pointSet(OutputPlan o, Trace trace) {
+    private double pointSet(OutputPlan o, Trace trace) throws EvaluationException {
         collect(o, set.act);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
         if (!o.hasRange()) {
+            for (int j = 0; j < set.act.n; j++) {
+                int s = set.act.shape[j];
+                int n = plan.shapes[s].n;
+                if (curY[s][0] > 0 || curY[s][n - 1] > 0) {
+                    throw EvaluationException.unbounded(o.variable(), curY[s][0] > 0 ? curX[s][0] : curX[s][n - 1]);
+                }
+            }
             lo = Double.POSITIVE_INFINITY;
             hi = Double.NEGATIVE_INFINITY;
             for (int s : o.termShapes()) {

@@ -17,6 +17,11 @@ final class SetBuilder {
 
     private double[] bx = new double[16];
     private int nb;
+    /** MIN clip crossings: their u, and per contribution the range of its crossings in crossU. */
+    private double[] crossU = new double[16];
+    private int nc;
+    private int[] crossStart = new int[4];
+    private int[] crossEnd = new int[4];
     private double[] cl = new double[64];
     private double[] cv = new double[64];
     private double[] cr = new double[64];
@@ -55,6 +60,11 @@ final class SetBuilder {
 
     private void breakpoints(double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
         nb = 0;
+        nc = 0;
+        if (crossStart.length < act.n) {
+            crossStart = new int[2 * act.n];
+            crossEnd = new int[2 * act.n];
+        }
         addBreakpoint(lo);
         addBreakpoint(hi);
         for (int j = 0; j < act.n; j++) {
@@ -67,7 +77,9 @@ final class SetBuilder {
                 }
             }
             if (!act.prod[j]) {
-                clipCrossings(x, y, n, act.level[j], lo, hi);
+                clipCrossings(j, x, y, n, act.level[j], lo, hi);
+            } else {
+                crossStart[j] = crossEnd[j] = nc;
             }
         }
         sort(bx, nb);
@@ -97,17 +109,35 @@ final class SetBuilder {
         }
     }
 
-    private void clipCrossings(double[] x, double[] y, int n, double level, double lo, double hi) {
+    /**
+     * The places where a MIN clip level crosses a segment strictly, recorded per contribution (ascending, as
+     * the points are sorted) so that {@link #activatedValues} can use the level itself as the degree there: the
+     * interpolated degree at a rounded crossing may miss the level by more than the tie band (issue 12). A
+     * crossing that rounds onto a segment's end is kept one ulp inside, so the piece beyond stays a plateau.
+     */
+    private void clipCrossings(int j, double[] x, double[] y, int n, double level, double lo, double hi) {
+        crossStart[j] = nc;
         for (int i = 0; i + 1 < n; i++) {
             double y0 = y[i];
             double y1 = y[i + 1];
             if ((y0 - level) * (y1 - level) < 0 && x[i + 1] > x[i]) {
                 double u = x[i] + (x[i + 1] - x[i]) * (level - y0) / (y1 - y0);
-                if (u > lo && u < hi) {
+                if (!(u < x[i + 1])) {
+                    u = Math.nextDown(x[i + 1]);
+                }
+                if (!(u > x[i])) {
+                    u = Math.nextUp(x[i]);
+                }
+                if (u > lo && u < hi && u > x[i] && u < x[i + 1]) {
                     addBreakpoint(u);
+                    if (nc == crossU.length) {
+                        crossU = Arrays.copyOf(crossU, 2 * nc);
+                    }
+                    crossU[nc++] = u;
                 }
             }
         }
+        crossEnd[j] = nc;
     }
 
     private void addBreakpoint(double u) {
@@ -134,15 +164,21 @@ final class SetBuilder {
             int n = shapes[act.shape[j]].n;
             int base = j * nb;
             int p = 0;
+            int c = crossStart[j];
             for (int i = 0; i < nb; i++) {
                 double u = bx[i];
                 while (p < n && x[p] < u) {
                     p++;
                 }
+                while (c < crossEnd[j] && crossU[c] < u) {
+                    c++;
+                }
                 double l;
                 double v;
                 double r;
-                if (p < n && x[p] == u) {
+                if (c < crossEnd[j] && crossU[c] == u) {
+                    l = v = r = act.level[j]; // a clip crossing: the term's degree is the level, exactly
+                } else if (p < n && x[p] == u) {
                     int q = p;
                     v = y[p];
                     while (q + 1 < n && x[q + 1] == u) {

@@ -135,6 +135,11 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
         return verdict.message();
     }
 
+    /** The 1-based steps reported as not judged: the vectors the case flags {@code knife-edge:<n>}. */
+    public java.util.SortedSet<Integer> notJudgedSteps() {
+        return Flags.knifeEdges(plan.flags());
+    }
+
     public boolean interpretation() {
         return plan.interpretation();
     }

@@ -97,6 +97,14 @@ final class CaseRunner {
             Vector v = c.vectors().get(i);
             Map<String, Double> got = evaluate(iut, c, v, i + 1, r);
             actuals.add(got);
+            if (Flags.knifeEdges(c.flags()).contains(i + 1)) {
+                // a knife-edge vector (FairVectors) is not judged: its value rests on a tie rounding may break;
+                // its error is neither counted nor part of maxError
+                Optional<String> problem = StepComparison.compare(c, v.out(), got, new ResultBuilder(c));
+                r.note("step " + (i + 1) + " not judged (knife edge, flag knife-edge:" + (i + 1) + "): "
+                        + problem.map(p -> "differs: " + p).orElse("within tolerance"));
+                continue;
+            }
             Optional<String> problem = StepComparison.compare(c, v.out(), got, r);
             if (problem.isPresent() && wrong++ == 0) {
                 r.failed("step " + (i + 1) + " of " + c.vectors().size() + ": " + problem.get())
@@ -107,7 +115,9 @@ final class CaseRunner {
             r.note(wrong + " of " + c.vectors().size() + " steps gave a wrong result");
         }
         if (r.status() == CaseStatus.PASSED) {
-            r.passed(c.vectors().size() + " step(s) within tolerance");
+            int notJudged = Flags.knifeEdges(c.flags()).size();
+            r.passed((c.vectors().size() - notJudged) + " step(s) within tolerance"
+                    + (notJudged > 0 ? ", " + notJudged + " not judged (knife edge)" : ""));
         }
         return actuals;
     }

@@ -5,14 +5,15 @@ import org.fclcert.check.Analysis;
 import org.fclcert.corpus.Vector;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.eval.LoadedProgram;
+import org.fclcert.eval.NumberReading;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.StrictReader;
 
 /**
- * The export check done with fclcert's own strict reader (Open Level reading: a MoM program exports as MoM), checks and reference evaluator: the exported text
+ * The export check done with fclcert's own strict reader (Open Level reading: a MoM program exports as MoM), checks and reference evaluator (its exact judging path): the exported text
  * is compared with the case's expected outputs (which the reference evaluator reproduces for the original
  * program, as corpus lint guarantees), step by step on one instance, within the case's tolerance.
  */
@@ -24,7 +25,12 @@ public final class ReferenceExportCheck implements ExportCheck {
         if (analysis.program().isEmpty()) {
             String first = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
                     .map(Diagnostic::toString).orElse("no program");
-            return failed("the exported FCL does not read back: " + first);
+            // a library that exports its own dialect (jfuzzylite, jFuzzyLogic): say so, since that is the reason
+            org.fclcert.syntax.dialect.DialectReaders.Choice dialect = org.fclcert.syntax.dialect.DialectReaders.auto(exportedFcl);
+            String which = dialect.dialect() == org.fclcert.syntax.dialect.Dialect.STRICT ? ""
+                    : " (it is written in the " + dialect.dialect().displayName() + " dialect, not standard FCL: "
+                            + dialect.explanation() + ")";
+            return failed("the exported FCL does not read back: " + first + which);
         }
         try {
             return evaluateLikeOriginal(analysis.program().get(), c);
@@ -35,7 +41,7 @@ public final class ReferenceExportCheck implements ExportCheck {
 
     private static Verdict evaluateLikeOriginal(Program program, RunCase c) throws EvaluationException {
         LoadedProgram loaded = Evaluator.load(program);
-        FunctionBlockInstance fb = c.block().isPresent() ? loaded.newInstance(c.block().get()) : loaded.newInstance();
+        ExactInstance fb = loaded.newExactInstance(c.block().orElse(null), NumberReading.DECIMAL);
         for (int i = 0; i < c.vectors().size(); i++) {
             Vector v = c.vectors().get(i);
             for (Map.Entry<String, Double> in : v.in().entrySet()) {

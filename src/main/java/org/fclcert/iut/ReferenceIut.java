@@ -8,9 +8,10 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalInt;
 import org.fclcert.check.Analysis;
+import org.fclcert.check.AnalysisMemo;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.CompiledEvaluator;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.iut.IutException.Kind;
 import org.fclcert.model.Diagnostic;
@@ -18,7 +19,7 @@ import org.fclcert.model.Feature;
 import org.fclcert.model.Names;
 import org.fclcert.model.Program;
 import org.fclcert.model.Toolkit;
-import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.ReaderOptions;
 import org.fclcert.write.CanonicalWriter;
 
 /**
@@ -35,7 +36,8 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     private Program program;
     private LoadedProgram loaded;
-    private final Map<String, FunctionBlockInstance> instances = new HashMap<>();
+    /** Evaluated by the fast path (CompiledEvaluator): the reference's results, names resolved once per load. */
+    private final Map<String, CompiledEvaluator> instances = new HashMap<>();
 
     @Override
     public IutInfo hello() {
@@ -50,7 +52,8 @@ final class ReferenceIut implements ImplementationUnderTest {
         instances.clear();
         Analysis analysis;
         try {
-            analysis = Analysis.analyze(StrictReader.openLevel(), SOURCE_NAME, fcl);
+            // memoised: the prober has usually just judged this very text with the same reader
+            analysis = AnalysisMemo.analyze(ReaderOptions.OPEN_LEVEL, SOURCE_NAME, fcl);
         } catch (RuntimeException e) {
             throw crash("reading and checking", e);
         }
@@ -75,13 +78,18 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
-        FunctionBlockInstance instance = instance(block);
+        CompiledEvaluator instance = instance(block);
         try {
             for (Map.Entry<String, Double> input : inputs.entrySet()) {
-                instance.set(input.getKey(), input.getValue());
+                instance.setInput(instance.inputIndex(input.getKey()), input.getValue());
             }
             instance.evaluate();
-            return new LinkedHashMap<>(instance.outputs());
+            Map<String, Double> out = new LinkedHashMap<>();
+            List<String> names = instance.outputNames();
+            for (int i = 0; i < names.size(); i++) {
+                out.put(names.get(i), instance.output(i));
+            }
+            return out;
         } catch (EvaluationException e) {
             throw new IutException(Kind.EVAL_ERROR, e.toString());
         } catch (RuntimeException e) {
@@ -89,15 +97,15 @@ final class ReferenceIut implements ImplementationUnderTest {
         }
     }
 
-    private FunctionBlockInstance instance(String block) throws IutException {
+    private CompiledEvaluator instance(String block) throws IutException {
         if (loaded == null) {
             throw new IutException(Kind.EVAL_ERROR, "no program is loaded");
         }
         String name = block == null ? loaded.functionBlockNames().get(0) : block;
-        FunctionBlockInstance instance = instances.get(Names.key(name));
+        CompiledEvaluator instance = instances.get(Names.key(name));
         if (instance == null) {
             try {
-                instance = loaded.newInstance(name);
+                instance = loaded.newCompiledInstance(name);
             } catch (EvaluationException e) {
                 throw new IutException(Kind.EVAL_ERROR, e.toString());
             }

@@ -128,6 +128,7 @@ public class CertifyMojo extends AbstractMojo {
         }
         getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant ("
                 + r.basicLevel().reason() + ")"));
+        r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
                 + outcome.directory().resolve(ReportFiles.SUREFIRE));
     }

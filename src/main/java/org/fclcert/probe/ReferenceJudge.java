@@ -6,13 +6,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.fclcert.check.Analysis;
+import org.fclcert.check.AnalysisMemo;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.model.Diagnostic;
-import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.ReaderOptions;
 
-/** The expected outputs of a probe program: the reference evaluator run on the same sequence of vectors. */
+/** The expected outputs of a probe program: the reference evaluator's exact path run on the same sequence of vectors. */
 final class ReferenceJudge {
     private ReferenceJudge() {
     }
@@ -22,14 +23,16 @@ final class ReferenceJudge {
     }
 
     static Expected expected(ProbeProgram p) {
-        Analysis analysis = Analysis.analyze(new StrictReader(), "<probe>", p.expectedFrom());
+        // the reference implementation's reader and source name: when the implementation under test is the
+        // in-process reference, its load of the same text is served by this one read (AnalysisMemo)
+        Analysis analysis = AnalysisMemo.analyze(ReaderOptions.OPEN_LEVEL, "<iut>", p.expectedFrom());
         if (analysis.program().isEmpty()) {
             String why = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
                     .map(d -> d.code() + ": " + d.message()).orElse("the program could not be read");
             return new Expected(Optional.empty(), why);
         }
         try {
-            FunctionBlockInstance instance = Evaluator.load(analysis.program().get()).newInstance();
+            ExactInstance instance = Evaluator.load(analysis.program().get()).newExactInstance();
             List<Map<String, Double>> out = new ArrayList<>();
             for (Map<String, Double> v : p.vectors()) {
                 for (Map.Entry<String, Double> in : v.entrySet()) {

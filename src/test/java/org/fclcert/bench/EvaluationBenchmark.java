@@ -11,6 +11,8 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.concurrent.TimeUnit;
 import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.ExactInstance;
 import org.fclcert.eval.Fcl;
 import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.model.AccumulationMethod;
@@ -52,6 +54,9 @@ public class EvaluationBenchmark {
 
     private FunctionBlockInstance valve;
     private FunctionBlockInstance cog;
+    /** The same two programs on the exact judging path (BigInteger rationals). */
+    private ExactInstance valveExact;
+    private ExactInstance cogExact;
     private int i;
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
     private long calls;
@@ -72,7 +77,7 @@ public class EvaluationBenchmark {
 
     @Setup
     public void setUp() throws EvaluationException {
-        valve = Fcl.block("Fuzzy_FB").input("temp").input("pressure").output("valve")
+        Fcl.Block valveBlock = Fcl.block("Fuzzy_FB").input("temp").input("pressure").output("valve")
                 .fuzzify("temp", Fcl.term("cold", pts(3, 1, 27, 0)), Fcl.term("hot", pts(3, 0, 27, 1)))
                 .fuzzify("pressure", Fcl.term("low", pts(55, 1, 95, 0)), Fcl.term("high", pts(55, 0, 95, 1)))
                 .defuzzify(Fcl.defuzzify("valve", DefuzzificationMethod.COGS)
@@ -82,9 +87,10 @@ public class EvaluationBenchmark {
                         .rule(and(is("temp", "cold"), is("pressure", "low")), then("valve", "inlet"))
                         .rule(and(is("temp", "cold"), is("pressure", "high")), then("valve", "closed", num(0.8)))
                         .rule(and(is("temp", "hot"), is("pressure", "low")), then("valve", "closed"))
-                        .rule(and(is("temp", "hot"), is("pressure", "high")), then("valve", "drainage")))
-                .instance();
-        cog = Fcl.block("cog3").input("x").output("y")
+                        .rule(and(is("temp", "hot"), is("pressure", "high")), then("valve", "drainage")));
+        valve = valveBlock.instance();
+        valveExact = Evaluator.load(valveBlock.program()).newExactInstance();
+        Fcl.Block cogBlock = Fcl.block("cog3").input("x").output("y")
                 .fuzzify("x", Fcl.term("low", pts(0, 0, 2, 1, 5, 0)), Fcl.term("mid", pts(2, 0, 5, 1, 8, 0)),
                         Fcl.term("high", pts(5, 0, 8, 1, 10, 0)))
                 .defuzzify(Fcl.defuzzify("y", DefuzzificationMethod.COG).range(0, 100)
@@ -93,12 +99,21 @@ public class EvaluationBenchmark {
                 .rules(Fcl.ruleBlock("r").and(AndAlgorithm.MIN).act(ActivationMethod.MIN).accu(AccumulationMethod.MAX)
                         .rule(is("x", "low"), then("y", "small"))
                         .rule(is("x", "mid"), then("y", "medium"))
-                        .rule(is("x", "high"), then("y", "large")))
-                .instance();
+                        .rule(is("x", "high"), then("y", "large")));
+        cog = cogBlock.instance();
+        cogExact = Evaluator.load(cogBlock.program()).newExactInstance();
         // the measured code computes exact results: 9500/127 (5.3 at temp 5, pressure 60) and, at
         // x = 5 where only "mid" fires, the CoG of the symmetric triangle "medium", 50
         expect(9500.0 / 127, valve, "valve", new String[] {"temp", "pressure"}, 5, 60);
         expect(50.0, cog, "y", new String[] {"x"}, 5);
+        valveExact.set("temp", 5);
+        valveExact.set("pressure", 60);
+        valveExact.evaluate();
+        cogExact.set("x", 5);
+        cogExact.evaluate();
+        if (valveExact.get("valve") != 9500.0 / 127 || cogExact.get("y") != 50.0) {
+            throw new IllegalStateException("exact path: " + valveExact.get("valve") + ", " + cogExact.get("y"));
+        }
     }
 
     private static void expect(double expected, FunctionBlockInstance fb, String output, String[] inputs,
@@ -120,6 +135,24 @@ public class EvaluationBenchmark {
         valve.set("pressure", in[1]);
         valve.evaluate();
         return valve.get("valve");
+    }
+
+    @Benchmark
+    public double valveSingletonsCogsExact() throws EvaluationException {
+        calls++;
+        double[] in = VALVE_INPUTS[i++ % VALVE_INPUTS.length];
+        valveExact.set("temp", in[0]);
+        valveExact.set("pressure", in[1]);
+        valveExact.evaluate();
+        return valveExact.get("valve");
+    }
+
+    @Benchmark
+    public double threeRuleTriangularCogExact() throws EvaluationException {
+        calls++;
+        cogExact.set("x", COG_INPUTS[i++ % COG_INPUTS.length]);
+        cogExact.evaluate();
+        return cogExact.get("y");
     }
 
     @Benchmark

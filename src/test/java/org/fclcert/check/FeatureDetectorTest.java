@@ -79,8 +79,8 @@ class FeatureDetectorTest {
                 "E-NOT@30", "E-SUBCONCLUSIONS@30",
                 // rule 2: IS NOT, one subconclusion, constant weight
                 "B-SUBCONDITIONS@31", "E-NOT@31", "B-ONE-SUBCONCLUSION@31", "E-WITH-CONST@31",
-                // second rule block: only OR: ASUM declared, so its AND is PROD
-                "E-RULEBLOCKS@33", "E-OR-ASUM@34", "E-ACCU-BSUM@35",
+                // second rule block: only OR: ASUM declared, so its AND is PROD; no ACT on point terms: MIN
+                "E-RULEBLOCKS@33", "E-ACT-MIN@33", "E-OR-ASUM@34", "E-ACCU-BSUM@35",
                 "E-COND-VARIABLE@36", "B-SUBCONDITIONS@36", "E-AND-PROD@36",
                 "E-SUBCONCLUSIONS@36", "E-WITH-VAR@36"), uses(report));
         assertEquals(ConformanceLevel.EXTENSION, report.level());
@@ -134,7 +134,7 @@ class FeatureDetectorTest {
                 "B-SUBCONDITIONS@31", "B-SUBCONDITIONS@31", "B-ONE-SUBCONCLUSION@31",
                 "B-SUBCONDITIONS@32", "B-SUBCONDITIONS@32", "B-ONE-SUBCONCLUSION@32",
                 // second block declares only OR: MAX, so its AND is MIN (Basic)
-                "E-RULEBLOCKS@34", "E-OR-MAX@35", "B-ACCU-MAX@36",
+                "E-RULEBLOCKS@34", "E-ACT-MIN@34", "E-OR-MAX@35", "B-ACCU-MAX@36",   // no ACT on point terms: MIN
                 "B-SUBCONDITIONS@37", "B-SUBCONDITIONS@37", "B-AND-MIN@37", "B-ONE-SUBCONCLUSION@37"), uses(report));
         assertEquals(ConformanceLevel.OPEN, report.level());
     }
@@ -145,5 +145,34 @@ class FeatureDetectorTest {
         for (int i = 1; i < report.uses().size(); i++) {
             assertTrue(report.uses().get(i - 1).location().compareTo(report.uses().get(i).location()) <= 0);
         }
+    }
+
+    /*
+     * Without ACT a block concluding on point terms is activated by MIN (docs/semantics.md, point 3): E-ACT-MIN at
+     * the rule block (line 9), as implied AND/OR are counted. On singleton terms MIN and PROD agree: no feature.
+     */
+    @Test
+    void impliedActivationByMinIsCountedAtTheRuleBlock() {
+        String points = """
+                FUNCTION_BLOCK f
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM up := (0, 0) (1, 1); END_FUZZIFY
+                DEFUZZIFY y
+                  TERM t := (0, 0) (5, 1) (10, 0);
+                  METHOD : CoG; DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK r
+                  AND : MIN; ACCU : MAX;
+                  RULE 1 : IF x IS up THEN y IS t;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        assertTrue(uses(detector.detect(valid("p.fcl", points))).contains("E-ACT-MIN@9"));
+        String singletons = points.replace("TERM t := (0, 0) (5, 1) (10, 0);", "TERM t := 5;")
+                .replace("METHOD : CoG;", "METHOD : CoGS;");
+        assertTrue(uses(detector.detect(valid("s.fcl", singletons))).stream().noneMatch(u -> u.startsWith("E-ACT")));
+        assertTrue(uses(detector.detect(valid("a.fcl", points.replace("AND : MIN;", "AND : MIN; ACT : PROD;"))))
+                .stream().noneMatch(u -> u.startsWith("E-ACT-MIN")));
     }
 }

@@ -199,4 +199,55 @@ class CorpusLintTest {
         assertTrue(gaps.stream().anyMatch(g -> g.startsWith("O-VAR-DEGREE") && g.endsWith("at least 1 needed")),
                 gaps.toString());
     }
+
+    /*
+     * LM over singletons lo = 0, hi = 100 with degrees 1 − a and a. a = 0.5 ties them: LM = 0, but a one ulp
+     * higher gives hi the larger degree and LM = 100: vector 1 is a knife edge. a = 0.8: hi alone, LM = 100, fair.
+     */
+    private static final String KNIFE = """
+            (*---
+            id: E-LM-009
+            title: tie
+            level: extension
+            features: [B-FB]
+            tests: [B-FB]
+            tolerance: exact
+            flags: %s
+            vectors:
+              - in: {a: 0.5}
+                out: {y: 0.0}
+              - in: {a: 0.8}
+                out: {y: 100.0}
+            ---*)
+            FUNCTION_BLOCK tie
+            VAR_INPUT a : REAL; END_VAR
+            VAR_OUTPUT y : REAL; END_VAR
+            FUZZIFY a TERM on := (0, 0) (1, 1); END_FUZZIFY
+            DEFUZZIFY y TERM lo := 0; TERM hi := 100; METHOD : LM; DEFAULT := -1; END_DEFUZZIFY
+            RULEBLOCK r AND : MIN; ACCU : MAX;
+                RULE 1 : IF a IS on THEN y IS hi;
+                RULE 2 : IF a IS NOT on THEN y IS lo;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    private List<String> fairnessFindings() {
+        return findings().stream().filter(f -> f.contains("knife")).toList();
+    }
+
+    @Test
+    void aKnifeEdgeVectorMustBeFlaggedAndAFlaggedVectorMustBeOne() throws IOException {
+        write("extension/E-LM-009.fcl", KNIFE.formatted("[]"));
+        List<String> f = fairnessFindings();
+        assertEquals(1, f.size(), f.toString());
+        assertTrue(f.get(0).contains("vector 1 is a knife edge, not fair to judge: step 1: y = 0.0, but 100.0 with input a"
+                + " one ulp up") && f.get(0).contains("flag the case knife-edge:1"), f.get(0));
+        write("extension/E-LM-009.fcl", KNIFE.formatted("[knife-edge:1]"));
+        assertEquals(List.of(), fairnessFindings());
+        write("extension/E-LM-009.fcl", KNIFE.formatted("[knife-edge:1, knife-edge:2]"));
+        f = fairnessFindings();
+        assertEquals(2, f.size(), f.toString());
+        assertTrue(f.get(0).contains("flag knife-edge:2, but vector 2 is fair to judge; remove the flag"), f.toString());
+        assertTrue(f.get(1).contains("every vector is flagged knife-edge"), f.toString());
+    }
 }

@@ -63,6 +63,32 @@ class RunnerTest {
         assertNull(r.setup().program(), "passed cases do not carry their program");
     }
 
+    /*
+     * Step 2 flagged knife-edge:2: the implementation's 6.5 where 6 is expected is reported as not judged, the
+     * case passes on step 1, and the error of the unjudged step is not measured. Step 1 flagged instead: the
+     * wrong step 2 still fails the case.
+     */
+    @Test
+    void aKnifeEdgeVectorIsNotJudged() throws IOException {
+        ScriptedIut iut = ScriptedIut.loading((call, in) -> Map.of("y", in.get("x") == 5.0 ? 6.5 : 2.0));
+        RunCase flagged = positive("E-LM-001", ConformanceLevel.EXTENSION, List.of("E-LM"), List.of("knife-edge:2"),
+                PLUS_ONE.vectors());
+        CaseResult r = runOne(iut, flagged);
+        assertEquals(CaseStatus.PASSED, r.status(), r.message());
+        assertEquals("1 step(s) within tolerance, 1 not judged (knife edge)", r.message());
+        assertEquals(0.0, r.evidence().maxError());
+        assertEquals(java.util.Set.of(2), r.notJudgedSteps());
+        List<String> notes = r.verdict().notes();
+        assertTrue(notes.get(0).startsWith("step 2 not judged (knife edge, flag knife-edge:2): differs: y = 6.5"),
+                notes.toString());
+        RunCase other = positive("E-LM-001", ConformanceLevel.EXTENSION, List.of("E-LM"), List.of("knife-edge:1"),
+                PLUS_ONE.vectors());
+        CaseResult failed = runOne(ScriptedIut.loading((call, in) -> Map.of("y", in.get("x") == 5.0 ? 6.5 : 2.0)),
+                other);
+        assertEquals(CaseStatus.FAILED, failed.status());
+        assertEquals(2, failed.evidence().step().number());
+    }
+
     @Test
     void statefulCasesAreNotRerun() throws IOException {
         ScriptedIut iut = plusOne();

@@ -1,0 +1,272 @@
+package org.fclcert.bench;
+
+import com.fuzzylite.Engine;
+import com.fuzzylite.imex.FclImporter;
+import com.fuzzylite.variable.InputVariable;
+import com.fuzzylite.variable.OutputVariable;
+import java.lang.invoke.MethodHandle;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.MethodType;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.function.ToDoubleFunction;
+import org.fclcert.check.Analysis;
+import org.fclcert.eval.CompiledEvaluator;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.StrictReader;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * fclcert side by side with jfuzzylite 6.0.1 (and, for reading, jFuzzyLogic) in one JMH run, on the same
+ * programs ({@link PeerPrograms}, each in the layout its reader needs) and the same cycle of operating
+ * points. An evaluation is: set every input, evaluate, read the output, with names resolved once on both
+ * sides (fclcert's {@link CompiledEvaluator} indices, jfuzzylite's variable objects). Reading is the
+ * whole front end: fclcert's strict reader and all checks (every diagnostic), jfuzzylite's FclImporter
+ * building an Engine, jFuzzyLogic's FIS.createFromString.
+ *
+ * <p>At set-up each side's outputs over the cycle are compared with {@link ExactValues} and the largest
+ * error is printed ({@code exactness:} lines). Every iteration also prints operations per CPU-second of
+ * the benchmark thread ({@code cpu-normalised:}), the stable figure on a shared machine. Run as
+ * documented in docs/performance.md; not part of the test suite.
+ */
+@BenchmarkMode(Mode.Throughput)
+@OutputTimeUnit(TimeUnit.SECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 5, time = 1)
+@Fork(value = 1, jvmArgsAppend = "-Xmx1g")
+@State(Scope.Thread)
+public class PeerComparisonBenchmark {
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+
+    private Side valveRef;
+    private Side valvePeer;
+    private Side cog3Ref;
+    private Side cog3Peer;
+    private Side rulesRef;
+    private Side rulesPeer;
+    private String valveText;
+    private String valvePeerText;
+    private String rulesText;
+    private String rulesPeerText;
+    private int i;
+    private long calls;
+    private long cpuStart;
+
+    /** One engine with its inputs resolved, evaluated over one cycle of operating points. */
+    interface Side {
+        double step(double[] in) throws Exception;
+    }
+
+    static Side reference(String text) throws EvaluationException {
+        Analysis a = Analysis.analyze(StrictReader.openLevel(), "<bench>", text);
+        Program p = a.program().orElseThrow(() -> new IllegalStateException("fclcert rejects: " + a.diagnostics()));
+        CompiledEvaluator fb = Evaluator.load(p).newCompiledInstance();
+        if (!fb.isCompiled()) {
+            throw new IllegalStateException("the benchmark program is not on the flat plan");
+        }
+        int[] in = new int[fb.inputNames().size()];
+        for (int k = 0; k < in.length; k++) {
+            in[k] = fb.inputIndex(fb.inputNames().get(k));
+        }
+        int out = fb.outputIndex(fb.outputNames().get(0));
+        return v -> {
+            for (int k = 0; k < in.length; k++) {
+                fb.setInput(in[k], v[k]);
+            }
+            fb.evaluate();
+            return fb.output(out);
+        };
+    }
+
+    static Side jfuzzylite(String text, String... inputs) {
+        Engine engine = new FclImporter().fromString(text);
+        InputVariable[] in = new InputVariable[inputs.length];
+        for (int k = 0; k < inputs.length; k++) {
+            in[k] = engine.getInputVariable(inputs[k]);
+        }
+        OutputVariable out = engine.getOutputVariable(0);
+        return v -> {
+            for (int k = 0; k < in.length; k++) {
+                in[k].setValue(v[k]);
+            }
+            engine.process();
+            return out.getValue();
+        };
+    }
+
+    @Setup
+    public void setUp() throws Exception {
+        valveText = PeerPrograms.valveStandard();
+        valvePeerText = PeerPrograms.valveFuzzylite();
+        rulesText = PeerPrograms.rules125(false);
+        rulesPeerText = PeerPrograms.rules125(true);
+        valveRef = reference(valveText);
+        valvePeer = jfuzzylite(valvePeerText, "temp", "pressure");
+        cog3Ref = reference(PeerPrograms.cog3Standard());
+        cog3Peer = jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
+        rulesRef = reference(rulesText);
+        rulesPeer = jfuzzylite(rulesPeerText, PeerPrograms.INPUTS125);
+        exactness("valve", PeerPrograms.VALVE_INPUTS, v -> ExactValues.valve(v[0], v[1]), valveRef, valvePeer);
+        exactness("cog3", PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]), cog3Ref, cog3Peer);
+        exactness("rules125", PeerPrograms.RULES125_INPUTS, v -> ExactValues.rules125(v[0], v[1], v[2]), rulesRef,
+                rulesPeer);
+    }
+
+    /** Prints, per side, the largest |output − exact| over the cycle (and in units of the last place). */
+    static String exactness(String program, double[][] inputs, ToDoubleFunction<double[]> exact, Side ref, Side peer)
+            throws Exception {
+        StringBuilder s = new StringBuilder("exactness: " + program);
+        String[] names = {"fclcert", "jfuzzylite"};
+        Side[] sides = {ref, peer};
+        for (int k = 0; k < 2; k++) {
+            double worst = 0;
+            double worstUlps = 0;
+            String where = "";
+            for (double[] in : inputs) {
+                double want = exact.applyAsDouble(in);
+                double got = sides[k].step(in);
+                double err = Math.abs(got - want);
+                if (!(err <= worst)) {
+                    worst = err;
+                    worstUlps = err / Math.ulp(want);
+                    where = java.util.Arrays.toString(in) + " gives " + got + " for " + want;
+                }
+            }
+            s.append(String.format(Locale.ROOT, "; %s max |error| %.3g (%.1f ulp)%s", names[k], worst, worstUlps,
+                    worst > 0 ? " at " + where : ""));
+        }
+        System.out.println(s);
+        return s.toString();
+    }
+
+    @Setup(Level.Iteration)
+    public void startIteration() {
+        calls = 0;
+        cpuStart = THREADS.getCurrentThreadCpuTime();
+    }
+
+    @TearDown(Level.Iteration)
+    public void endIteration() {
+        double seconds = (THREADS.getCurrentThreadCpuTime() - cpuStart) / 1e9;
+        System.out.printf(Locale.ROOT, "cpu-normalised: %.0f ops per CPU-second%n", calls / seconds);
+    }
+
+    private double[] next(double[][] cycle) {
+        calls++;
+        if (++i >= cycle.length) {
+            i = 0;   // no division: a modulo would cost as much as a small evaluation
+        }
+        return cycle[i];
+    }
+
+    // ---------------------------------------------------------------- evaluation
+
+    @Benchmark
+    public double referenceValve() throws Exception {
+        return valveRef.step(next(PeerPrograms.VALVE_INPUTS));
+    }
+
+    @Benchmark
+    public double jfuzzyliteValve() throws Exception {
+        return valvePeer.step(next(PeerPrograms.VALVE_INPUTS));
+    }
+
+    @Benchmark
+    public double referenceCog3() throws Exception {
+        return cog3Ref.step(next(PeerPrograms.COG3_INPUTS));
+    }
+
+    @Benchmark
+    public double jfuzzyliteCog3() throws Exception {
+        return cog3Peer.step(next(PeerPrograms.COG3_INPUTS));
+    }
+
+    @Benchmark
+    public double referenceRules125() throws Exception {
+        return rulesRef.step(next(PeerPrograms.RULES125_INPUTS));
+    }
+
+    @Benchmark
+    public double jfuzzyliteRules125() throws Exception {
+        return rulesPeer.step(next(PeerPrograms.RULES125_INPUTS));
+    }
+
+    // ---------------------------------------------------------------- reading
+
+    @Benchmark
+    public Object referenceParseValve() {
+        calls++;
+        return Analysis.analyze(StrictReader.openLevel(), "<bench>", valveText);
+    }
+
+    @Benchmark
+    public Object jfuzzyliteParseValve() {
+        calls++;
+        return new FclImporter().fromString(valvePeerText);
+    }
+
+    @Benchmark
+    public Object referenceParseRules125() {
+        calls++;
+        return Analysis.analyze(StrictReader.openLevel(), "<bench>", rulesText);
+    }
+
+    @Benchmark
+    public Object jfuzzyliteParseRules125() {
+        calls++;
+        return new FclImporter().fromString(rulesPeerText);
+    }
+
+    @Benchmark
+    public Object jfuzzylogicParseValve(JFuzzyLogic j) throws Throwable {
+        calls++;
+        return j.create.invoke(valveText, false);
+    }
+
+    @Benchmark
+    public Object jfuzzylogicParseRules125(JFuzzyLogic j) throws Throwable {
+        calls++;
+        return j.create.invoke(rulesText, false);
+    }
+
+    /**
+     * jFuzzyLogic's reader, present only when its jar is on the class path (the pom's jfuzzylogic profiles);
+     * without it these benchmarks fail at set-up with that reason and the others run.
+     */
+    @State(Scope.Benchmark)
+    public static class JFuzzyLogic {
+        MethodHandle create;
+
+        @Setup
+        public void find() throws Throwable {
+            Class<?> fis;
+            try {
+                fis = Class.forName("net.sourceforge.jFuzzyLogic.FIS");
+            } catch (ClassNotFoundException e) {
+                throw new IllegalStateException("jFuzzyLogic is not on the class path (its jar is not in "
+                        + "../shared/peers/jfuzzylogic or /work/shared/peers/jfuzzylogic)", e);
+            }
+            create = MethodHandles.publicLookup().findStatic(fis, "createFromString",
+                    MethodType.methodType(fis, String.class, boolean.class));
+            Object system = create.invoke(PeerPrograms.valveStandard(), false);
+            if (system == null) {
+                throw new IllegalStateException("jFuzzyLogic does not read the valve program");
+            }
+        }
+    }
+}
