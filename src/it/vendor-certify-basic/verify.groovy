@@ -1,6 +1,6 @@
 import groovy.json.JsonSlurper
 def dir = new File(basedir, 'target/fclcert-reports')
-['report.json', 'report.md', 'report.html', 'junit.xml', 'TEST-fclcert.xml', 'results.jsonl'].each {
+['report.json', 'report.md', 'report.html', 'junit.xml', 'results.jsonl'].each {
     assert new File(dir, it).isFile() : "missing $it"
 }
 def report = new JsonSlurper().parse(new File(dir, 'report.json'))
@@ -13,12 +13,18 @@ def log = new File(basedir, 'build.log').text
 assert log.contains('meets failOn=basic')
 assert log.contains('BUILD SUCCESS')
 // JUnit agrees with verify: the NSUM cases the vendor does not claim are skipped, not failed
-def suite = new XmlSlurper().parse(new File(dir, 'TEST-fclcert.xml'))
-assert suite.@tests.toInteger() == report.summary.cases
-assert suite.@failures.toInteger() == 0 : "unclaimed features are skipped: ${suite.@failures}"
-def nsumCases = suite.testcase.findAll { it.@classname == 'fclcert.E-ACCU-NSUM' }
+def suite = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder()
+        .parse(new File(basedir, 'target/surefire-reports/TEST-fclcert.xml')).documentElement
+assert suite.getAttribute('tests').toInteger() == report.summary.cases
+assert suite.getAttribute('failures') == '0' : "unclaimed features are skipped: ${suite.getAttribute('failures')}"
+def testcases = suite.getElementsByTagName('testcase')
+def nsumCases = (0..<testcases.length).collect { testcases.item(it) }
+        .findAll { it.getAttribute('classname') == 'fclcert.E-ACCU-NSUM' }
 assert !nsumCases.isEmpty()
-assert nsumCases.every { it.skipped.size() == 1 && it.skipped.@message.text().startsWith('not claimed: Vendor FCL') }
+assert nsumCases.every {
+    def skipped = it.getElementsByTagName('skipped')
+    skipped.length == 1 && skipped.item(0).getAttribute('message').startsWith('not claimed: Vendor FCL')
+}
 // the surefire-report plugin read the file unrenamed: its page counts every case and lists the feature classes
 def html = new File(basedir, 'target/reports/surefire.html')
 assert html.isFile() : 'surefire-report wrote no page'

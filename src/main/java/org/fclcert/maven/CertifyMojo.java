@@ -51,6 +51,13 @@ public class CertifyMojo extends AbstractMojo {
     @Parameter(property = "fclcert.reportsDirectory", defaultValue = "${project.build.directory}/fclcert-reports")
     private File reportsDirectory;
 
+    /**
+     * Where the JUnit results also go as {@code TEST-fclcert.xml}, one testcase per case, class per feature row:
+     * Surefire's directory by default, so that CI servers and the surefire-report plugin find them as they are.
+     */
+    @Parameter(property = "fclcert.junitDirectory", defaultValue = "${project.build.directory}/surefire-reports")
+    private File junitDirectory;
+
     /** Only cases of these levels (basic, extension, open); all when empty. */
     @Parameter(property = "fclcert.levels")
     private List<String> levels;
@@ -118,6 +125,13 @@ public class CertifyMojo extends AbstractMojo {
             throw new MojoExecutionException("fclcert:certify could not run: " + e.getMessage(), e);
         }
         Report r = outcome.report();
+        Path surefire = junitDirectory.toPath().resolve(ReportFiles.SUREFIRE);
+        try {
+            java.nio.file.Files.createDirectories(surefire.getParent());
+            java.nio.file.Files.writeString(surefire, JunitReport.render(r));
+        } catch (java.io.IOException e) {
+            throw new MojoExecutionException("cannot write " + surefire + ": " + e.getMessage(), e);
+        }
         // Surefire's summary, counted as the JUnit file counts (unclaimed features' cases skipped)
         JunitReport.Counts counts = JunitReport.counts(r);
         String summary = counts.surefireLine() + " - " + r.iut().name() + " " + r.iut().version();
@@ -130,7 +144,7 @@ public class CertifyMojo extends AbstractMojo {
                 + r.basicLevel().reason() + ")"));
         r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
-                + outcome.directory().resolve(ReportFiles.SUREFIRE));
+                + surefire);
     }
 
     private Corpus corpus() throws MojoExecutionException {
