@@ -94,6 +94,10 @@ class CertifyCommandTest {
                         + CORPUS + " --case B-FB-002`"));
         assertEquals(5, Files.readAllLines(dir.resolve("results.jsonl")).size(), "a header and four cases");
         assertTrue(out.toString().contains("fake 1.0: 4 cases, 2 passed, 1 failed, 1 errored, 0 skipped"), out::toString);
+        String md = Files.readString(dir.resolve("report.md"));
+        assertTrue(md.contains("\n  - step 1, inputs: a = 2.0, b = 3.0\n"), md);
+        assertTrue(md.contains("\n  - its last stderr line: `fatal: fifth evaluation, giving up`\n"), md);
+        assertTrue(md.contains(" --case B-FB-002` (transcript: `requests/B-FB-002.requests.jsonl`)"), md);
         String stderr = err.toString();
         assertTrue(stderr.contains("ERRORED B-FB-002 (Process-path case 2"), stderr);
         assertTrue(stderr.contains(": step 1 of 2: the implementation crashed"), stderr);

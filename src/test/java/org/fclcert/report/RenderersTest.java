@@ -40,10 +40,12 @@ class RenderersTest {
         assertTrue(md.contains("- **Claimed but not realised**: E-NOT (not realised)"), md);
         assertTrue(md.contains("| E-COG-INT-001 | interpretation:3 | failed |"), md);
         assertTrue(md.contains("### E-NOT: NOT operator, 1 - argument (also IS NOT)\n"), md);
-        assertTrue(md.contains("- **E-NOT-002** errored: step 1 of 1: y = 1.0 where 2.0 is expected\n"
+        assertTrue(md.contains("- **E-NOT-002** (title of E-NOT-002) errored: step 1 of 1: y = 1.0 where 2.0 is expected\n"
+                + "  - step 1, inputs: x = 0.5\n"
                 + "  - expected: y = 2.0; actual: y = 1.0\n  - also evidence for: E-PARENS\n"
+                + "  - its last stderr line: `Segmentation fault`\n"
                 + "  - reproduce: `./fclcert certify --iut 'process:python3 fake.py' --corpus "
-                + "src/test/resources/corpus-mini --case E-NOT-002`\n"), md);
+                + "src/test/resources/corpus-mini --case E-NOT-002` (transcript: `requests/E-NOT-002.requests.jsonl`)\n"), md);
         assertTrue(md.contains("- **Incomplete run**"), md);
         assertFalse(md.contains("B-COGS-001**"), "passed cases are not listed as failures");
         assertFalse(md.contains("## Notes"), "no case has a note");
