@@ -60,7 +60,10 @@ class RenderersTest {
         assertTrue(html.contains("<style>") && html.contains("<script>"));
         assertBalanced(html);
         assertEquals(3, count(html, "<h2>Table "), "the three tables");
-        assertEquals(REPORT.cases().size(), count(html, "<details class=\"case\""));
+        assertEquals(REPORT.cases().size() - 1, count(html, "<details class=\"case\""));
+        assertEquals(1, count(html, "<details open class=\"case\""), "the first failure only is open");
+        assertTrue(html.indexOf("<details open class=\"case\" id=\"case-B-COGS-002\"") > 0, "B-COGS-002 fails first");
+        assertTrue(html.indexOf("<h2>Failures by cause</h2>") < html.indexOf("<h2>Table 8"), "failures lead");
         assertTrue(html.contains("data-status=\"errored\" data-level=\"extension\""));
         assertTrue(html.contains("<span class=\"st partial\">partial</span>"));
         // program text is escaped and numbered
