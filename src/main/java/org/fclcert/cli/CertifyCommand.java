@@ -64,6 +64,11 @@ final class CertifyCommand implements Callable<Integer> {
         return corpus == null && Files.isDirectory(DEFAULT_CORPUS) ? DEFAULT_CORPUS : corpus;
     }
 
+    /** The corpus as a reproduce command names it: null for the default (conformance/ here, or the bundled one). */
+    private String corpusArgument() {
+        return corpus == null || corpus.equals(DEFAULT_CORPUS) ? null : corpus.toString();
+    }
+
     /** How the run names its corpus: its directory, or {@code bundled}. */
     private String corpusName() {
         Path dir = corpusDirectory();
@@ -71,7 +76,9 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     @Option(names = "--out", paramLabel = "DIR",
-            description = "Output directory (default: reports/reference for the reference, else reports/<iut-name>)")
+            description = "Output directory (default: fclcert-reports/<iut-name>, which git ignores; with --case,"
+                    + " fclcert-reports/<iut-name> of the system's temporary directory, so that reproducing a case"
+                    + " writes nothing into the checkout)")
     Path out;
 
     @Option(names = "--level", paramLabel = "LEVEL", split = ",",
@@ -98,6 +105,9 @@ final class CertifyCommand implements Callable<Integer> {
 
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
+
+    @Option(names = "--probe", description = "Measure the Table 11 data check list also when --case selects cases")
+    boolean forceProbe;
 
     @Option(names = "--probe-cap", paramLabel = "N", defaultValue = Defaults.CERTIFY_PROBE_CAP_TEXT,
             description = "Largest size the Table 11 probes try (default: ${DEFAULT-VALUE}; fclcert probe uses "
@@ -127,15 +137,22 @@ final class CertifyCommand implements Callable<Integer> {
         if (probeCap < 1) {
             throw new CannotRun("--probe-cap must be at least 1, not " + probeCap);
         }
-        Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, probeBudget, Set.of());
+        if (noProbe && forceProbe) {
+            throw new CannotRun("--probe and --no-probe contradict each other");
+        }
+        // selecting cases is reproducing them: seconds, not the probes' minute, and nothing in the checkout
+        boolean reproducing = !cases.isEmpty();
+        boolean probing = forceProbe || !noProbe && !reproducing;
+        Prober.Options probe = probing ? new Prober.Options(probeCap, probeBudget, Set.of()) : null;
         Corpus loaded = loadCorpus();
         Certification.Request request = Certification.Request.builder(iut.spec, loaded)
                 .options(iut.options()).classpath(iut.classpath)
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
+                .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
                 .presentAs(presentAs).build();
         boolean terminal = System.console() != null;
-        ProgressLine progress = new ProgressLine(err, terminal);
+        ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, progress, new TerminalHooks(progress, err, terminal));
@@ -143,6 +160,8 @@ final class CertifyCommand implements Callable<Integer> {
             throw new CannotRun("no case of " + corpusName() + " matches the selection");
         } catch (Certification.CannotCertify e) {
             throw new CannotRun(e.getMessage());
+        } finally {
+            progress.stop();
         }
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
@@ -173,6 +192,7 @@ final class CertifyCommand implements Callable<Integer> {
 
         @Override
         public void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
+            progress.directory(directory);
             onInterrupt = new Thread(() -> reportInterruptedRun(iut, resultsFile, directory, err));
             Runtime.getRuntime().addShutdownHook(onInterrupt);
         }
@@ -188,11 +208,14 @@ final class CertifyCommand implements Callable<Integer> {
                 probed = true;
                 err.print("\r\u001b[Kprobing Table 11, " + index + "/" + total + ": " + row.id());
                 err.flush();
+            } else {
+                progress.probing(row.id(), index, total);
             }
         }
 
         @Override
         public void resultsComplete() {
+            progress.stop();
             if (probed) {
                 err.print("\r\u001b[K");
                 err.flush();

@@ -72,13 +72,13 @@ public final class HtmlReport {
                 .append("<title>FCL compliance: ").append(Texts.html(r.iut().name())).append("</title>")
                 .append("<style>").append(STYLE).append("</style></head><body><main>\n");
         header();
+        causes();   // what is wrong comes first, before the tables a reader scrolls past
         table(8, "Table 8: Basic Level language elements (mandatory)");
         table(9, "Table 9: Extension Level, Standard Extensions");
         table(10, "Table 10: Open Level features");
         dataCheckList();
         claimsAndInterpretation();
         export();
-        causes();
         cases();
         out.append("</main><script>").append(SCRIPT).append("</script></body></html>\n");
         return out.toString();
@@ -178,7 +178,8 @@ public final class HtmlReport {
             out.append("<tr><td>").append(Texts.html(d.item())).append("</td><td><b>")
                     .append(Texts.html(Texts.measured(d))).append("</b></td><td>").append(Texts.html(d.declared()))
                     .append("</td><td><span").append(flag).append('>').append(Texts.html(d.note()))
-                    .append("</span></td><td><small>").append(Texts.html(d.method())).append("</small></td></tr>\n");
+                    .append("</span></td><td><details class=\"how\"><summary>how</summary><small>")
+                    .append(Texts.html(d.method())).append("</small></details></td></tr>\n");
         }
         out.append("</table>\n");
     }
@@ -270,8 +271,13 @@ public final class HtmlReport {
         r.cases().forEach(this::caseBlock);
     }
 
+    private boolean firstFailureOpened;
+
     private void caseBlock(CaseResult c) {
-        out.append("<details class=\"case\" id=\"case-").append(Texts.html(c.id())).append("\" data-id=\"")
+        // the first failure is shown open, so that the page opens on what is wrong
+        boolean open = !firstFailureOpened && (c.status() == CaseStatus.FAILED || c.status() == CaseStatus.ERRORED);
+        firstFailureOpened |= open;
+        out.append("<details").append(open ? " open" : "").append(" class=\"case\" id=\"case-").append(Texts.html(c.id())).append("\" data-id=\"")
                 .append(Texts.html(c.id())).append("\" data-status=\"").append(c.status().word())
                 .append("\" data-level=\"").append(Texts.html(c.level())).append("\"><summary><span class=\"st ")
                 .append(c.status().word()).append("\">").append(c.status().word()).append("</span> <b>")

@@ -343,12 +343,32 @@ public final class MarkdownReport {
     }
 
     private void failure(CaseResult c) {
-        line("- **" + c.id() + "** " + c.status().word() + ": " + Texts.cell(c.message()));
+        line("- **" + c.id() + "** " + (c.title() == null ? "" : "(" + Texts.cell(c.title()) + ") ")
+                + c.status().word() + ": " + Texts.cell(c.message()));
+        CaseResult.Step step = c.evidence().step();
+        if (step != null && !step.inputs().isEmpty()) {
+            line("  - step " + step.number() + ", inputs: " + Texts.cell(Texts.describe(step.inputs())));
+        }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }
-        line("  - reproduce: `" + Texts.repro(r, c.id()) + "`");
+        String stderr = lastStderrLine(c.evidence().error());
+        if (stderr != null) {
+            line("  - its last stderr line: `" + stderr.replace("`", "'") + "`");
+        }
+        line("  - reproduce: `" + Texts.repro(r, c.id()) + "` (transcript: `requests/"
+                + c.id().replaceAll("[^A-Za-z0-9._-]+", "-") + ".requests.jsonl`)");
+    }
+
+    /** The last non-blank line of the stderr tail the harness appends to an implementation's error. */
+    private static String lastStderrLine(String error) {
+        int marker = error == null ? -1 : error.indexOf("--- stderr");
+        if (marker < 0) {
+            return null;
+        }
+        List<String> lines = error.substring(marker).lines().skip(1).filter(l -> !l.isBlank()).toList();
+        return lines.isEmpty() ? null : Texts.cell(lines.get(lines.size() - 1).strip());
     }
 }
