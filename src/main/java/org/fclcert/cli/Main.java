@@ -25,6 +25,7 @@ import picocli.CommandLine.Command;
             CertifyCommand.class,
             ProbeCommand.class,
             ReportCommand.class,
+            CompareCommand.class,
             EvalCommand.class,
         })
 public final class Main implements Runnable {
