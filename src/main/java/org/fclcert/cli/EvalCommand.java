@@ -201,8 +201,13 @@ final class EvalCommand implements Callable<Integer> {
 
         Run(FunctionBlockInstance fb, FunctionBlock declaration) {
             this.fb = fb;
+            Map<String, Variable> declared = new java.util.HashMap<>();   // one pass: 10^5 inputs were quadratic
+            for (Variable v : declaration.variables()) {
+                declared.putIfAbsent(Names.key(v.name()), v);
+            }
             for (String input : fb.inputNames()) {
-                hasValue.put(Names.key(input), declaration.variable(input).flatMap(Variable::initialValue).isPresent());
+                Variable v = declared.get(Names.key(input));
+                hasValue.put(Names.key(input), v != null && v.initialValue().isPresent());
             }
         }
 
