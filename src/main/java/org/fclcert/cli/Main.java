@@ -27,6 +27,7 @@ import picocli.CommandLine.Command;
             ReportCommand.class,
             CompareCommand.class,
             EvalCommand.class,
+            FuzzCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
