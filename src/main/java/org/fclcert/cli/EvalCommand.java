@@ -196,6 +196,10 @@ final class EvalCommand implements Callable<Integer> {
         return String.join(",", cells) + "\n";
     }
 
+    /** A decimal number; NaN and Infinity are numbers too, which the evaluator refuses (FCL-V002) by name. */
+    private static final java.util.regex.Pattern DECIMAL = java.util.regex.Pattern.compile(
+            "\\s*[+-]?((\\d+(\\.\\d*)?|\\.\\d+)([eE][+-]?\\d+)?|NaN|Infinity)\\s*");
+
     /** One instance and which of its inputs have a value (declared initial value or given). */
     private static final class Run {
         final FunctionBlockInstance fb;
@@ -203,8 +207,13 @@ final class EvalCommand implements Callable<Integer> {
 
         Run(FunctionBlockInstance fb, FunctionBlock declaration) {
             this.fb = fb;
+            Map<String, Variable> declared = new java.util.HashMap<>();   // one pass: 10^5 inputs were quadratic
+            for (Variable v : declaration.variables()) {
+                declared.putIfAbsent(Names.key(v.name()), v);
+            }
             for (String input : fb.inputNames()) {
-                hasValue.put(Names.key(input), declaration.variable(input).flatMap(Variable::initialValue).isPresent());
+                Variable v = declared.get(Names.key(input));
+                hasValue.put(Names.key(input), v != null && v.initialValue().isPresent());
             }
         }
 
@@ -222,6 +231,11 @@ final class EvalCommand implements Callable<Integer> {
 
         void set(String name, String text, String where) throws EvaluationException, InputProblem {
             double value;
+            if (!DECIMAL.matcher(text).matches()) {
+                // Double.parseDouble would also take 0x1p2, 5d and 5f: Java spellings, not numbers to a user
+                throw new InputProblem(where + ": '" + text + "' is not a number: write a decimal number"
+                        + " such as 4, -2.5 or 1.5E3");
+            }
             try {
                 value = Double.parseDouble(text);
             } catch (NumberFormatException e) {

@@ -232,6 +232,36 @@ class CheckRulesTest {
                 check(bad).get(0).message());
     }
 
+    /*
+     * Issue 18: the 64-bit bounds compared exactly. As doubles, 9223372036854775808 (2^63) equals
+     * Long.MAX_VALUE and 18446744073709551616 (2^64) equals ULINT's largest value 2^64 - 1.
+     */
+    @Test
+    void sixtyFourBitBoundsAreComparedExactly() {
+        String ok = BASE.replace("    temp : REAL;\n", "    temp : REAL;\n    a : LINT := 9223372036854775807;\n"
+                + "    b : LINT := -9223372036854775808;\n    c : ULINT := 18446744073709551615;\n");
+        assertEquals(List.of(), check(ok));
+        String bad = BASE.replace("    temp : REAL;\n", "    temp : REAL;\n    a : LINT := 9223372036854775808;\n"
+                + "    b : ULINT := 18446744073709551616;\n    c : LINT := -9223372036854775809;\n");
+        assertEquals(List.of("FCL-C030@4", "FCL-C030@5", "FCL-C030@6"), codes(bad));
+        assertEquals("initial value 9223372036854775808 of input 'a' is outside the range of LINT"
+                + " (-9223372036854775808 .. 9223372036854775807) (5.2.1)", check(bad).get(0).message());
+        assertEquals("initial value 18446744073709551616 of input 'b' is outside the range of ULINT"
+                + " (0 .. 18446744073709551615) (5.2.1)", check(bad).get(1).message());
+    }
+
+    @Test
+    void functionBlockNamesDifferingOnlyInCaseAreFclC032() {
+        String two = BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB")
+                + BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK FUZZY_FB");
+        assertEquals(List.of("FCL-C032@25"), codes(two));
+        assertEquals("function block 'FUZZY_FB' has the same name as the function block 'Fuzzy_FB' at line 1"
+                + " (names are not case-sensitive); each function block needs a unique name", check(two).get(0).message());
+        String distinct = BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB")
+                + BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB2");
+        assertEquals(List.of(), check(distinct));
+    }
+
     @Test
     void blocksConcludingAnOutputWithTheSameAccumulationAreFine() {
         String text = BASE.replace("END_RULEBLOCK\n", "END_RULEBLOCK\nRULEBLOCK r2\n    AND : MIN;\n    ACCU : MAX;\n"

@@ -134,6 +134,34 @@ class CheckCommandTest {
         assertEquals("fclcert: cannot read " + dir + ": it is a directory", r.errLines().get(0));
     }
 
+    /* Issue 18 item 12: /dev/zero used 5.5 GB then exit 3; a FIFO hung forever. */
+    @Test
+    void onlyRegularFilesAreRead() throws Exception {
+        Cli zero = Cli.run("check", "/dev/zero");
+        assertEquals(2, zero.exitCode());
+        assertEquals("fclcert: cannot read /dev/zero: not a regular file (a device, pipe or socket);"
+                + " fclcert reads only files", zero.errLines().get(0));
+        Path fifo = dir.resolve("pipe.fcl");
+        org.junit.jupiter.api.Assumptions.assumeTrue(
+                new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor() == 0, "mkfifo is not available");
+        Cli pipe = Cli.run("check", fifo.toString());   // would block in open() if it were opened
+        assertEquals(2, pipe.exitCode());
+        assertTrue(pipe.errLines().get(0).endsWith(": not a regular file (a device, pipe or socket); fclcert reads only files"),
+                pipe.err());
+    }
+
+    @Test
+    void aFileOverTheSizeLimitIsRefusedUnread() throws Exception {
+        Path big = dir.resolve("big.fcl");
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(big.toFile(), "rw")) {
+            f.setLength(org.fclcert.model.Limits.MAX_SOURCE_BYTES + 1);   // sparse: no disk, no memory
+        }
+        Cli r = Cli.run("check", big.toString());
+        assertEquals(2, r.exitCode());
+        assertEquals("fclcert: cannot read " + big + ": larger than fclcert's limit of 128 MiB"
+                + " (org.fclcert.model.Limits.MAX_SOURCE_BYTES)", r.errLines().get(0));
+    }
+
     @Test
     void aByteOrderMarkIsNotPartOfTheProgram() {
         Path file = Cli.write(dir, "bom.fcl", "\uFEFF" + UNDEFINED_TERM);

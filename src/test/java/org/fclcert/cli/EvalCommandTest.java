@@ -173,6 +173,30 @@ class EvalCommandTest {
                 + " comma-separated values (e.g. temp,pressure)"), semicolons.errLines());
     }
 
+    /* Issue 18 item 13: Java's number spellings are not numbers to a user (0x1p2 is 4.0 to parseDouble). */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"0x1p2", "5d", "5f", "5D", "0X10", "1_0"})
+    void javaNumberSpellingsAreRejected(String spelling) {
+        Cli in = Cli.run("eval", valve(), "--in", "temp=" + spelling, "--in", "pressure=60");
+        assertEquals(1, in.exitCode());
+        assertEquals(List.of("fclcert: --in temp=" + spelling + ": '" + spelling + "' is not a number: write a decimal"
+                + " number such as 4, -2.5 or 1.5E3"), in.errLines());
+        Path rows = Cli.write(dir, "java.csv", "temp,pressure\n5,60\n" + spelling + ",60\n");
+        Cli csv = Cli.run("eval", valve(), "--csv", rows.toString());
+        assertEquals(1, csv.exitCode());
+        assertTrue(csv.err().contains("'" + spelling + "' is not a number"), csv.err());
+        assertEquals("", csv.out());
+    }
+
+    @Test
+    void decimalSpellingsAreNumbers() {
+        for (String spelling : List.of("5", "+5", "5.", ".5E1", "5.0e0", "50E-1")) {
+            Cli r = Cli.run("eval", valve(), "--in", "temp=" + spelling, "--in", "pressure=60");
+            assertEquals(0, r.exitCode(), spelling + ": " + r.err());
+            assertEquals(Cli.run("eval", valve(), "--in", "temp=5", "--in", "pressure=60").out(), r.out(), spelling);
+        }
+    }
+
     /* The valve with an undefined term (line 29, column 54, see CheckCommandTest) is not evaluated. */
     @Test
     void programWithErrorsIsNotEvaluated() {
