@@ -69,6 +69,12 @@ public final class RecordingIut implements ImplementationUnderTest {
     }
 
     @Override
+    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+        requests.add(Protocol.load(text));
+        return inner.loadWritten(text, layout);   // the reference reads a written text in its layout
+    }
+
+    @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
         try {
             requests.add(Protocol.eval(block, inputs));
