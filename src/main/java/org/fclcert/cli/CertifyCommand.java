@@ -108,7 +108,7 @@ final class CertifyCommand implements Callable<Integer> {
         try {
             return certify(spec.commandLine().getOut(), err);
         } catch (CannotRun e) {
-            err.println("fclcert certify: " + e.getMessage());
+            err.println("fclcert certify: " + TerminalText.visibleLines(e.getMessage()));
             err.flush();
             return CANNOT_RUN;
         }
@@ -215,7 +215,7 @@ final class CertifyCommand implements Callable<Integer> {
 
     private static void print(PrintWriter out, Report r, Path dir) {
         Report.Summary s = r.summary();
-        out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
+        out.println(TerminalText.visible(r.iut().name()) + " " + TerminalText.visible(r.iut().version()) + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         if (r.rejections().doubtful()) {
             out.println("Negative cases: " + r.rejections().sentence());
@@ -225,7 +225,7 @@ final class CertifyCommand implements Callable<Integer> {
         out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
         out.println("Open Level features realised (Table 10): " + realised(r, 10));
         if (!r.claims().notRealised().isEmpty()) {
-            out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
+            out.println("Claimed but not realised: " + TerminalText.visible(String.join(", ", r.claims().notRealised())));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);

@@ -39,7 +39,7 @@ final class ProgressLine implements RunListener {
         notPassed++;
         err.print(terminal ? "\r\033[K" : "");
         err.println(result.status().word().toUpperCase(java.util.Locale.ROOT) + " " + result.id() + ": "
-                + firstLine(result.message()));
+                + TerminalText.visible(firstLine(result.message())));
         err.flush();
     }
 

@@ -64,6 +64,11 @@ final class ProcessSession {
         });
     }
 
+    /** A line the process wrote before being asked (see {@link ReplyReader#unasked}), or null. */
+    ReplyReader.Line unasked() {
+        return replies.unasked();
+    }
+
     ReplyReader.Event next(long nanos) throws InterruptedException {
         return replies.next(nanos);
     }

@@ -45,7 +45,7 @@ public final class MarkdownReport {
     }
 
     private void header() {
-        line("# FCL compliance statement: " + r.iut().name() + " " + r.iut().version());
+        line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
         line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
                 + ".");
@@ -147,14 +147,14 @@ public final class MarkdownReport {
         if (c.claimed().isEmpty()) {
             line("The implementation claims no feature.");
         } else {
-            line("- Claimed: " + String.join(", ", c.claimed()));
+            line("- Claimed: " + Texts.cell(String.join(", ", c.claimed())));
             line("- Confirmed: " + none(c.confirmed()));
             line("- **Claimed but not realised**: " + none(c.notRealised()));
             if (!c.untested().isEmpty()) {
                 line("- Claimed, no case in this run: " + String.join(", ", c.untested()));
             }
             if (!c.unknown().isEmpty()) {
-                line("- Unknown feature ids claimed: " + String.join(", ", c.unknown()));
+                line("- Unknown feature ids claimed: " + Texts.cell(String.join(", ", c.unknown())));
             }
         }
         if (!c.unclaimed().isEmpty()) {

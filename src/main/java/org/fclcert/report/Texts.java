@@ -52,9 +52,38 @@ final class Texts {
         return ch == '\t' || ch == '\n' || ch == '\r' || (ch >= 0x20 && ch != 0xFFFE && ch != 0xFFFF);
     }
 
-    /** A Markdown table cell: one line, pipes escaped. */
+    /**
+     * Untrusted text (an implementation's name, version, claims, messages) in report.md, in a table cell or
+     * after a list marker: one line (a newline cannot start a forged {@code # heading} or
+     * {@code **Basic Level: conformant**} line), every character with a Markdown or HTML meaning backslash-escaped
+     * (no emphasis, links such as {@code [x](javascript:…)}, autolinks, raw HTML or entities), control
+     * characters shown visibly ({@code \0}, {@code \e}, {@code \x07}) rather than written.
+     */
     static String cell(String s) {
-        return s == null ? "" : s.replace("\r", "").replace("\n", " ").replace("|", "\\|");
+        if (s == null) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder(s.length() + 16);
+        for (int i = 0; i < s.length(); i++) {
+            char ch = s.charAt(i);
+            if (ch == '\r') {
+                continue;
+            }
+            if (ch == '\n' || ch == '\t') {
+                b.append(' ');
+            } else if ("\\`*_[]<>|&~".indexOf(ch) >= 0) {
+                b.append('\\').append(ch);
+            } else if (ch == 0) {
+                b.append("\\0");
+            } else if (ch == 0x1b) {
+                b.append("\\e");
+            } else if (ch < 0x20 || (ch >= 0x7f && ch <= 0x9f)) {
+                b.append(String.format("\\x%02x", (int) ch));
+            } else {
+                b.append(ch);
+            }
+        }
+        return b.toString();
     }
 
     /** Quotes a word for a POSIX shell. */
