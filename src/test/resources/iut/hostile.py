@@ -10,6 +10,8 @@ named by its argument:
   inject          a name, version and rejection message full of terminal and Markdown/HTML injections
   no-fcl-export   answers export with ok:true but no 'fcl'
   unasked         writes an extra eval reply right after each load reply, before being asked
+  orphan FILE     at hello starts a child (its pid appended to FILE) that keeps stdout open; at the first eval
+                  the IUT itself exits without a reply, so stdout stays open and the child is re-parented
 """
 import json
 import os
@@ -31,6 +33,11 @@ class Hostile(FakeIut):
         body = super().op_hello(req)
         if MODE == "surrogate-name":
             body["implementation"]["name"] = "sur\udc00rogate"
+        if MODE == "orphan":
+            import subprocess
+            child = subprocess.Popen(["sleep", "60"], stdin=subprocess.DEVNULL)   # inherits stdout
+            with open(sys.argv[2], "a") as f:
+                f.write("%d\n" % child.pid)
         if MODE == "inject":
             body["implementation"]["name"] = INJECT
             body["implementation"]["version"] = "1.0\x1b[31m"
@@ -44,6 +51,8 @@ class Hostile(FakeIut):
         return super().op_load(req)
 
     def op_eval(self, req):
+        if MODE == "orphan":
+            os._exit(0)
         body = super().op_eval(req)
         right = body["outputs"]["sum"]
         if MODE == "dup-key":

@@ -30,6 +30,32 @@ class HostileProcessIutTest {
     }
 
     @Test
+    void aChildThatOutlivesTheIutAndKeepsItsStdoutIsKilledToo(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path pids = dir.resolve("pids");
+        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(1000)).withRestartBudget(1);
+        try (ImplementationUnderTest iut = Iuts.open(ProcessIutTest.fake("hostile.py", "orphan", pids.toString()),
+                options)) {
+            iut.load(PROGRAM);
+            // the IUT exits, its child holds stdout open: no end of stream, so a timeout; then a restart (a second
+            // child) and the same again
+            for (int i = 0; i < 2; i++) {
+                IutException e = assertThrows(IutException.class, () -> iut.eval(null, Map.of("a", 1.0)));
+                assertEquals(Kind.TIMEOUT, e.kind(), e.getMessage());
+            }
+        }
+        java.util.List<Long> children = java.nio.file.Files.readAllLines(pids).stream().map(Long::valueOf).toList();
+        assertEquals(2, children.size(), "one child per start");
+        for (long pid : children) {
+            java.util.Optional<ProcessHandle> p = ProcessHandle.of(pid);
+            if (p.isPresent()) {
+                p.get().onExit().get(2, java.util.concurrent.TimeUnit.SECONDS);
+            }
+            assertTrue(ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true), "child " + pid + " survives");
+        }
+    }
+
+    @Test
     void keptTextRepairsSurrogatesAndCapsAtACharacterBoundary() {
         assertEquals("a\uFFFDb\uFFFD", IutText.kept("a\udc00b\ud800"));
         assertEquals("\uD83D\uDE00", IutText.kept("\uD83D\uDE00"), "a proper pair is kept");
