@@ -20,10 +20,29 @@ public final class AndOrPaired implements FunctionBlockRule {
         return CODE;
     }
 
+    /**
+     * A rule block where a dialect reader recorded {@code O-UNPAIRED-OPERATORS} (fuzzylite evaluates any AND
+     * with any OR, and the reader has warned) is that library's Open Level reading, not a mistake.
+     */
+    @Override
+    public void check(org.fclcert.model.Program program, DiagnosticSink sink) {
+        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.HashSet<>();
+        program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_UNPAIRED_OPERATORS)
+                .forEach(u -> tolerated.add(u.location()));
+        for (FunctionBlock fb : program.functionBlocks()) {
+            check(fb, tolerated, sink);
+        }
+    }
+
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
+        check(block, java.util.Set.of(), sink);
+    }
+
+    private void check(FunctionBlock block, java.util.Set<org.fclcert.model.SourceLocation> tolerated,
+            DiagnosticSink sink) {
         for (RuleBlock rb : block.ruleBlocks()) {
-            if (rb.and().isEmpty() || rb.or().isEmpty()) {
+            if (rb.and().isEmpty() || rb.or().isEmpty() || tolerated.contains(rb.location())) {
                 continue;
             }
             Located<AndAlgorithm> and = rb.and().get();

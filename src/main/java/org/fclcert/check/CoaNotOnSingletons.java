@@ -22,7 +22,7 @@ public final class CoaNotOnSingletons implements FunctionBlockRule {
             if (d.method().isEmpty() || d.method().get().value() != DefuzzificationMethod.COA) {
                 continue;
             }
-            d.terms().stream().filter(t -> t.function() instanceof MembershipFunction.Singleton).findFirst()
+            d.terms().stream().filter(t -> (t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed)).findFirst()
                     .ifPresent(t -> sink.report(finding(d.method().get().location(), "DEFUZZIFY " + d.variable()
                             + ": METHOD CoA does not apply to singletons, but term '" + t.name() + "' (line "
                             + t.location().line() + ") is a singleton; use CoGS for singleton terms"

@@ -24,7 +24,7 @@ public final class CogsOnlyOnSingletons implements FunctionBlockRule {
                     && d.method().get().value() != DefuzzificationMethod.COGSS) {
                 continue;
             }
-            d.terms().stream().filter(t -> !(t.function() instanceof MembershipFunction.Singleton)).findFirst()
+            d.terms().stream().filter(t -> !((t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed))).findFirst()
                     .ifPresent(t -> report(d, t, sink));
         }
     }

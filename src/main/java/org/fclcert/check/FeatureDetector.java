@@ -165,6 +165,10 @@ public final class FeatureDetector {
             if (namedShape(term)) {
                 return;
             }
+            if (term.function() instanceof MembershipFunction.Computed) {
+                use(Feature.O_TAKAGI_SUGENO, term.location());
+                return;
+            }
             if (term.function() instanceof MembershipFunction.Singleton s) {
                 use(s.value() instanceof VariableRef ? Feature.E_TERM_VARIABLE_POINT : Feature.B_OUT_SINGLETON,
                         term.location());
@@ -258,6 +262,7 @@ public final class FeatureDetector {
             case MIN -> Feature.B_AND_MIN;
             case PROD -> Feature.E_AND_PROD;
             case BDIF -> Feature.E_AND_BDIF;
+            case EPROD, HPROD, DPROD, NMIN -> Feature.O_OTHER_NORM;
         };
     }
 
@@ -266,6 +271,7 @@ public final class FeatureDetector {
             case MAX -> Feature.E_OR_MAX;
             case ASUM -> Feature.E_OR_ASUM;
             case BSUM -> Feature.E_OR_BSUM;
+            case ESUM, HSUM, DSUM, NMAX -> Feature.O_OTHER_NORM;
         };
     }
 

@@ -35,7 +35,7 @@ public final class OutputTermsOfOneKind implements FunctionBlockRule {
     }
 
     private static boolean isSingleton(Term t) {
-        return t.function() instanceof MembershipFunction.Singleton;
+        return t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed;
     }
 
     private static String kind(boolean singleton) {

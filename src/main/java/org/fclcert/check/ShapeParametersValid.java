@@ -43,6 +43,8 @@ public final class ShapeParametersValid implements FunctionBlockRule {
             case SIGMOID -> p[1] != 0 ? null : "needs a slope other than 0";
             case SIGMOID_DIFFERENCE, SIGMOID_PRODUCT -> null;
             case COSINE -> p[1] > 0 ? null : "needs width > 0";
+            case CONCAVE -> p[0] != p[1] ? null : "needs inflection and end apart";
+            case SPIKE -> p[1] > 0 ? null : "needs width > 0";
             case PI_SHAPE -> ascending(p) && p[0] < p[1] && p[2] < p[3] ? null
                     : "needs bottomLeft < topLeft <= topRight < bottomRight";
         };

@@ -23,13 +23,33 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
         return CODE;
     }
 
+    /**
+     * A subcondition where a dialect reader recorded {@code O-OUTPUT-CONDITION} (fuzzylite: the degree the
+     * output's term has reached so far) is that library's Open Level reading, not a mistake.
+     */
+    @Override
+    public void check(org.fclcert.model.Program program, DiagnosticSink sink) {
+        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.HashSet<>();
+        program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_OUTPUT_CONDITION)
+                .forEach(u -> tolerated.add(u.location()));
+        for (FunctionBlock fb : program.functionBlocks()) {
+            check(fb, c -> !tolerated.contains(c.location()), sink);
+        }
+    }
+
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
+        check(block, c -> true, sink);
+    }
+
+    private void check(FunctionBlock block, java.util.function.Predicate<Condition> judged, DiagnosticSink sink) {
         Scope scope = new Scope(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
-                    check(scope, c, sink);
+                    if (judged.test(c)) {
+                        check(scope, c, sink);
+                    }
                 }
             }
         }

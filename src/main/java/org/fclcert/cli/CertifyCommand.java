@@ -213,6 +213,9 @@ final class CertifyCommand implements Callable<Integer> {
         }
     }
 
+    /** How many causes the terminal summary lists; the reports list them all. */
+    private static final int CAUSES_SHOWN = 8;
+
     private static void print(PrintWriter out, Report r, Path dir) {
         Report.Summary s = r.summary();
         out.println(TerminalText.visible(r.iut().name()) + " " + TerminalText.visible(r.iut().version()) + ": " + s.cases() + " cases, " + s.passed()
@@ -224,6 +227,13 @@ final class CertifyCommand implements Callable<Integer> {
                 + r.basicLevel().reason() + ")");
         out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
         out.println("Open Level features realised (Table 10): " + realised(r, 10));
+        if (!r.causes().isEmpty()) {
+            out.println("Failures by cause:");
+            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
+            if (r.causes().size() > CAUSES_SHOWN) {
+                out.println("  … and " + (r.causes().size() - CAUSES_SHOWN) + " more causes (report.md, \"Failures by cause\")");
+            }
+        }
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + TerminalText.visible(String.join(", ", r.claims().notRealised())));
         }

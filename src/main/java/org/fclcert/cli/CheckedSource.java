@@ -22,8 +22,17 @@ record CheckedSource(String text, Dialect dialect, Optional<Program> program) {
      */
     static CheckedSource read(String file, DialectName name, String notDone, PrintWriter err) throws FileProblem {
         String text = SourceFiles.read(file);
-        Dialect dialect = name.resolve(file, text, err);
-        Analysis analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
+        Dialect dialect;
+        Analysis analysis;
+        if (name == DialectName.auto) {
+            DialectReaders.Choice choice = DialectReaders.auto(text);
+            err.println("fclcert: " + file + ": " + choice.explanation());
+            dialect = choice.dialect();
+            analysis = Analysis.analyze(choice.reader(), file, text);
+        } else {
+            dialect = name.resolve(file, text, err);
+            analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
+        }
         DiagnosticPrinter.text(err, analysis.diagnostics());
         if (analysis.program().isEmpty()) {
             err.println("fclcert: " + file + " has errors; not " + notDone);

@@ -12,6 +12,9 @@ import org.fclcert.write.CanonicalWriter;
 import org.fclcert.write.StandardConversion;
 import org.fclcert.write.StandardConversion.Finding;
 import org.fclcert.write.StandardConversion.Kind;
+import org.fclcert.write.DialectWriters;
+import org.fclcert.write.RoundTrip;
+import org.fclcert.write.Written;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -24,10 +27,15 @@ import picocli.CommandLine.Spec;
                 + "standard IEC 61131-7 FCL in canonical layout. Every non-standard construct is listed on stderr "
                 + "with its place and how it converted: exactly, approximated (with the largest membership error) "
                 + "or not expressible. Curves are approximated only when --approximate-points is given; a construct "
-                + "that is not expressible makes the conversion refused unless --allow-lossy is given.",
+                + "that is not expressible makes the conversion refused unless --allow-lossy is given. With --to "
+                + "ffll|jfuzzylogic|fuzzylite the program is written in that library's layout instead: what the "
+                + "library cannot say is listed (FCL-X1nn), what it is known to compute otherwise too (FCL-X2nn), and "
+                + "the written text is read back with fclcert's reader of that dialect and evaluated against the "
+                + "original on a grid.",
         exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = {"0:the program converted (exactly, or with --allow-lossy)",
-            "1:the program has errors, or a construct is not expressible and --allow-lossy was not given",
+            "1:the program has errors, or a construct is not expressible (or the written program evaluates"
+                + " differently) and --allow-lossy was not given",
             ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
 final class ConvertCommand implements Callable<Integer> {
     @Spec
@@ -38,6 +46,11 @@ final class ConvertCommand implements Callable<Integer> {
                     + " (default: ${DEFAULT-VALUE})")
     DialectName from;
 
+    @Option(names = "--to", defaultValue = "strict", paramLabel = "DIALECT",
+            description = "the layout to write: strict (standard FCL), ffll, jfuzzylogic or fuzzylite"
+                    + " (default: ${DEFAULT-VALUE})")
+    DialectName to;
+
     @Option(names = "--approximate-points", defaultValue = "0", paramLabel = "N",
             description = "approximate curved membership functions by N points (default: do not approximate)")
     int approximatePoints;
@@ -45,7 +58,7 @@ final class ConvertCommand implements Callable<Integer> {
     @Option(names = "--allow-lossy", description = "write the result even when it does not mean exactly the same")
     boolean allowLossy;
 
-    @Option(names = "--out", paramLabel = "FILE", description = "write the standard FCL here instead of stdout")
+    @Option(names = "--out", paramLabel = "FILE", description = "write the program here instead of stdout")
     String outFile;
 
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
@@ -65,6 +78,13 @@ final class ConvertCommand implements Callable<Integer> {
                 return ExitCodes.ERRORS;
             }
             Dialect dialect = source.dialect();
+            if (to == DialectName.auto) {
+                err.println("fclcert: --to takes strict, ffll, jfuzzylogic or fuzzylite, not auto");
+                return ExitCodes.USAGE;
+            }
+            if (to != DialectName.strict) {
+                return toLibrary(source, Dialect.byCliName(to.name()).orElseThrow(), out, err);
+            }
             StandardConversion.Result result = new StandardConversion()
                     .convert(source.program().get(), new StandardConversion.Options(approximatePoints));
             printFindings(err, result.findings(), allowLossy);
@@ -93,6 +113,42 @@ final class ConvertCommand implements Callable<Integer> {
             err.println("fclcert: " + e.getMessage());
             return ExitCodes.USAGE;
         }
+    }
+
+    /**
+     * The program read (in whatever dialect) written in a library's layout, its losses and the library's known
+     * deviations listed, and the written text read back and compared on a grid.
+     */
+    private int toLibrary(CheckedSource source, Dialect target, PrintWriter out, PrintWriter err) throws FileProblem {
+        Written written = DialectWriters.writer(target).write(source.program().get());
+        for (Diagnostic d : written.notExpressible()) {
+            err.println(allowLossy ? Diagnostic.warning(d.location(), d.diagnosticCode(), d.message()) : d);
+        }
+        written.differences().forEach(err::println);
+        RoundTrip back = DialectWriters.readBackAndCompare(source.program().get(), written);
+        err.println("fclcert: written for " + target.displayName() + ": " + DiagnosticPrinter.count(
+                written.notExpressible().size(), "construct") + " not expressible, " + DiagnosticPrinter.count(
+                written.differences().size(), "known deviation") + " of " + target.displayName() + "; " + back.summary());
+        back.mismatches().stream().skip(1).limit(2).forEach(m -> err.println("fclcert:   " + m));
+        if (back.readBack().isEmpty() || written.exact() && !back.equal()) {
+            err.println("fclcert: internal error: the " + target.cliName() + " writer's text "
+                    + (back.readBack().isEmpty() ? "does not read back" : "is said to be exact but evaluates otherwise"));
+            back.diagnostics().stream().filter(Diagnostic::isError).limit(5).forEach(d -> err.println("  " + d));
+            return ExitCodes.INTERNAL;
+        }
+        if ((!written.exact() || !back.equal()) && !allowLossy) {
+            err.println("fclcert: " + file + " not converted: " + target.displayName() + " cannot say exactly what it"
+                    + " says; add --allow-lossy to write the nearest " + target.displayName() + " program anyway");
+            return ExitCodes.ERRORS;
+        }
+        if (outFile != null) {
+            SourceFiles.write(outFile, written.text());
+            err.println("fclcert: wrote " + outFile);
+        } else {
+            out.print(written.text());
+            out.flush();
+        }
+        return ExitCodes.OK;
     }
 
     /** One located line per finding: exact ones as notes, the others as diagnostics (FCL-X001, FCL-X002). */

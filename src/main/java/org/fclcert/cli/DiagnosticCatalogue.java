@@ -46,6 +46,7 @@ public final class DiagnosticCatalogue {
         Checker.standardRules().stream().map(CheckRule::diagnosticCode).forEach(codes::add);
         codes.addAll(Arrays.asList(EvaluationCode.values()));
         codes.addAll(Arrays.asList(ConversionCode.values()));
+        codes.addAll(Arrays.asList(org.fclcert.write.WriterCode.values()));
         Map<String, DiagnosticCode> byCode = new LinkedHashMap<>();
         for (DiagnosticCode c : codes) {
             DiagnosticCode before = byCode.putIfAbsent(c.code(), c);

@@ -14,7 +14,8 @@ enum DialectName {
     auto;
 
     static final String DESCRIPTION = "the FCL dialect FILE is written in: strict (IEC 61131-7), ffll, jfuzzylogic,"
-            + " fuzzylite, or auto (the dialect with the most signs; says which) (default: ${DEFAULT-VALUE})";
+            + " fuzzylite, or auto (the dialect with clearly the most signs; says which, and asks for --dialect on a"
+            + " close call) (default: ${DEFAULT-VALUE})";
 
     /** The dialect to read {@code text} in; for auto, the choice is explained on err ({@code fclcert: FILE: read as ...}). */
     Dialect resolve(String file, String text, PrintWriter err) {
@@ -26,7 +27,16 @@ enum DialectName {
         return choice.dialect();
     }
 
+    /**
+     * The reader for FILE: the named dialect's, or auto's choice (explained on err); when auto cannot tell, a
+     * reader that reports the close call as a located FCL-S311 (or a detection failure as FCL-S999).
+     */
     FclReader reader(String file, String text, PrintWriter err) {
-        return DialectReaders.reader(resolve(file, text, err));
+        if (this != auto) {
+            return DialectReaders.reader(resolve(file, text, err));
+        }
+        DialectReaders.Choice choice = DialectReaders.auto(text);
+        err.println("fclcert: " + file + ": " + choice.explanation());
+        return choice.reader();
     }
 }

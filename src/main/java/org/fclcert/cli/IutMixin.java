@@ -8,7 +8,8 @@ import picocli.CommandLine.Option;
 /** The options that name and open the implementation under test, shared by {@code certify} and {@code probe}. */
 final class IutMixin {
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] (default: ${DEFAULT-VALUE})")
+            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR"
+                    + " (default: ${DEFAULT-VALUE})")
     String spec;
 
     @Option(names = "--classpath", paramLabel = "PATHS",

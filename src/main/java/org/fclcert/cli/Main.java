@@ -25,7 +25,9 @@ import picocli.CommandLine.Command;
             CertifyCommand.class,
             ProbeCommand.class,
             ReportCommand.class,
+            CompareCommand.class,
             EvalCommand.class,
+            FuzzCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec

@@ -46,6 +46,11 @@ final class BlockCompiler {
     private final Map<String, List<int[]>> contributions = new HashMap<>();
     private final Map<String, AccumulationMethod> outputAccumulation = new HashMap<>();
     private int contributionCount;
+    private int inputTermCount;
+    /** Per contribution id: the hedges of its subconclusion (dialects), or null. */
+    private final Map<Integer, org.fclcert.model.Hedge[]> hedges = new HashMap<>();
+    /** 'output IS term' in conditions (dialects): key output\0term to its degree entry after the input terms'. */
+    private final Map<String, Integer> chained = new LinkedHashMap<>();
     /** DEFUZZIFY blocks by variable key (the first of duplicates, as FunctionBlock.defuzzification finds it). */
     private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
     private final Map<String, Map<String, Integer>> termPositions = new HashMap<>();
@@ -78,6 +83,11 @@ final class BlockCompiler {
         }
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
+        chainedDegrees(b);
+        if (!hedges.isEmpty()) {
+            b.contributionHedges = new org.fclcert.model.Hedge[contributionCount][];
+            hedges.forEach((id, h) -> b.contributionHedges[id] = h);
+        }
         return new BlockPlan(b);
     }
 
@@ -131,6 +141,27 @@ final class BlockCompiler {
         b.termShape = shape.stream().mapToInt(Integer::intValue).toArray();
         b.termVariableName = varName.toArray(String[]::new);
         b.termName = name.toArray(String[]::new);
+        inputTermCount = varSlot.size();
+    }
+
+    /** Which contribution feeds which chained degree, and with which accumulation. */
+    private void chainedDegrees(BlockPlan.Builder b) {
+        b.chainedTerms = chained.size();
+        b.chainedDegree = new int[contributionCount];
+        b.chainedAccumulation = new AccumulationMethod[contributionCount];
+        java.util.Arrays.fill(b.chainedDegree, -1);
+        for (Map.Entry<String, Integer> e : chained.entrySet()) {
+            String output = e.getKey().substring(0, e.getKey().indexOf('\0'));
+            String term = e.getKey().substring(e.getKey().indexOf('\0') + 1);
+            Defuzzification d = fb.defuzzification(output).orElseThrow();
+            int position = positions(d).getOrDefault(term, -1);
+            for (int[] c : contributions.getOrDefault(output, List.of())) {
+                if (c[1] == position) {
+                    b.chainedDegree[c[0]] = e.getValue();
+                    b.chainedAccumulation[c[0]] = outputAccumulation.getOrDefault(output, AccumulationMethod.MAX);
+                }
+            }
+        }
     }
 
     private int addShape(Term t) {
@@ -148,6 +179,10 @@ final class BlockCompiler {
                 shapes.add(new Shape(named.kind(), named.values()));
                 return shapes.size() - 1;
             }
+        }
+        if (f instanceof MembershipFunction.Computed computed) {
+            shapes.add(new Shape(computedValue(computed.value())));
+            return shapes.size() - 1;
         }
         if (f instanceof MembershipFunction.Singleton single) {
             s = new Shape(true, new double[] {constant(single.value())}, new int[] {slotOrNone(single.value())},
@@ -172,6 +207,15 @@ final class BlockCompiler {
         }
         shapes.add(s);
         return shapes.size() - 1;
+    }
+
+    /** A Takagi–Sugeno term's value over the variables' slots (names resolved once, here). */
+    private java.util.function.ToDoubleFunction<double[]> computedValue(org.fclcert.model.Expression e) {
+        Map<String, Integer> used = new HashMap<>();
+        for (String v : e.variables()) {
+            used.put(v, slot(v));
+        }
+        return values -> e.evaluate(name -> values[used.get(name)]);
     }
 
     private RuleBlockPlan ruleBlock(RuleBlock rb) {
@@ -214,6 +258,9 @@ final class BlockCompiler {
             throw new IllegalArgumentException("output " + d.variable() + " has no term " + s.term().get());
         }
         int id = contributionCount++;
+        if (!s.hedges().isEmpty()) {
+            hedges.put(id, s.hedges().toArray(org.fclcert.model.Hedge[]::new));
+        }
         contributions.computeIfAbsent(key, k -> new ArrayList<>())
                 .add(new int[] {id, termInOutput, act == ActivationMethod.PROD ? 1 : 0});
         outputAccumulation.putIfAbsent(key, accu);
@@ -224,8 +271,8 @@ final class BlockCompiler {
         String key = Names.key(d.variable());
         int slot = slot(d.variable());
         boolean singletons = !d.terms().isEmpty()
-                && d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton);
-        boolean points = d.terms().stream().allMatch(t -> !(t.function() instanceof MembershipFunction.Singleton));
+                && d.terms().stream().allMatch(BlockCompiler::singletonLike);
+        boolean points = d.terms().stream().noneMatch(BlockCompiler::singletonLike);
         if (!singletons && !points) {
             throw new IllegalArgumentException("output " + d.variable() + " mixes singleton and point terms");
         }
@@ -256,6 +303,11 @@ final class BlockCompiler {
                 maxPoints);
     }
 
+    /** Singletons and Takagi–Sugeno terms (a singleton at a computed value). */
+    private static boolean singletonLike(Term t) {
+        return t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed;
+    }
+
     private static int pointCount(Term t) {
         if (t.function() instanceof MembershipFunction.NamedShape named) {
             return named.points().map(List::size).orElse(0);
@@ -274,6 +326,11 @@ final class BlockCompiler {
 
     private int termIndexOf(String variable, String term) {
         Integer i = termIndex.get(Names.key(variable) + '\0' + Names.key(term));
+        java.util.Optional<Defuzzification> output = fb.defuzzification(variable);
+        if (i == null && output.isPresent() && output.get().terms().stream().anyMatch(t -> Names.same(t.name(), term))) {
+            String key = Names.key(variable) + '\0' + Names.key(term);
+            return chained.computeIfAbsent(key, k -> inputTermCount + chained.size());
+        }
         if (i == null) {
             throw new IllegalArgumentException("no term " + term + " of input " + variable);
         }

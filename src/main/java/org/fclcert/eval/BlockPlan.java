@@ -39,6 +39,15 @@ final class BlockPlan {
     final boolean[] smoothOutputs;
     /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
     final int contributionCount;
+    /**
+     * Dialects (fuzzylite's 'output IS term' in a condition): per contribution, the entry of the degrees after
+     * the input terms' that accumulates it, or -1; with the accumulation of each contribution and the count.
+     */
+    final int[] chainedDegree;
+    final org.fclcert.model.AccumulationMethod[] chainedAccumulation;
+    final int chainedTerms;
+    /** Dialects (fuzzylite hedges in conclusions): per contribution, the hedges applied to the rule's degree, or null. */
+    final org.fclcert.model.Hedge[][] contributionHedges;
     final int maxStack;
     final int maxBareTargets;
 
@@ -62,6 +71,11 @@ final class BlockPlan {
         outputs = b.outputs;
         smoothOutputs = b.smoothOutputs;
         contributionCount = b.contributionCount;
+        chainedDegree = b.chainedDegree != null ? b.chainedDegree : new int[0];
+        chainedAccumulation = b.chainedAccumulation != null ? b.chainedAccumulation
+                : new org.fclcert.model.AccumulationMethod[0];
+        chainedTerms = b.chainedTerms;
+        contributionHedges = b.contributionHedges != null ? b.contributionHedges : new org.fclcert.model.Hedge[0][];
         int stack = 1;
         int bare = 0;
         for (RuleBlockPlan rb : ruleBlocks) {
@@ -94,6 +108,10 @@ final class BlockPlan {
         OutputPlan[] outputs;
         boolean[] smoothOutputs;
         int contributionCount;
+        int[] chainedDegree;
+        org.fclcert.model.AccumulationMethod[] chainedAccumulation;
+        int chainedTerms;
+        org.fclcert.model.Hedge[][] contributionHedges;
     }
 
     /** One rule block: operators, methods, and per rule its condition and subconclusions. */

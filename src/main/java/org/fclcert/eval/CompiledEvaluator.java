@@ -160,6 +160,14 @@ public final class CompiledEvaluator {
 
     /** Whether the block fits the flat plan (else the wrapped reference instance evaluates it). */
     private static boolean flat(BlockPlan plan) {
+        if (plan.chainedTerms > 0 || plan.contributionHedges.length > 0) {
+            return false;       // dialect constructs (fuzzylite): the reference instance evaluates them
+        }
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            if (!rb.and().standard() || !rb.or().standard()) {
+                return false;   // the dialects' other norms: fold below knows Table 3 only
+            }
+        }
         for (Shape s : plan.shapes) {
             if (!s.constant || s.kind != null) {
                 return false;
@@ -290,6 +298,7 @@ public final class CompiledEvaluator {
                 case MIN -> AND_MIN;
                 case PROD -> AND_PROD;
                 case BDIF -> AND_BDIF;
+                default -> GENERAL;     // the dialects' other norms
             };
         }
         if (last == ConditionCode.OR) {
@@ -297,6 +306,7 @@ public final class CompiledEvaluator {
                 case MAX -> OR_MAX;
                 case ASUM -> OR_ASUM;
                 case BSUM -> OR_BSUM;
+                default -> GENERAL;
             };
         }
         return GENERAL;

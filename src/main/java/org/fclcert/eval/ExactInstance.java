@@ -59,6 +59,12 @@ public final class ExactInstance {
     private final Map<Double, Rational> weights = new java.util.HashMap<>();
 
     ExactInstance(BlockPlan plan, NumberReading reading) {
+        // dialect constructs only the fast path evaluates: refused, never computed wrong
+        if (plan.chainedTerms > 0 || plan.contributionHedges.length > 0
+                || java.util.Arrays.stream(plan.shapes).anyMatch(sh -> sh.computed != null)) {
+            throw new IllegalArgumentException("the exact path does not evaluate Takagi-Sugeno terms, hedges in"
+                    + " conclusions or output terms in conditions (dialect constructs); the reference evaluator does");
+        }
         this.plan = plan;
         this.reading = reading;
         int nv = plan.initialValues.length;
@@ -383,6 +389,11 @@ public final class ExactInstance {
             case MIN -> x.min(y);
             case PROD -> x.multiply(y);
             case BDIF -> x.add(y).subtract(Rational.ONE).max(Rational.ZERO);
+            // the dialects' norms (O-OTHER-NORM), rational too
+            case EPROD -> x.multiply(y).divide(Rational.of(2).subtract(x.add(y).subtract(x.multiply(y))));
+            case HPROD -> x.add(y).equals(Rational.ZERO) ? Rational.ZERO : x.multiply(y).divide(x.add(y).subtract(x.multiply(y)));
+            case DPROD -> x.max(y).equals(Rational.ONE) ? x.min(y) : Rational.ZERO;
+            case NMIN -> x.add(y).compareTo(Rational.ONE) > 0 ? x.min(y) : Rational.ZERO;
         };
     }
 
@@ -391,6 +402,11 @@ public final class ExactInstance {
             case MAX -> x.max(y);
             case ASUM -> x.add(y).subtract(x.multiply(y));
             case BSUM -> x.add(y).min(Rational.ONE);
+            case ESUM -> x.add(y).divide(Rational.ONE.add(x.multiply(y)));
+            case HSUM -> x.multiply(y).equals(Rational.ONE) ? Rational.ONE
+                    : x.add(y).subtract(Rational.of(2).multiply(x.multiply(y))).divide(Rational.ONE.subtract(x.multiply(y)));
+            case DSUM -> x.min(y).equals(Rational.ZERO) ? x.max(y) : Rational.ONE;
+            case NMAX -> x.add(y).compareTo(Rational.ONE) < 0 ? x.max(y) : Rational.ONE;
         };
     }
 

@@ -49,7 +49,7 @@ public final class FunctionBlockInstance {
     FunctionBlockInstance(BlockPlan plan) {
         this.plan = plan;
         this.values = plan.initialValues.clone();
-        this.termDegrees = new double[plan.termShape.length];
+        this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         int shapes = plan.shapes.length;
         this.curX = new double[shapes][];
         this.curY = new double[shapes][];
@@ -142,6 +142,9 @@ public final class FunctionBlockInstance {
         }
         resolveVariableShapes();
         fuzzify(trace);
+        for (int t = plan.termShape.length; t < termDegrees.length; t++) {
+            termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
+        }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
@@ -207,14 +210,23 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
+            double ruleDegree = d;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
             for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                org.fclcert.model.Hedge[] hedged = sc.contribution() < 0 || plan.contributionHedges.length == 0 ? null
+                        : plan.contributionHedges[sc.contribution()];
+                d = hedged == null ? ruleDegree : org.fclcert.model.Hedge.applyAll(java.util.List.of(hedged), ruleDegree);
                 double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
                 if (sc.contribution() >= 0) {
                     contributionDegree[sc.contribution()] = d;
                     contributionWeight[sc.contribution()] = w;
+                    int chained = plan.chainedDegree.length == 0 ? -1 : plan.chainedDegree[sc.contribution()];
+                    if (chained >= 0) {
+                        termDegrees[chained] = accumulate(plan.chainedAccumulation[sc.contribution()],
+                                termDegrees[chained], w * d);
+                    }
                 } else {
                     bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w * d);
                 }
@@ -280,6 +292,10 @@ public final class FunctionBlockInstance {
             case MIN -> Math.min(x, y);
             case PROD -> x * y;
             case BDIF -> Math.max(0.0, x + y - 1.0);
+            case EPROD -> x * y / (2 - (x + y - x * y));
+            case HPROD -> x + y == 0 ? 0.0 : x * y / (x + y - x * y);
+            case DPROD -> Math.max(x, y) == 1.0 ? Math.min(x, y) : 0.0;
+            case NMIN -> x + y > 1.0 ? Math.min(x, y) : 0.0;
         };
     }
 
@@ -288,6 +304,10 @@ public final class FunctionBlockInstance {
             case MAX -> Math.max(x, y);
             case ASUM -> x == 1.0 || y == 1.0 ? 1.0 : x + y - x * y;   // exactly 1 when an operand is (NOT of it: 0)
             case BSUM -> Math.min(1.0, x + y);
+            case ESUM -> (x + y) / (1 + x * y);
+            case HSUM -> x * y == 1.0 ? 1.0 : (x + y - 2 * x * y) / (1 - x * y);
+            case DSUM -> Math.min(x, y) == 0.0 ? Math.max(x, y) : 1.0;
+            case NMAX -> x + y < 1.0 ? Math.max(x, y) : 1.0;
         };
     }
 
@@ -298,6 +318,11 @@ public final class FunctionBlockInstance {
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
     private void defuzzify(OutputPlan o, double previousValue, SmoothSet smooth, Trace trace)
             throws EvaluationException {
+        for (int s : o.termShapes()) {
+            if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
+                plan.shapes[s].resolve(values, curX[s], curY[s]);
+            }
+        }
         double result = o.singletons() ? singletons(o, trace) : smooth != null ? smoothSet(o, smooth, trace)
                 : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;

@@ -21,6 +21,8 @@ final class Shape {
     /** A smooth named shape (dialects): its kind and parameters; null for points and singletons. */
     final org.fclcert.model.ShapeKind kind;
     final double[] params;
+    /** A Takagi–Sugeno term (dialects): its value from the variables' values; null for the others. */
+    final java.util.function.ToDoubleFunction<double[]> computed;
 
     /** A smooth named shape: degrees from its formula (no points). */
     Shape(org.fclcert.model.ShapeKind kind, double[] params) {
@@ -35,6 +37,23 @@ final class Shape {
         this.sortedY = new double[0];
         this.kind = kind;
         this.params = params.clone();
+        this.computed = null;
+    }
+
+    /** A Takagi–Sugeno term: a singleton at a value computed from the variables at each evaluation. */
+    Shape(java.util.function.ToDoubleFunction<double[]> computed) {
+        this.singleton = true;
+        this.n = 1;
+        this.xConst = new double[] {0};
+        this.xSlot = new int[] {-1};
+        this.yConst = new double[] {1};
+        this.ySlot = new int[] {-1};
+        this.constant = false;
+        this.sortedX = new double[1];
+        this.sortedY = new double[1];
+        this.kind = null;
+        this.params = null;
+        this.computed = computed;
     }
 
     Shape(boolean singleton, double[] xConst, int[] xSlot, double[] yConst, int[] ySlot) {
@@ -46,6 +65,7 @@ final class Shape {
         this.ySlot = ySlot;
         this.kind = null;
         this.params = null;
+        this.computed = null;
         boolean c = true;
         for (int i = 0; i < n; i++) {
             c &= xSlot[i] < 0 && ySlot[i] < 0;
@@ -60,6 +80,11 @@ final class Shape {
 
     /** Fills {@code x}/{@code y} with the current points, degrees clamped to [0, 1], stably sorted by x. */
     void resolve(double[] values, double[] x, double[] y) {
+        if (computed != null) {
+            x[0] = computed.applyAsDouble(values);
+            y[0] = 1.0;
+            return;
+        }
         for (int i = 0; i < n; i++) {
             x[i] = xSlot[i] < 0 ? xConst[i] : values[xSlot[i]];
             double d = ySlot[i] < 0 ? yConst[i] : values[ySlot[i]];

@@ -25,7 +25,12 @@ public final class ReferenceExportCheck implements ExportCheck {
         if (analysis.program().isEmpty()) {
             String first = analysis.diagnostics().stream().filter(Diagnostic::isError).findFirst()
                     .map(Diagnostic::toString).orElse("no program");
-            return failed("the exported FCL does not read back: " + first);
+            // a library that exports its own dialect (jfuzzylite, jFuzzyLogic): say so, since that is the reason
+            org.fclcert.syntax.dialect.DialectReaders.Choice dialect = org.fclcert.syntax.dialect.DialectReaders.auto(exportedFcl);
+            String which = dialect.dialect() == org.fclcert.syntax.dialect.Dialect.STRICT ? ""
+                    : " (it is written in the " + dialect.dialect().displayName() + " dialect, not standard FCL: "
+                            + dialect.explanation() + ")";
+            return failed("the exported FCL does not read back: " + first + which);
         }
         try {
             return evaluateLikeOriginal(analysis.program().get(), c);

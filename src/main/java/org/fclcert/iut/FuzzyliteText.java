@@ -14,10 +14,6 @@ import java.util.regex.Pattern;
  */
 final class FuzzyliteText {
     private static final Pattern VERSION = Pattern.compile("(?m)^version:\\s*(\\S+)");
-    /** {@code … in line 24: function_block Valve_Control} */
-    private static final Pattern LINE_NUMBER = Pattern.compile("\\bline (\\d+)\\b");
-    /** {@code … in line: METHOD: CoGS} or {@code … from line: FUZZIFY u}: the statement as fuzzylite read it. */
-    private static final Pattern LINE_TEXT = Pattern.compile("\\bline: (.*)$");
 
     private FuzzyliteText() {}
 
@@ -66,31 +62,7 @@ final class FuzzyliteText {
      * the quoted statement. Empty when the message names no line, or the quote matches none.
      */
     static OptionalInt line(String message, String program) {
-        Matcher text = LINE_TEXT.matcher(message);
-        if (text.find()) {
-            String quoted = normalise(text.group(1));
-            String[] lines = program.split("\\R", -1);
-            for (int k = 0; k < lines.length; k++) {
-                if (!quoted.isEmpty() && normalise(lines[k]).equals(quoted)) {
-                    return OptionalInt.of(k + 1);
-                }
-            }
-            return OptionalInt.empty();
-        }
-        Matcher number = LINE_NUMBER.matcher(message);
-        if (number.find()) {
-            try {
-                int n = Integer.parseInt(number.group(1));
-                return n >= 1 ? OptionalInt.of(n) : OptionalInt.empty();
-            } catch (NumberFormatException e) {
-                return OptionalInt.empty();
-            }
-        }
-        return OptionalInt.empty();
-    }
-
-    private static String normalise(String line) {
-        return line.replace(";", " ").strip().replaceAll("\\s+", " ");
+        return LibraryMessages.fuzzyliteLine(message, program);
     }
 
     /**

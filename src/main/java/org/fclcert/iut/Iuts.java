@@ -4,7 +4,8 @@ import java.util.List;
 
 /**
  * Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS}, {@code process:COMMAND},
- * or the built-in adapter for fuzzylite 6.0, {@code fuzzylite} or {@code fuzzylite:PATH}.
+ * or a built-in adapter: fuzzylite 6.0 ({@code fuzzylite} or {@code fuzzylite:PATH}), jfuzzylite 6.0.1
+ * ({@code jfuzzylite} or {@code jfuzzylite:JAR}) and jFuzzyLogic ({@code jfuzzylogic:JAR}).
  */
 public final class Iuts {
     private Iuts() {}
@@ -30,12 +31,48 @@ public final class Iuts {
         if (spec.equals(FuzzyliteIut.SPEC) || spec.startsWith(FuzzyliteIut.SPEC + ":")) {
             return FuzzyliteIut.open(spec, options);
         }
+        if (spec.equals(JfuzzyliteImplementation.SPEC) || spec.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
+            return JfuzzyliteImplementation.open(spec, options);
+        }
+        if (spec.equals(JFuzzyLogicIut.SPEC) || spec.startsWith(JFuzzyLogicIut.SPEC + ":")) {
+            return JFuzzyLogicIut.open(spec, options);
+        }
         if (spec.startsWith("process:")) {
             List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
             return new ProcessIut(spec, command, options);
         }
         throw new IutException(
                 IutException.Kind.INFRA,
-                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND or fuzzylite[:PATH]");
+                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR] or jfuzzylogic:JAR");
+    }
+
+    /**
+     * What a built-in adapter cannot observe of its library, in sentences for the reports (empty for other
+     * specs). The details are in {@code docs/iut-protocol.md}, in the adapter's section.
+     */
+    public static List<String> unobservable(String spec) {
+        String s = spec == null ? "" : spec.strip();
+        if (s.equals(FuzzyliteIut.SPEC) || s.startsWith(FuzzyliteIut.SPEC + ":")) {
+            return List.of("fuzzylite silently drops a rule it cannot read (upper-case IF, IS NOT, comma-separated"
+                    + " conclusions, an undefined term) and still loads: such a rule shows only as wrong values",
+                    "it builds only the first function block of a program",
+                    "see docs/iut-protocol.md, \"fuzzylite\"");
+        }
+        if (s.equals(JfuzzyliteImplementation.SPEC) || s.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
+            return List.of("jfuzzylite builds only the first function block of a program",
+                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                            + " when an instance is made, so a program used directly must set every input",
+                    "a call that hangs cannot be killed in process: it is abandoned on its thread",
+                    "see docs/iut-protocol.md, \"jfuzzylite\"");
+        }
+        if (s.equals(JFuzzyLogicIut.SPEC) || s.startsWith(JFuzzyLogicIut.SPEC + ":")) {
+            return List.of("jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
+                    + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
+                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                            + " when an instance is made, so a program used directly must set every input",
+                    "it runs in a JVM of its own; its static state lives as long as that JVM",
+                    "see docs/iut-protocol.md, \"jFuzzyLogic\"");
+        }
+        return List.of();
     }
 }

@@ -69,6 +69,17 @@ final class JavaIut implements ImplementationUnderTest {
         }
     }
 
+    /**
+     * A built-in adapter that already is an {@link FclImplementation} (for example {@link JfuzzyliteImplementation}),
+     * driven with the same worker thread, timeout and restart budget as a vendor's class. {@code loader}, when
+     * not null, is closed with the session.
+     */
+    static JavaIut wrap(String spec, IutOptions options, FclImplementation adapter, URLClassLoader loader) {
+        JavaIut iut = new JavaIut(spec, options, loader);
+        iut.vendor = adapter;
+        return iut;
+    }
+
     private static URLClassLoader classLoader(List<Path> classpath) throws IutException {
         URL[] urls = new URL[classpath.size()];
         for (int k = 0; k < urls.length; k++) {

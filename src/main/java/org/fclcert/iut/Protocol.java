@@ -107,6 +107,7 @@ final class Protocol {
             return new LoadOutcome.Loaded(blocks);
         }
         JsonNode error = error(reply, "load");
+        internalFailure(error, "load");
         if (!"rejected".equals(error.path("kind").asText())) {
             throw protocol("a failed load must have error kind 'rejected', not '" + error.path("kind").asText() + "'");
         }
@@ -186,11 +187,23 @@ final class Protocol {
             return;
         }
         JsonNode error = error(reply, op);
+        internalFailure(error, op);
         String kind = error.path("kind").asText();
         if (!"error".equals(kind)) {
             throw protocol("a failed '" + op + "' must have error kind 'error', not '" + kind + "'");
         }
         throw new IutException(IutException.Kind.EVAL_ERROR, "the IUT reported an error on '" + op + "': " + message(error));
+    }
+
+    /**
+     * Kind {@code crash}, for any request: the implementation failed inside (an adapter caught an exception
+     * that is a bug of the library, not a refusal). Recorded as a crash; the session goes on.
+     */
+    private static void internalFailure(JsonNode error, String op) throws IutException {
+        if ("crash".equals(error.path("kind").asText())) {
+            throw new IutException(IutException.Kind.CRASH, "the implementation failed internally on '" + op + "': "
+                    + message(error));
+        }
     }
 
     private static void requireOk(JsonNode reply, String op) throws IutException {

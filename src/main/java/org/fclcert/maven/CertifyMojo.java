@@ -121,6 +121,7 @@ public class CertifyMojo extends AbstractMojo {
         getLog().info(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant"));
+        r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
     }
 

@@ -46,4 +46,15 @@ public sealed interface MembershipFunction {
             });
         }
     }
+
+    /**
+     * A Takagi–Sugeno output term (dialects only, Open Level): a crisp value computed from the variables at
+     * each evaluation (fuzzylite {@code Constant}, {@code Linear}, {@code Function}; jFuzzyLogic
+     * {@code function}); defuzzified like a singleton at that value (weighted average of the rules' values).
+     *
+     * @param value   the expression
+     * @param written how the library wrote it, e.g. {@code Linear 75 250}, for messages and conversion
+     */
+    record Computed(Expression value, String written) implements MembershipFunction {
+    }
 }

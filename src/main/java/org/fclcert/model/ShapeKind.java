@@ -38,7 +38,14 @@ public enum ShapeKind {
     /** 1 − S_SHAPE(start, end): a smooth step down. */
     Z_SHAPE("O-SHAPE-Z", false, "start", "end"),
     /** S_SHAPE(bottomLeft, topLeft) · Z_SHAPE(topRight, bottomRight). */
-    PI_SHAPE("O-SHAPE-PI", false, "bottomLeft", "topLeft", "topRight", "bottomRight");
+    PI_SHAPE("O-SHAPE-PI", false, "bottomLeft", "topLeft", "topRight", "bottomRight"),
+    /**
+     * fuzzylite's Concave: rising to 1 at end when inflection &lt; end, (end − inflection) / (2 end − inflection − u)
+     * below end and 1 from it; mirrored (falling) when inflection &gt; end; the degree is ½ at the inflection.
+     */
+    CONCAVE("O-SHAPE-CONCAVE", false, "inflection", "end"),
+    /** fuzzylite's Spike: exp(−|10 (u − center) / width|). */
+    SPIKE("O-SHAPE-SPIKE", false, "center", "width");
 
     private final String featureId;
     private final boolean linear;
@@ -102,6 +109,8 @@ public enum ShapeKind {
             case S_SHAPE -> sShape(u, p[0], p[1]);
             case Z_SHAPE -> 1.0 - sShape(u, p[0], p[1]);
             case PI_SHAPE -> sShape(u, p[0], p[1]) * (1.0 - sShape(u, p[2], p[3]));
+            case CONCAVE -> concave(u, p[0], p[1]);
+            case SPIKE -> Math.exp(-Math.abs(10.0 / p[1] * (u - p[0])));
         };
     }
 
@@ -119,6 +128,8 @@ public enum ShapeKind {
             case COSINE -> new double[] {p[0] - p[1] / 2, p[0], p[0] + p[1] / 2};
             case S_SHAPE, Z_SHAPE -> new double[] {p[0], (p[0] + p[1]) / 2, p[1]};
             case PI_SHAPE -> new double[] {p[0], (p[0] + p[1]) / 2, p[1], p[2], (p[2] + p[3]) / 2, p[3]};
+            case CONCAVE -> new double[] {p[0], p[1]};
+            case SPIKE -> new double[] {p[0]};
         };
     }
 
@@ -149,6 +160,9 @@ public enum ShapeKind {
             case COSINE -> Math.PI / Math.abs(p[1]);
             case S_SHAPE, Z_SHAPE -> 2 / Math.abs(p[1] - p[0]);
             case PI_SHAPE -> 2 / Math.abs(p[1] - p[0]) + 2 / Math.abs(p[3] - p[2]);
+            // d/du (e − i) / (2e − i − u) is steepest at u = e, where it is 1 / |e − i|
+            case CONCAVE -> 1 / Math.abs(p[1] - p[0]);
+            case SPIKE -> 10 / Math.abs(p[1]);
         };
     }
 
@@ -221,6 +235,13 @@ public enum ShapeKind {
 
     private static double sigmoid(double u, double inflection, double slope) {
         return 1.0 / (1.0 + Math.exp(-slope * (u - inflection)));
+    }
+
+    private static double concave(double u, double inflection, double end) {
+        if (inflection <= end) {
+            return u < end ? (end - inflection) / (2 * end - inflection - u) : 1.0;
+        }
+        return u > end ? (inflection - end) / (inflection - 2 * end + u) : 1.0;
     }
 
     private static double sShape(double u, double start, double end) {

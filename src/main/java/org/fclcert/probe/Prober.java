@@ -193,6 +193,11 @@ public final class Prober {
     }
 
     private static Attempt fault(IutException e) {
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        if (e.kind() == IutException.Kind.EVAL_ERROR && message.startsWith(WORKLOAD_REJECTED)) {
+            // the workload never loaded: saying "loaded, then refused to evaluate" would contradict the reason
+            return new Attempt(Result.FAULT, "rejected at load (" + shorten(message.substring(WORKLOAD_REJECTED.length())) + ")");
+        }
         String what = switch (e.kind()) {
             case EVAL_ERROR -> "loaded, then refused to evaluate";
             case CRASH -> "crashed";
@@ -461,10 +466,12 @@ public final class Prober {
                 String.join("; ", notes));
     }
 
+    private static final String WORKLOAD_REJECTED = "the workload was rejected: ";
+
     private ImplementationUnderTest loadWorkload() throws IutException {
         LoadOutcome o = iut.load(Families.workload());
         if (o instanceof LoadOutcome.Rejected r) {
-            throw new IutException(IutException.Kind.EVAL_ERROR, "the workload was rejected: " + r.message());
+            throw new IutException(IutException.Kind.EVAL_ERROR, WORKLOAD_REJECTED + r.message());
         }
         return iut;
     }
@@ -556,7 +563,9 @@ public final class Prober {
                             + WARMUP_EVALS + " times", "approximate: JVM-wide heap, garbage collection makes it noisy");
         }
         return entry(Table11.MEMORY, "", DataCheckEntry.NOT_MEASURED, "", memoryNote.isEmpty()
-                ? "not measurable for this IUT" : memoryNote);
+                ? "not measurable for this IUT: it reports no process memory (only a process IUT on Linux does) and"
+                        + " the in-process heap was not sampled (the workload was not run)"
+                : memoryNote);
     }
 
     private DataCheckEntry resolution(long rowDeadline) {

@@ -77,6 +77,8 @@ public final class HtmlReport {
         table(10, "Table 10: Open Level features");
         dataCheckList();
         claimsAndInterpretation();
+        export();
+        causes();
         cases();
         out.append("</main><script>").append(SCRIPT).append("</script></body></html>\n");
         return out.toString();
@@ -86,10 +88,15 @@ public final class HtmlReport {
         out.append("<h1>FCL compliance statement: ").append(Texts.html(r.iut().name() + " " + r.iut().version()))
                 .append("</h1>\n<p class=\"meta\">IEC 61131-7 clause 6.1, measured by fclcert ")
                 .append(Texts.html(r.toolkit().version())).append(" on ").append(Texts.html(r.generatedAt()))
-                .append("<br>Implementation <code>").append(Texts.html(r.iut().spec())).append("</code>")
+                .append("<br>Implementation: ").append(Texts.html(Texts.implementation(r)).replaceAll("`([^`]*)`", "<code>$1</code>"))
                 .append(" · corpus <code>").append(Texts.html(r.corpus().dir())).append("</code>, ")
                 .append(r.corpus().cases()).append(" cases, sha256 <code>").append(Texts.html(r.corpus().sha256()))
                 .append("</code></p>\n");
+        List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
+        if (!unseen.isEmpty()) {
+            out.append("<p class=\"small\">What the adapter cannot observe: ").append(Texts.html(String.join("; ", unseen)))
+                    .append("</p>\n");
+        }
         boolean ok = r.basicLevel().conformant();
         out.append("<div class=\"verdict ").append(ok ? "ok" : "no").append("\">Basic Level: ")
                 .append(ok ? "conformant" : "not conformant").append("<div class=\"small\">")
@@ -184,11 +191,45 @@ public final class HtmlReport {
             out.append("<p>None in this run.</p>\n");
             return;
         }
-        out.append("<p class=\"small\">Reported apart; counted against no verdict.</p><table><tr><th>Case</th>")
-                .append("<th>Point</th><th>Status</th><th>Message</th></tr>\n");
-        r.interpretation().forEach(i -> out.append("<tr><td>").append(links(List.of(i.id()))).append("</td><td>")
-                .append(Texts.html(i.flag())).append("</td><td><span class=\"st ").append(i.status()).append("\">")
-                .append(i.status()).append("</span></td><td>").append(Texts.html(i.message())).append("</td></tr>\n"));
+        out.append("<p class=\"small\">Reported apart; counted against no verdict.</p>");
+        List<Report.InterpretationEntry> telling = r.interpretation().stream().filter(i -> !i.rejectedAtLoad()).toList();
+        if (telling.isEmpty()) {
+            out.append("<p>No case reached the point it depends on.</p>\n");
+        } else {
+            out.append("<table><tr><th>Case</th><th>Point</th><th>Status</th><th>Message</th></tr>\n");
+            telling.forEach(i -> out.append("<tr><td>").append(links(List.of(i.id()))).append("</td><td>")
+                    .append(Texts.html(i.flag())).append("</td><td><span class=\"st ").append(i.status()).append("\">")
+                    .append(i.status()).append("</span></td><td>").append(Texts.html(i.message())).append("</td></tr>\n"));
+            out.append("</table>\n");
+        }
+        List<Report.InterpretationEntry> rejected = r.interpretation().stream()
+                .filter(Report.InterpretationEntry::rejectedAtLoad).toList();
+        if (!rejected.isEmpty()) {
+            out.append("<p>Rejected at load for a reason of the implementation's own dialect, so they say nothing about"
+                    + " the point they depend on: ");
+            for (int k = 0; k < rejected.size(); k++) {
+                out.append(k == 0 ? "" : ", ").append(links(List.of(rejected.get(k).id()))).append(" (")
+                        .append(Texts.html(rejected.get(k).cause())).append(')');
+            }
+            out.append(".</p>\n");
+        }
+    }
+
+    private void export() {
+        out.append("<h2>FCL export (clause 6 e)</h2>\n<p>").append(Texts.html(Texts.exportSummary(r.cases())))
+                .append("</p>\n");
+    }
+
+    private void causes() {
+        out.append("<h2>Failures by cause</h2>\n");
+        if (r.causes().isEmpty()) {
+            out.append("<p>No case failed or errored.</p>\n");
+            return;
+        }
+        out.append("<table><tr><th>Cases</th><th>Outcome</th><th>Cause</th><th>Case ids</th></tr>\n");
+        r.causes().forEach(c -> out.append("<tr><td>").append(c.count()).append("</td><td>").append(Texts.html(c.kind()))
+                .append("</td><td>").append(Texts.html(c.cause()).replaceAll("`([^`]*)`", "<code>$1</code>"))
+                .append("</td><td>").append(links(c.cases())).append("</td></tr>\n"));
         out.append("</table>\n");
     }
 

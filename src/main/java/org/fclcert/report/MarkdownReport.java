@@ -35,6 +35,7 @@ public final class MarkdownReport {
         interpretation();
         export();
         dataCheckList();
+        causes();
         failures();
         notes();
         return out.toString();
@@ -50,8 +51,11 @@ public final class MarkdownReport {
         line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
                 + ".");
         line("");
-        line("- Implementation: `" + r.iut().spec() + "`"
-                + (r.iut().command() == null || r.iut().command().isBlank() ? "" : " (" + r.iut().command() + ")"));
+        line("- Implementation: " + Texts.implementation(r));
+        java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
+        if (!unseen.isEmpty()) {
+            line("- What the adapter cannot observe: " + String.join("; ", unseen));
+        }
         line("- Corpus: `" + r.corpus().dir() + "`, " + r.corpus().cases() + " cases, sha256 `" + r.corpus().sha256()
                 + "`");
         Report.Summary s = r.summary();
@@ -175,10 +179,22 @@ public final class MarkdownReport {
         } else {
             line("Not counted against any verdict (see docs/semantics.md).");
             line("");
-            line("| Case | Point | Status | Message |");
-            line("| --- | --- | --- | --- |");
-            r.interpretation().forEach(i -> line("| " + i.id() + " | " + i.flag() + " | " + i.status() + " | "
-                    + Texts.cell(i.message()) + " |"));
+            List<Report.InterpretationEntry> telling = r.interpretation().stream().filter(i -> !i.rejectedAtLoad()).toList();
+            if (telling.isEmpty()) {
+                line("No case reached the point it depends on.");
+            } else {
+                line("| Case | Point | Status | Message |");
+                line("| --- | --- | --- | --- |");
+                telling.forEach(i -> line("| " + i.id() + " | " + i.flag() + " | " + i.status() + " | "
+                        + Texts.cell(i.message()) + " |"));
+            }
+            List<String> rejected = r.interpretation().stream().filter(Report.InterpretationEntry::rejectedAtLoad)
+                    .map(i -> i.id() + " (" + i.cause() + ")").toList();
+            if (!rejected.isEmpty()) {
+                line("");
+                line("Rejected at load for a reason of the implementation's own dialect, so they say nothing about the"
+                        + " point they depend on: " + String.join(", ", rejected) + ".");
+            }
         }
         line("");
     }
@@ -186,10 +202,7 @@ public final class MarkdownReport {
     private void export() {
         line("## FCL export (clause 6 e)");
         line("");
-        Map<ExportStatus, Integer> counts = new LinkedHashMap<>();
-        r.cases().forEach(c -> counts.merge(c.export().status(), 1, Integer::sum));
-        line(counts.entrySet().stream().map(e -> e.getValue() + " " + e.getKey().word())
-                .reduce((a, b) -> a + ", " + b).orElse("no case") + ".");
+        line(Texts.exportSummary(r.cases()));
         r.cases().stream().filter(c -> c.export().status() == ExportStatus.FAILED)
                 .forEach(c -> line("- " + c.id() + ": " + Texts.cell(c.export().message())));
         line("");
@@ -208,6 +221,24 @@ public final class MarkdownReport {
             line("");
             line("How each row is measured: docs/data-check-list.md; the method of each row is in report.json.");
         }
+        line("");
+    }
+
+    private void causes() {
+        line("## Failures by cause");
+        line("");
+        if (r.causes().isEmpty()) {
+            line("No case failed or errored.");
+            line("");
+            return;
+        }
+        line("Derived from the implementation's messages, or from the case's feature and the kind of deviation"
+                + " (docs/report-format.md, \"Causes\"); interpretation cases are left out.");
+        line("");
+        line("| Cases | Outcome | Cause | Case ids |");
+        line("| --- | --- | --- | --- |");
+        r.causes().forEach(c -> line("| " + c.count() + " | " + c.kind() + " | " + Texts.cell(c.cause()) + " | "
+                + String.join(", ", c.cases()) + " |"));
         line("");
     }
 

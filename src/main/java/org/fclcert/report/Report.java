@@ -26,6 +26,7 @@ public record Report(
         List<DataCheckEntry> dataCheckList,
         List<InterpretationEntry> interpretation,
         Claims claims,
+        List<Causes.Cause> causes,
         List<CaseResult> cases) {
 
     public static final int FORMAT_VERSION = 1;
@@ -34,6 +35,7 @@ public record Report(
         features = List.copyOf(features);
         dataCheckList = List.copyOf(dataCheckList);
         interpretation = List.copyOf(interpretation);
+        causes = causes == null ? List.of() : List.copyOf(causes);
         cases = List.copyOf(cases);
     }
 
@@ -75,18 +77,48 @@ public record Report(
     public record BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
     }
 
-    /** One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded). */
+    /**
+     * One row of Table 8, 9 or 10 with the cases that are evidence for it (interpretation cases excluded).
+     * {@code status} and the counts are the language verdict: the corpus programs as the standard writes them.
+     * {@code semantic} is the second verdict — the same cases sent in the implementation's own layout — when
+     * that axis was run; null (absent from report.json) otherwise.
+     */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed) {
+            List<String> notPassed, Semantic semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
         }
+
+        /** A row with the language verdict only. */
+        public FeatureRow(String id, int table, String level, String element, String description,
+                FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
+                List<String> notPassed) {
+            this(id, table, level, element, description, status, passed, failed, errored, skipped, cases, notPassed,
+                    null);
+        }
     }
 
-    /** A case that depends on a reading of the standard: shown on its own, counted against no verdict. */
-    public record InterpretationEntry(String id, String title, String flag, String status, String message) {
+    /**
+     * The semantic verdict of a feature row: of {@code total} cases the implementation's dialect can express,
+     * {@code passed} computed the standard's values when sent in that layout.
+     */
+    public record Semantic(FeatureStatus status, int passed, int total) {
+    }
+
+    /**
+     * A case that depends on a reading of the standard: shown on its own, counted against no verdict. {@code
+     * cause} is set when the implementation rejected the program at load (a reason of its own dialect, which
+     * says nothing about the point the case depends on); null otherwise.
+     */
+    public record InterpretationEntry(String id, String title, String flag, String status, String message,
+            String cause) {
+        /** Rejected at load: the case never reached the point it depends on. */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public boolean rejectedAtLoad() {
+            return cause != null;
+        }
     }
 
     /**

@@ -37,7 +37,7 @@ public final class ReportBuilder {
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
                 summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
-                claims(header.iut().claims(), features), cases);
+                claims(header.iut().claims(), features), Causes.of(cases), cases);
     }
 
     static final String NOT_RUN = "not run: the run ended before this case";
@@ -137,7 +137,7 @@ public final class ReportBuilder {
     private static List<Report.InterpretationEntry> interpretation(List<CaseResult> cases) {
         return cases.stream().filter(CaseResult::interpretation)
                 .map(c -> new Report.InterpretationEntry(c.id(), c.title(), interpretationFlag(c), c.status().word(),
-                        c.message()))
+                        c.message(), Causes.rejectionCause(c).orElse(null)))
                 .toList();
     }
 

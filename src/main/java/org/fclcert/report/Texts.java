@@ -117,4 +117,48 @@ final class Texts {
         return (d.bound().equals(org.fclcert.probe.DataCheckEntry.AT_LEAST) && number ? "≥ " : "") + d.value()
                 + (number ? " " + d.unit() : "");
     }
+
+    /** Why a case's export was not checked, for the export summary ("72 negative cases", …). */
+    static String exportNotRunReason(org.fclcert.harness.CaseResult c) {
+        if (c.status() == org.fclcert.harness.CaseStatus.SKIPPED) {
+            return "the case was not run";
+        }
+        if (c.status() == org.fclcert.harness.CaseStatus.ERRORED) {
+            return "the implementation broke down during the case";
+        }
+        if ("load and evaluate".equals(CaseFacts.expected(c))) {
+            return "the program was rejected at load";
+        }
+        if (CaseFacts.expected(c) instanceof String) {
+            return "a negative case (nothing to export)";
+        }
+        return "not checked";
+    }
+
+    /** {@code 193 not-run (121: the program was rejected at load; 72: a negative case (nothing to export))}. */
+    static String exportSummary(java.util.List<org.fclcert.harness.CaseResult> cases) {
+        java.util.Map<org.fclcert.harness.ExportStatus, Integer> counts = new java.util.LinkedHashMap<>();
+        cases.forEach(c -> counts.merge(CaseFacts.exportStatus(c), 1, Integer::sum));
+        java.util.Map<String, Integer> reasons = new java.util.LinkedHashMap<>();
+        cases.stream().filter(c -> CaseFacts.exportStatus(c) == org.fclcert.harness.ExportStatus.NOT_RUN)
+                .forEach(c -> reasons.merge(exportNotRunReason(c), 1, Integer::sum));
+        String why = reasons.entrySet().stream().sorted(java.util.Map.Entry.<String, Integer>comparingByValue().reversed())
+                .map(e -> e.getValue() + ": " + e.getKey()).reduce((a, b) -> a + "; " + b).orElse("");
+        return counts.entrySet().stream().map(e -> e.getValue() + " " + e.getKey().word()
+                        + (e.getKey() == org.fclcert.harness.ExportStatus.NOT_RUN ? " (" + why + ")"
+                        : e.getKey() == org.fclcert.harness.ExportStatus.UNSUPPORTED ? " (the implementation does not export FCL)" : ""))
+                .reduce((a, b) -> a + ", " + b).orElse("no case") + ".";
+    }
+
+    /** The header's implementation line: its name and version, then how it was reached. */
+    static String implementation(Report r) {
+        String spec = r.iut().spec();
+        String command = r.iut().command();
+        String how = spec == null || spec.isBlank() ? command : spec;
+        String out = r.iut().name() + " " + r.iut().version() + ", reached as `" + how + "`";
+        if (command != null && !command.isBlank() && !command.equals(how)) {
+            out += " (" + command + ")";
+        }
+        return out;
+    }
 }

@@ -125,6 +125,10 @@ public final class CanonicalWriter {
                     "a " + named.kind() + " shape is not expressible in standard FCL; convert it first"
                             + " (ShapePoints.approximate)")).stream().map(CanonicalWriter::point).toList());
         }
+        if (f instanceof MembershipFunction.Computed computed) {
+            throw new IllegalArgumentException("a Takagi-Sugeno term (" + computed.written() + ") is not expressible"
+                    + " in standard FCL");
+        }
         List<String> points = ((Points) f).points().stream().map(CanonicalWriter::point).toList();
         return String.join(" ", points);
     }

@@ -34,6 +34,11 @@ final class DialectSyntaxText {
             case O_LOCK_RANGE -> "left out (fclcert's CoG, CoA, LM, RM and MoM on point and shape terms stay in the RANGE)";
             case O_RULE_WITHOUT_SEMICOLON -> "written with ';'";
             case O_CONCLUSION_AND -> "written with ',' between the subconclusions";
+            case O_UNNAMED_BLOCK -> "written with the name the reader gave it";
+            case O_BLOCK_NAME_VERBATIM -> "written as the identifier the reader made of it";
+            case O_DECLARATION_RANGE -> "an output's range is written as its RANGE, an input's is left out";
+            case O_TRAILING_TEXT -> "left out (the library ignores it)";
+            case O_IMPLIED_RANGE -> "written as the output's RANGE (the universe the library implies)";
             default -> "written in standard syntax";
         };
     }

@@ -128,7 +128,8 @@ public final class StandardConversion {
             StandardConversion::defaults);
 
     /** Reader-recorded constructs another conversion judges (their finding comes from there). */
-    private static final Set<Feature> JUDGED_ELSEWHERE = Set.of(Feature.O_DEFAULT_NAN);
+    private static final Set<Feature> JUDGED_ELSEWHERE = Set.of(Feature.O_DEFAULT_NAN, Feature.O_TAKAGI_SUGENO,
+            Feature.O_UNPAIRED_OPERATORS);
 
     public Result convert(Program program) {
         return convert(program, Options.DEFAULT);
@@ -155,10 +156,118 @@ public final class StandardConversion {
             if (JUDGED_ELSEWHERE.contains(u.feature())) {
                 continue;
             }
+            if (u.feature() == Feature.O_HEDGE_IN_CONCLUSION) {
+                findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("left out"),
+                        "a hedge in a conclusion (applied to the rule's degree): standard conclusions have none"));
+                continue;
+            }
+            if (u.feature() == Feature.O_OUTPUT_CONDITION) {
+                findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("kept as read"),
+                        "a condition on an output's term (the degree it has reached so far): standard conditions"
+                                + " read inputs only (5.2.4)"));
+                continue;
+            }
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
                     DialectSyntaxText.standardForm(u.feature())));
         }
-        return program;
+        return unpairedOperators(program, findings);
+    }
+
+    /**
+     * AND and OR outside Table 3 (fuzzylite): the one of the two no rule of the block uses is left out (exact);
+     * a block whose rules use both has no standard spelling.
+     */
+    private static Program unpairedOperators(Program program, List<Finding> findings) {
+        program = otherNorms(program, findings);
+        Set<SourceLocation> at = new java.util.HashSet<>();
+        program.dialectFeatures().stream().filter(u -> u.feature() == Feature.O_UNPAIRED_OPERATORS)
+                .forEach(u -> at.add(u.location()));
+        if (at.isEmpty()) {
+            return program;
+        }
+        List<FunctionBlock> blocks = new ArrayList<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<RuleBlock> rbs = new ArrayList<>();
+            for (RuleBlock rb : fb.ruleBlocks()) {
+                if (!at.contains(rb.location())) {
+                    rbs.add(rb);
+                    continue;
+                }
+                boolean usesAnd = rb.rules().stream().anyMatch(r -> uses(r.condition(), true));
+                boolean usesOr = rb.rules().stream().anyMatch(r -> uses(r.condition(), false));
+                String id = Feature.O_UNPAIRED_OPERATORS.id();
+                if (!usesOr) {
+                    findings.add(new Finding(id, rb.location(), new Kind.Exact(), "rule block '" + rb.name()
+                            + "': OR is left out (no rule uses it)"));
+                    rbs.add(new RuleBlock(rb.name(), rb.and(), Optional.empty(), rb.activation(), rb.accumulation(),
+                            rb.rules(), rb.location()));
+                } else if (!usesAnd) {
+                    findings.add(new Finding(id, rb.location(), new Kind.Exact(), "rule block '" + rb.name()
+                            + "': AND is left out (no rule uses it)"));
+                    rbs.add(new RuleBlock(rb.name(), Optional.empty(), rb.or(), rb.activation(), rb.accumulation(),
+                            rb.rules(), rb.location()));
+                } else {
+                    findings.add(new Finding(id, rb.location(), new Kind.NotExpressible("the pair of its AND"),
+                            "rule block '" + rb.name() + "' uses AND " + rb.and().get().value() + " and OR "
+                                    + rb.or().get().value() + ", which standard FCL only pairs as Table 3 says"));
+                    rbs.add(new RuleBlock(rb.name(), rb.and(), rb.and().map(a -> new Located<>(a.value().pair(),
+                            rb.or().get().location())), rb.activation(), rb.accumulation(), rb.rules(), rb.location()));
+                }
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(), rbs,
+                    fb.options(), fb.location()));
+        }
+        return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    /** AND / OR outside Table 3 (Einstein, Hamacher, drastic, nilpotent): not expressible; MIN / MAX written. */
+    private static Program otherNorms(Program program, List<Finding> findings) {
+        List<FunctionBlock> blocks = new ArrayList<>();
+        boolean changed = false;
+        for (FunctionBlock fb : program.functionBlocks()) {
+            List<RuleBlock> rbs = new ArrayList<>();
+            for (RuleBlock rb : fb.ruleBlocks()) {
+                var and = rb.and();
+                var or = rb.or();
+                if (and.isPresent() && !and.get().value().standard()) {
+                    findings.add(new Finding(Feature.O_OTHER_NORM.id(), and.get().location(),
+                            new Kind.NotExpressible("AND : MIN"), "AND " + and.get().value() + " of rule block "
+                                    + rb.name() + " is not an algorithm of Table 3"));
+                    and = Optional.of(new Located<>(org.fclcert.model.AndAlgorithm.MIN, and.get().location()));
+                    changed = true;
+                }
+                if (or.isPresent() && !or.get().value().standard()) {
+                    findings.add(new Finding(Feature.O_OTHER_NORM.id(), or.get().location(),
+                            new Kind.NotExpressible("OR : MAX"), "OR " + or.get().value() + " of rule block "
+                                    + rb.name() + " is not an algorithm of Table 3"));
+                    or = Optional.of(new Located<>(org.fclcert.model.OrAlgorithm.MAX, or.get().location()));
+                    changed = true;
+                }
+                rbs.add(new RuleBlock(rb.name(), and, or, rb.activation(), rb.accumulation(), rb.rules(), rb.location()));
+            }
+            blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(), rbs,
+                    fb.options(), fb.location()));
+        }
+        return changed ? new Program(program.sourceName(), blocks, program.dialectFeatures()) : program;
+    }
+
+    private static boolean uses(Condition c, boolean and) {
+        if (and ? c instanceof Condition.And : c instanceof Condition.Or) {
+            return true;
+        }
+        if (c instanceof Condition.And a) {
+            return a.operands().stream().anyMatch(x -> uses(x, and));
+        }
+        if (c instanceof Condition.Or o) {
+            return o.operands().stream().anyMatch(x -> uses(x, and));
+        }
+        if (c instanceof Condition.Not n) {
+            return uses(n.operand(), and);
+        }
+        if (c instanceof Condition.Parenthesized p) {
+            return uses(p.inner(), and);
+        }
+        return false;
     }
 
     /** Every term's membership function in a form of 5.2.2 (points or a singleton). */
@@ -235,6 +344,21 @@ public final class StandardConversion {
             findings.add(new Finding(id, t.location(), new Kind.NotExpressible("points approximating it"),
                     "term '" + t.name() + "' of " + owner + " is a " + shape.kind().name().toLowerCase(Locale.ROOT).replace('_', ' ') + " curve: " + why));
             return new Term(t.name(), new MembershipFunction.Points(a.points()), t.location());
+        }
+        if (f instanceof MembershipFunction.Computed computed) {
+            String id = org.fclcert.model.Feature.O_TAKAGI_SUGENO.id();
+            if (computed.value().variables().isEmpty()) {
+                double v = computed.value().evaluate(name -> 0);
+                findings.add(new Finding(id, t.location(), new Kind.Exact(), "term '" + t.name() + "' of " + owner
+                        + " (" + computed.written() + ") written as the singleton " + num(v)));
+                return new Term(t.name(), new MembershipFunction.Singleton(org.fclcert.model.Literal.of(v)), t.location());
+            }
+            findings.add(new Finding(id, t.location(), new Kind.NotExpressible("a singleton at its value for inputs 0"),
+                    "term '" + t.name() + "' of " + owner + " is a Takagi-Sugeno term (" + computed.written()
+                            + "): its value depends on " + String.join(", ", computed.value().variables())
+                            + ", and standard FCL output terms are constants or fuzzy sets"));
+            return new Term(t.name(), new MembershipFunction.Singleton(org.fclcert.model.Literal.of(computed.value().evaluate(name -> 0))),
+                    t.location());
         }
         findings.add(new Finding("term '" + t.name() + "'", t.location(), new Kind.NotExpressible("kept as read"),
                 "term '" + t.name() + "': no conversion to points is known for its membership function"));
@@ -376,7 +500,14 @@ public final class StandardConversion {
             List<RuleBlock> ruleBlocks = new ArrayList<>();
             for (RuleBlock rb : fb.ruleBlocks()) {
                 Optional<Located<AccumulationMethod>> accu = rb.accumulation();
-                if (accu.isPresent() && !accu.get().value().standard()) {
+                if (accu.isPresent() && !accu.get().value().standard() && oneContributionPerSingleton(fb, rb)) {
+                    String id = accu.get().value() == AccumulationMethod.SUM ? Feature.O_ACCU_SUM.id()
+                            : Feature.O_ACCU_PROBOR.id();
+                    findings.add(new Finding(id, accu.get().location(), new Kind.Exact(), "ACCU " + accu.get().value()
+                            + " of rule block " + rb.name() + " written as MAX: it concludes only singleton outputs,"
+                            + " each term by one rule, so no degrees are ever accumulated"));
+                    accu = Optional.of(new Located<>(AccumulationMethod.MAX, accu.get().location()));
+                } else if (accu.isPresent() && !accu.get().value().standard()) {
                     AccumulationMethod m = accu.get().value();
                     AccumulationMethod replacement = m == AccumulationMethod.SUM ? AccumulationMethod.BSUM
                             : AccumulationMethod.MAX;
@@ -394,6 +525,36 @@ public final class StandardConversion {
                     ruleBlocks, fb.options(), fb.location()));
         }
         return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    /**
+     * Whether every output the rule block concludes has singleton (or Takagi–Sugeno) terms only, and each of its
+     * terms is concluded by one rule of the function block at most: then every accumulation gives each term its
+     * one degree, whatever the method.
+     */
+    private static boolean oneContributionPerSingleton(FunctionBlock fb, RuleBlock rb) {
+        Set<String> mine = new java.util.HashSet<>();
+        rb.rules().forEach(r -> r.conclusion().forEach(c -> mine.add(org.fclcert.model.Names.key(c.variable()))));
+        for (String v : mine) {
+            Optional<Defuzzification> d = fb.defuzzification(v);
+            if (d.isEmpty() || d.get().terms().isEmpty() || !d.get().terms().stream().allMatch(t ->
+                    t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed)) {
+                return false;
+            }
+        }
+        Set<String> seen = new java.util.HashSet<>();
+        for (RuleBlock b : fb.ruleBlocks()) {
+            for (Rule r : b.rules()) {
+                for (var c : r.conclusion()) {
+                    String key = org.fclcert.model.Names.key(c.variable()) + '\0'
+                            + org.fclcert.model.Names.key(c.term().orElse(""));
+                    if (mine.contains(org.fclcert.model.Names.key(c.variable())) && (c.term().isEmpty() || !seen.add(key))) {
+                        return false;
+                    }
+                }
+            }
+        }
+        return true;
     }
 
     /**

@@ -109,10 +109,12 @@ final class NumericOracle {
                 case MIN -> Math.min(acc, b);
                 case PROD -> acc * b;
                 case BDIF -> Math.max(0, acc + b - 1);
+                default -> throw new IllegalArgumentException("the oracle knows the algorithms of Table 3 only");
             } : switch (or) {
                 case MAX -> Math.max(acc, b);
                 case ASUM -> acc + b - acc * b;
                 case BSUM -> Math.min(1, acc + b);
+                default -> throw new IllegalArgumentException("the oracle knows the algorithms of Table 3 only");
             };
         }
         return acc;

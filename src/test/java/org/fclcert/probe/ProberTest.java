@@ -118,6 +118,20 @@ class ProberTest {
     }
 
     @Test
+    void aWorkloadRejectedAtLoadIsSaidSoAndMemoryNotMeasuredGivesThatReason() throws Exception {
+        // the real jfuzzylite (a test dependency) rejects the standard's 'METHOD: CoGS;' of the workload
+        Map<String, DataCheckEntry> rows = probe(() -> org.fclcert.iut.Iuts.open("jfuzzylite",
+                org.fclcert.iut.IutOptions.defaults()), 16, Table11.EXECUTION_TIME, Table11.MEMORY);
+        DataCheckEntry time = rows.get("execution-time-ms");
+        assertEquals(DataCheckEntry.NOT_MEASURED, time.bound());
+        assertEquals("the workload failed: rejected at load (jfuzzylite: [syntax error] unexpected token <METHOD:>)",
+                time.note());
+        DataCheckEntry memory = rows.get("memory-kb");
+        assertEquals(DataCheckEntry.NOT_MEASURED, memory.bound());
+        assertEquals(time.note(), memory.note());
+    }
+
+    @Test
     void silentlyDroppedRulesAreCalledOut() throws Exception {
         DataCheckEntry e = probe(ProbeFakes.DropsRulesAfterTen::new, 64, Table11.RULES_PER_BLOCK)
                 .get("max-rules-per-block");

@@ -78,7 +78,7 @@ class RenderersTest {
         cases.add(garbage);
         Report r = new Report(1, REPORT.generatedAt(), REPORT.iut(), REPORT.toolkit(), REPORT.corpus(), REPORT.run(),
                 new Report.Summary(9, 3, 3, 2, 1), REPORT.rejections(), REPORT.basicLevel(), REPORT.features(), List.of(),
-                REPORT.interpretation(), REPORT.claims(), cases);
+                REPORT.interpretation(), REPORT.claims(), REPORT.causes(), cases);
         Document doc = DocumentBuilderFactory.newInstance().newDocumentBuilder()
                 .parse(new ByteArrayInputStream(JunitReport.render(r).getBytes(StandardCharsets.UTF_8)));
         Element suite = doc.getDocumentElement();

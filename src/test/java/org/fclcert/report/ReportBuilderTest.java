@@ -82,7 +82,7 @@ class ReportBuilderTest {
     void interpretationCasesAreListedApart() {
         Report r = report(List.of());
         assertEquals(List.of(new Report.InterpretationEntry("E-COG-INT-001", "title of E-COG-INT-001",
-                "interpretation:3", "failed", "step 1 of 1: y = 1.0 where 2.0 is expected")), r.interpretation());
+                "interpretation:3", "failed", "step 1 of 1: y = 1.0 where 2.0 is expected", null)), r.interpretation());
     }
 
     @Test

@@ -38,6 +38,13 @@ public interface FclImplementation {
      * Reads and prepares a program. A program the implementation does not accept must come back as
      * {@link FclLoadResult#rejected(String, int)} with the line of the first error; throwing is reported
      * as a crash.
+     *
+     * <p>Many libraries signal every refusal by throwing. An adapter for one must turn into a rejection only
+     * the exceptions the library throws on purpose (its own exception type, its parser's exceptions) and let
+     * everything else propagate: catching {@code Exception} wholesale would make a {@code NullPointerException}
+     * or an {@code ArrayIndexOutOfBoundsException} inside the library — a bug — look like a clean rejection,
+     * and a negative case would pass for the wrong reason. fclcert's own adapters show how
+     * ({@code docs/iut-protocol.md}, "jfuzzylite" and "jFuzzyLogic").
      */
     FclLoadResult load(String fcl);
 }

@@ -15,6 +15,6 @@ public interface FclInstance {
     /** The value of an output variable after the last {@link #evaluate()}. */
     double get(String name);
 
-    /** Back to the initial state, as if newly created. */
+    /** Back to the initial state, as if newly created (see {@link FclProgram#newInstance}). */
     void reset();
 }

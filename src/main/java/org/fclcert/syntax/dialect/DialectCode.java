@@ -38,7 +38,7 @@ public enum DialectCode implements DiagnosticCode {
     FFLL_RANGES_DISAGREE("FCL-D120", Severity.WARNING, "5.2.3",
             "an output whose RANGE and RANGE comment disagree; fclcert uses the RANGE"),
 
-    // the jFuzzyLogic and fuzzylite readers (one shared reader, LibraryDialectParser): FCL-S3nn errors, FCL-W3nn
+    // the jFuzzyLogic and fuzzylite readers (one shared reading core, DialectParser, with a LibraryDialect strategy each): FCL-S3nn errors, FCL-W3nn
     // warnings where the library gives the program another meaning than fclcert reads
     UNEXPECTED_CHARACTER("FCL-S301", Severity.ERROR, "IEC 61131-3 B.1",
             "a character the dialect does not accept"),
@@ -60,6 +60,8 @@ public enum DialectCode implements DiagnosticCode {
             "outputs concluded by one rule block with different ACCU in their DEFUZZIFY blocks (fuzzylite)"),
     STATEMENT_SPANS_LINES("FCL-S310", Severity.ERROR, "5.4",
             "a rule or term continued on another line; fuzzylite reads one statement per line"),
+    DIALECT_UNCLEAR("FCL-S311", Severity.ERROR, "—",
+            "--dialect auto found signs of several libraries, none clearly ahead; name the dialect with --dialect"),
     TOO_MANY_ERRORS("FCL-S399", Severity.ERROR, "—",
             "more errors than the reader reports (the rest are not reported)"),
     COUPLED_AND_OR("FCL-W301", Severity.WARNING, "Table 3",
@@ -75,7 +77,18 @@ public enum DialectCode implements DiagnosticCode {
     COGS_PER_RULE("FCL-W306", Severity.WARNING, "Table 5",
             "fuzzylite's COGS counts every rule separately; fclcert accumulates per term first (Table 5)"),
     NSUM_AS_BSUM("FCL-W307", Severity.WARNING, "Table 5",
-            "the library computes NSUM as BSUM; fclcert normalises (Table 5)");
+            "the library computes NSUM as BSUM; fclcert normalises (Table 5)"),
+    TOLERATED("FCL-W308", Severity.WARNING, "5.4",
+            "a construct the library tolerates and the standard does not (text after END_FUNCTION_BLOCK, a block"
+                    + " name that is no identifier, AND/OR outside the pairs of Table 3); read as the library reads it"),
+    IMPLIED_RANGE("FCL-W309", Severity.WARNING, "5.2.3",
+            "an output without RANGE that needs one: the library defuzzifies over the span of its terms, read as that"
+                    + " RANGE"),
+    WEIGHT_BEFORE_ACTIVATION("FCL-W310", Severity.WARNING, "5.2.4",
+            "fuzzylite multiplies a rule's degree by its WITH weight before activation (and hedges); fclcert weighs"
+                    + " the activated set, which differs under ACT MIN on fuzzy-set outputs"),
+    FIRST_PLATEAU("FCL-W311", Severity.WARNING, "Table 10",
+            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point");
 
     private final String code;
     private final Severity severity;

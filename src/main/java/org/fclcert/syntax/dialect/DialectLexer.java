@@ -6,16 +6,28 @@ import org.fclcert.model.Feature;
 
 /**
  * The tokens of the jFuzzyLogic and fuzzylite dialects: words, numbers, the FCL punctuation; comments
- * as each library writes them ({@code //}, {@code /* *\/} and {@code (* *)} in jFuzzyLogic; {@code //}
- * and {@code #} in fuzzylite). Never fails: a mistake is a problem with a place, and lexing goes on.
+ * as each library writes them ({@link Style}). Never fails: a mistake is a problem with a place, and
+ * lexing goes on. The name after {@code FUNCTION_BLOCK} and {@code RULEBLOCK} is the rest of its line
+ * (fuzzylite 5 wrote engine names verbatim, with blanks or '-'); none when the line ends there.
  */
 final class DialectLexer {
-    enum Kind { WORD, NUMBER, ASSIGN, COLON, SEMI, COMMA, LPAREN, RPAREN, DOTDOT, EOF }
+    enum Kind { WORD, NUMBER, ASSIGN, COLON, SEMI, COMMA, LPAREN, RPAREN, DOTDOT, BAR, EXPRESSION, EOF }
 
     record Token(Kind kind, String text, int line, int column) {
         boolean is(String word) {
             return kind == Kind.WORD && text.equalsIgnoreCase(word);
         }
+    }
+
+    /**
+     * How a library writes comments and numbers.
+     *
+     * @param hashComments  {@code #} starts a comment (fuzzylite)
+     * @param blockComments {@code /* *\/} and {@code (* *)} are comments (jFuzzyLogic); when false they are
+     *                      skipped as comments but reported as a style the library rejects
+     * @param leadingDot    {@code .5} is a number (fuzzylite)
+     */
+    record Style(boolean hashComments, boolean blockComments, boolean leadingDot, String library) {
     }
 
     record Problem(DialectCode code, int line, int column, String message) {
@@ -31,18 +43,18 @@ final class DialectLexer {
     static final Feature COMMENT_FEATURE = Feature.O_COMMENT_STYLE;
 
     private final String s;
-    private final boolean fuzzylite;
+    private final Style style;
     private int i;
     private int line = 1;
     private int col = 1;
 
-    private DialectLexer(String text, boolean fuzzylite) {
+    private DialectLexer(String text, Style style) {
         this.s = text.startsWith("\uFEFF") ? text.substring(1) : text;
-        this.fuzzylite = fuzzylite;
+        this.style = style;
     }
 
-    static DialectLexer lex(String text, boolean fuzzylite) {
-        DialectLexer l = new DialectLexer(text, fuzzylite);
+    static DialectLexer lex(String text, Style style) {
+        DialectLexer l = new DialectLexer(text, style);
         l.run();
         return l;
     }
@@ -68,15 +80,15 @@ final class DialectLexer {
             int c0 = col;
             if (Character.isWhitespace(c)) {
                 advance();
-            } else if (c == '/' && at(i + 1) == '/' || fuzzylite && c == '#') {
+            } else if (c == '/' && at(i + 1) == '/' || style.hashComments() && c == '#') {
                 comments.add(new Comment(c == '#' ? "#" : "//", l0, c0));
                 while (i < s.length() && s.charAt(i) != '\n') {
                     advance();
                 }
             } else if (c == '/' && at(i + 1) == '*' || c == '(' && at(i + 1) == '*') {
                 String end = c == '/' ? "*/" : "*)";
-                if (fuzzylite) {
-                    problems.add(new Problem(DialectCode.COMMENT_STYLE, l0, c0, "fuzzylite does not accept '"
+                if (!style.blockComments()) {
+                    problems.add(new Problem(DialectCode.COMMENT_STYLE, l0, c0, style.library() + " does not accept '"
                             + c + "*' comments; it comments with '//' or '#'"));
                 }
                 if (c == '/') {
@@ -103,7 +115,14 @@ final class DialectLexer {
                 while (i < s.length() && (Character.isLetterOrDigit(s.charAt(i)) || s.charAt(i) == '_')) {
                     advance();
                 }
-                tokens.add(new Token(Kind.WORD, s.substring(start, i), l0, c0));
+                String word = s.substring(start, i);
+                tokens.add(new Token(Kind.WORD, word, l0, c0));
+                if (word.equalsIgnoreCase("FUNCTION_BLOCK") || word.equalsIgnoreCase("RULEBLOCK")) {
+                    blockName();
+                } else if (word.equalsIgnoreCase("function") && tokens.size() > 1
+                        && tokens.get(tokens.size() - 2).kind() == Kind.ASSIGN) {
+                    expression();
+                }
             } else if (Character.isDigit(c) || c == '.' && Character.isDigit(at(i + 1))
                     || (c == '+' || c == '-') && (Character.isDigit(at(i + 1)) || at(i + 1) == '.'
                             || Character.isLetter(at(i + 1)))) {
@@ -123,6 +142,7 @@ final class DialectLexer {
                     case ',' -> Kind.COMMA;
                     case '(' -> Kind.LPAREN;
                     case ')' -> Kind.RPAREN;
+                    case '|' -> Kind.BAR;
                     default -> null;
                 };
                 if (k == null) {
@@ -180,7 +200,7 @@ final class DialectLexer {
             }
         }
         String text = s.substring(start, i);
-        if (leadingDot && !fuzzylite) {
+        if (leadingDot && !style.leadingDot()) {
             problems.add(new Problem(DialectCode.BAD_NUMBER, l0, c0,
                     "jFuzzyLogic rejects '" + text + "': write a digit before the '.'"));
         }
@@ -193,6 +213,40 @@ final class DialectLexer {
                     "'" + text + s.substring(w, i) + "' is not a number"));
         }
         tokens.add(new Token(Kind.NUMBER, text, l0, c0));
+    }
+
+    /** The rest of the line after a block keyword, up to a comment, as one WORD (blanks inside kept). */
+    private void blockName() {
+        while (i < s.length() && (s.charAt(i) == ' ' || s.charAt(i) == '\t')) {
+            advance();
+        }
+        int l0 = line;
+        int c0 = col;
+        int start = i;
+        while (i < s.length() && s.charAt(i) != '\n' && s.charAt(i) != '\r' && !commentStart(i) && s.charAt(i) != ';') {
+            advance();
+        }
+        String name = s.substring(start, i).strip();
+        if (!name.isEmpty()) {
+            tokens.add(new Token(Kind.WORD, name, l0, c0));
+        }
+    }
+
+    /** A Takagi–Sugeno term's formula ({@code TERM t := Function sin(x)/x;}): its text up to ';', as one token. */
+    private void expression() {
+        int l0 = line;
+        int c0 = col;
+        int start = i;
+        while (i < s.length() && s.charAt(i) != ';' && s.charAt(i) != '\n' && !commentStart(i)) {
+            advance();
+        }
+        tokens.add(new Token(Kind.EXPRESSION, s.substring(start, i).strip(), l0, c0));
+    }
+
+    private boolean commentStart(int k) {
+        char c = s.charAt(k);
+        return c == '/' && (at(k + 1) == '/' || at(k + 1) == '*') || c == '(' && at(k + 1) == '*'
+                || style.hashComments() && c == '#';
     }
 
     private static String printable(char c) {

@@ -20,7 +20,13 @@ public interface DialectReader extends FclReader {
      */
     List<Giveaway> giveaways(String text);
 
-    /** One piece of evidence for a dialect: a construct in words and the 1-based line it is on. */
-    record Giveaway(String construct, int line) {
+    /**
+     * One piece of evidence for a dialect: a construct in words, the 1-based line it is on, and how specific
+     * it is (1: another library writes it too; 3: no other dialect has it).
+     */
+    record Giveaway(String construct, int line, int weight) {
+        public Giveaway(String construct, int line) {
+            this(construct, line, 1);
+        }
     }
 }

@@ -1,13 +1,22 @@
 package org.fclcert.syntax.dialect;
 
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.SourceLocation;
 import org.fclcert.syntax.FclReader;
+import org.fclcert.syntax.ReadResult;
 import org.fclcert.syntax.StrictReader;
 
 /**
- * The reader of each dialect, and {@code --dialect auto}: which dialect a text is written in.
+ * The reader of each dialect, and {@code --dialect auto}: which dialect a text is written in, or that it
+ * cannot tell.
  */
 public final class DialectReaders {
+    /** A dialect wins only with at least this many times the weight of the runner-up; closer is a close call. */
+    static final double CLEAR_LEAD = 2.0;
+
     private DialectReaders() {
     }
 
@@ -21,72 +30,146 @@ public final class DialectReaders {
         };
     }
 
-    /** The dialect readers, in the order that breaks ties in {@link #auto}. */
+    /** The dialect readers, in the order candidates are named. */
     static List<DialectReader> dialectReaders() {
         return List.of(new FfllReader(), new JFuzzyLogicReader(), new FuzzyliteReader());
     }
 
+    /** One dialect's evidence in a text: its giveaways and their total weight. */
+    public record Evidence(Dialect dialect, List<DialectReader.Giveaway> giveaways) {
+        public Evidence {
+            giveaways = List.copyOf(giveaways);
+        }
+
+        /**
+         * The giveaways' weights added up; a supporting giveaway (weight 0: a standard construct the library's
+         * users write, such as lower-case rule keywords) adds 1, but only to evidence that has a weight already.
+         */
+        public int weight() {
+            int primary = giveaways.stream().mapToInt(DialectReader.Giveaway::weight).sum();
+            return primary == 0 ? 0 : primary + (int) giveaways.stream().filter(g -> g.weight() == 0).count();
+        }
+    }
+
     /**
-     * What {@link #auto} chose and why.
+     * What {@link #auto} found.
      *
-     * @param dialect    the dialect chosen
+     * @param dialect    the dialect chosen; when {@link #unsure()}, the one with the most weight (not to be read in)
      * @param giveaways  the constructs that decided it (empty for strict)
-     * @param tiedWith   dialects with as many giveaways, passed over because of the fixed order
-     *                   FFLL, jFuzzyLogic, fuzzylite
+     * @param tiedWith   the other candidates of a close call (empty when the choice is clear)
+     * @param problem    a located error instead of a choice: a close call (FCL-S311) or an internal error of a
+     *                   detector (FCL-S999); empty when the choice can be read in
      */
-    public record Choice(Dialect dialect, List<DialectReader.Giveaway> giveaways, List<Dialect> tiedWith) {
+    public record Choice(Dialect dialect, List<DialectReader.Giveaway> giveaways, List<Dialect> tiedWith,
+            Optional<Diagnostic> problem) {
         public Choice {
             giveaways = List.copyOf(giveaways);
             tiedWith = List.copyOf(tiedWith);
         }
 
+        public Choice(Dialect dialect, List<DialectReader.Giveaway> giveaways, List<Dialect> tiedWith) {
+            this(dialect, giveaways, tiedWith, Optional.empty());
+        }
+
+        /** True when auto cannot tell the dialect (or its detection failed): {@link #problem()} says why. */
+        public boolean unsure() {
+            return problem.isPresent();
+        }
+
+        /**
+         * The reader to read the text with: the chosen dialect's, or, when {@link #unsure()}, one that yields
+         * only the located problem (so a close call is an error with a code, never a guess).
+         */
+        public FclReader reader() {
+            if (problem.isEmpty()) {
+                return DialectReaders.reader(dialect);
+            }
+            Diagnostic d = problem.get();
+            return (source, text) -> new ReadResult(Optional.empty(), List.of(Diagnostic.error(
+                    SourceLocation.of(source == null ? "<input>" : source, d.location().line(), d.location().column()),
+                    d.diagnosticCode(), d.message())));
+        }
+
         /** One line for the user: {@code read as FFLL: ACCUM: at line 30, term-only subcondition at line 41}. */
         public String explanation() {
+            if (problem.isPresent()) {
+                return "dialect not recognised: " + problem.get().message();
+            }
             if (dialect == Dialect.STRICT) {
                 return "read as standard FCL (strict)";
             }
-            StringBuilder s = new StringBuilder("read as ").append(dialect.displayName()).append(": ");
-            int shown = Math.min(giveaways.size(), 5);
-            for (int i = 0; i < shown; i++) {
-                DialectReader.Giveaway g = giveaways.get(i);
-                s.append(i == 0 ? "" : ", ").append(g.construct()).append(" at line ").append(g.line());
-            }
-            if (giveaways.size() > shown) {
-                s.append(" and ").append(giveaways.size() - shown).append(" more");
-            }
-            if (!tiedWith.isEmpty()) {
-                s.append(" (as many signs of ").append(String.join(", ", tiedWith.stream()
-                        .map(Dialect::displayName).toList())).append("; ties go to the first of FFLL, jFuzzyLogic,"
-                        + " fuzzylite)");
-            }
-            return s.toString();
+            return "read as " + dialect.displayName() + ": " + shown(giveaways);
         }
     }
 
+    static String shown(List<DialectReader.Giveaway> giveaways) {
+        StringBuilder s = new StringBuilder();
+        int shown = Math.min(giveaways.size(), 5);
+        for (int i = 0; i < shown; i++) {
+            DialectReader.Giveaway g = giveaways.get(i);
+            s.append(i == 0 ? "" : ", ").append(g.construct()).append(" at line ").append(g.line());
+        }
+        if (giveaways.size() > shown) {
+            s.append(" and ").append(giveaways.size() - shown).append(" more");
+        }
+        return s.toString();
+    }
+
+    /** Every dialect's evidence in the text, in the order FFLL, jFuzzyLogic, fuzzylite. */
+    public static List<Evidence> evidence(String text) {
+        List<Evidence> out = new ArrayList<>();
+        for (DialectReader r : dialectReaders()) {
+            out.add(new Evidence(r.dialect(), r.giveaways(text == null ? "" : text)));
+        }
+        return out;
+    }
+
     /**
-     * The dialect of a text: the dialect with the most giveaways (ties broken in the order FFLL, jFuzzyLogic,
-     * fuzzylite, and said); strict when no dialect shows any, which is the case for every standard program
-     * (giveaways are constructs outside the standard), and then the strict reader's errors, if any, say what
-     * is wrong. Giveaways decide even when the strict reader reads the text without a syntax error: an FFLL
-     * rule naming only terms parses as standard FCL (bare variables) but means something else. Never throws.
+     * The dialect of a text: the dialect whose giveaways weigh most, weighed by how specific each is
+     * ({@link DialectReader.Giveaway#weight}), when it weighs at least {@link #CLEAR_LEAD} times the runner-up;
+     * strict when no dialect shows any (the case of every standard program: giveaways are constructs outside
+     * the standard), and then the strict reader's errors, if any, say what is wrong. On a close call the choice
+     * is {@link Choice#unsure()} with a located FCL-S311 naming the candidates and asking for {@code --dialect};
+     * a failure of a detector is a located FCL-S999. Giveaways decide even when the strict reader reads the text
+     * without a syntax error: an FFLL rule naming only terms parses as standard FCL but means something else.
+     * Never throws.
      */
     public static Choice auto(String text) {
-        Dialect best = null;
-        List<DialectReader.Giveaway> bestGiveaways = List.of();
-        List<Dialect> tied = new java.util.ArrayList<>();
-        for (DialectReader r : dialectReaders()) {
-            List<DialectReader.Giveaway> g = r.giveaways(text == null ? "" : text);
-            if (g.isEmpty()) {
-                continue;
-            }
-            if (best == null || g.size() > bestGiveaways.size()) {
-                best = r.dialect();
-                bestGiveaways = g;
-                tied.clear();
-            } else if (g.size() == bestGiveaways.size()) {
-                tied.add(r.dialect());
-            }
+        List<Evidence> all;
+        try {
+            all = evidence(text);
+        } catch (RuntimeException | StackOverflowError e) {
+            Throwable cause = e.getCause() == null ? e : e.getCause();
+            return new Choice(Dialect.STRICT, List.of(), List.of(),
+                    Optional.of(DialectParser.internalError("<input>", "dialect detection ("
+                            + e.getMessage() + ")", cause)));
         }
-        return best == null ? new Choice(Dialect.STRICT, List.of(), List.of()) : new Choice(best, bestGiveaways, tied);
+        List<Evidence> ranked = new ArrayList<>(all.stream().filter(e -> e.weight() > 0).toList());
+        ranked.sort((a, b) -> Integer.compare(b.weight(), a.weight()));     // stable: ties keep FFLL, jFL, fl order
+        if (ranked.isEmpty()) {
+            return new Choice(Dialect.STRICT, List.of(), List.of());
+        }
+        Evidence best = ranked.get(0);
+        List<Evidence> close = ranked.subList(1, ranked.size()).stream()
+                .filter(e -> best.weight() < CLEAR_LEAD * e.weight()).toList();
+        if (close.isEmpty()) {
+            return new Choice(best.dialect(), best.giveaways(), List.of());
+        }
+        StringBuilder m = new StringBuilder("signs of ");
+        List<Evidence> candidates = new ArrayList<>();
+        candidates.add(best);
+        candidates.addAll(close);
+        for (int i = 0; i < candidates.size(); i++) {
+            Evidence e = candidates.get(i);
+            m.append(i == 0 ? "" : i == candidates.size() - 1 ? " and of " : ", of ").append(e.dialect().displayName())
+                    .append(" (weight ").append(e.weight()).append(": ").append(shown(e.giveaways())).append(')');
+        }
+        m.append(", none clearly ahead; name the dialect with --dialect ")
+                .append(String.join(" or --dialect ", candidates.stream().map(e -> e.dialect().cliName()).toList()));
+        DialectReader.Giveaway first = best.giveaways().get(0);
+        Diagnostic d = Diagnostic.error(SourceLocation.of("<input>", first.line(), 1), DialectCode.DIALECT_UNCLEAR,
+                m.toString());
+        return new Choice(best.dialect(), best.giveaways(), close.stream().map(Evidence::dialect).toList(),
+                Optional.of(d));
     }
 }

@@ -64,8 +64,7 @@ public final class FfllReader implements DialectReader {
             return new ReadResult(errors ? Optional.empty() : Optional.of(new Program(name, blocks, features)),
                     diagnostics);
         } catch (RuntimeException | StackOverflowError e) {
-            diagnostics.add(Diagnostic.error(SourceLocation.of(name, 1, 1), org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR,
-                    "internal error of the FFLL reader (" + e.getClass().getSimpleName() + "); please report this"));
+            diagnostics.add(DialectParser.internalError(name, "FFLL reader", e));
             return new ReadResult(Optional.empty(), diagnostics);
         }
     }
@@ -76,16 +75,70 @@ public final class FfllReader implements DialectReader {
      */
     @Override
     public List<Giveaway> giveaways(String text) {
+        FfllTokens tokens = new FfllTokens();
+        ReadResult result;
         try {
-            FfllTokens tokens = new FfllTokens();
-            Optional<Program> program = read("<auto>", text, tokens).program();
-            List<FeatureUse> uses = new ArrayList<>(program.map(Program::dialectFeatures).orElse(tokens.features()));
-            uses.addAll(tokens.momMethods());
-            uses.sort(Comparator.comparing(FeatureUse::location));
-            return uses.stream().map(u -> new Giveaway(construct(u.feature()), u.location().line())).toList();
+            result = read("<auto>", blankForeignComments(text == null ? "" : text), tokens);
         } catch (RuntimeException | StackOverflowError e) {
-            return List.of();
+            throw new IllegalStateException("the FFLL giveaway scan failed", e);
         }
+        result.diagnostics().stream().filter(d -> d.diagnosticCode() == org.fclcert.syntax.SyntaxCode.INTERNAL_ERROR).findFirst()
+                .ifPresent(d -> {
+                    throw new IllegalStateException(d.message());
+                });
+        List<FeatureUse> uses = new ArrayList<>(result.program().map(Program::dialectFeatures).orElse(tokens.features()));
+        uses.addAll(tokens.momMethods());
+        uses.sort(Comparator.comparing(FeatureUse::location));
+        return uses.stream().map(u -> new Giveaway(construct(u.feature()), u.location().line(), weight(u.feature())))
+                .toList();
+    }
+
+    /**
+     * How specific an FFLL construct is: ACCUM, term-only rules, output terms in FUZZIFY, END_FUZZIFY closing
+     * DEFUZZIFY and RANGE comments only FFLL writes (3); a declaration without ':' and RETAIN are rarer slips (2);
+     * what is merely missing (DEFAULT, METHOD) or MoM, which other libraries write too, weighs 1.
+     */
+    private static int weight(Feature f) {
+        return switch (f) {
+            case O_ACCUM, O_FFLL_TERM_ONLY_CONDITION, O_FFLL_TERM_ONLY_CONCLUSION, O_FFLL_OUTPUT_FUZZIFY, O_END_FUZZIFY,
+                    O_RANGE_COMMENT -> 3;
+            case O_DECLARATION_WITHOUT_COLON, O_VAR_RETAIN -> 2;
+            default -> 1;
+        };
+    }
+
+    /**
+     * The text with its {@code //} and {@code /* *\/} comments (which FFLL does not know, but the other libraries
+     * write) blanked out, lines kept, so that no word inside them counts as FFLL evidence; {@code (* *)} comments
+     * are FFLL's own and stay.
+     */
+    static String blankForeignComments(String text) {
+        StringBuilder b = new StringBuilder(text);
+        int i = 0;
+        int n = text.length();
+        while (i < n) {
+            char c = text.charAt(i);
+            char d = i + 1 < n ? text.charAt(i + 1) : '\0';
+            if (c == '(' && d == '*') {
+                int end = text.indexOf("*)", i + 2);
+                i = end < 0 ? n : end + 2;
+            } else if (c == '/' && d == '/') {
+                while (i < n && text.charAt(i) != '\n') {
+                    b.setCharAt(i++, ' ');
+                }
+            } else if (c == '/' && d == '*') {
+                int end = text.indexOf("*/", i + 2);
+                int stop = end < 0 ? n : end + 2;
+                for (; i < stop; i++) {
+                    if (text.charAt(i) != '\n') {
+                        b.setCharAt(i, ' ');
+                    }
+                }
+            } else {
+                i++;
+            }
+        }
+        return b.toString();
     }
 
     /** A construct in a few words, as {@code --dialect auto} shows it. */

@@ -3,92 +3,73 @@ package org.fclcert.syntax.dialect;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Set;
 import org.fclcert.syntax.dialect.DialectLexer.Kind;
 import org.fclcert.syntax.dialect.DialectLexer.Token;
 import org.fclcert.syntax.dialect.DialectReader.Giveaway;
 
 /**
- * The constructs that give the jFuzzyLogic or the fuzzylite dialect away, found on the tokens alone
- * (no parse, so any text works): for jFuzzyLogic its shape names, {@code /* *\/} comments, PROBOR,
- * COGF and a METHOD MM; for fuzzylite its capitalised shape names, {@code #} comments, hedges after
- * {@code is}, rules without {@code ;}, {@code ENABLED}, {@code LOCK}, {@code nan} / {@code inf},
- * COGSS and ACCU inside DEFUZZIFY. Comments written {@code //} are shared by both and count for neither.
+ * The shared ground of the giveaways: one lexing of the text that knows every comment style of every
+ * library ({@code //}, {@code /* *\/}, {@code (* *)}, {@code #}), so no word inside a comment ever counts,
+ * handed to each {@link LibraryDialect#giveaways} strategy.
  */
 final class Giveaways {
-    private static final Set<String> JFL_SHAPES = Set.of("trian", "trape", "gauss", "gauss2", "gbell", "sigm",
-            "dsigm", "cosine", "singletons");
-    private static final Set<String> FL_SHAPES = Set.of("Triangle", "Trapezoid", "Rectangle", "Ramp", "Gaussian",
-            "GaussianProduct", "Bell", "Sigmoid", "SigmoidDifference", "SigmoidProduct", "Cosine", "SShape", "ZShape",
-            "PiShape", "Discrete", "Constant", "Linear", "Spike", "Concave");
-    private static final Set<String> HEDGES = Set.of("very", "somewhat", "extremely", "seldom", "any");
+    private static final DialectLexer.Style ALL_COMMENTS = new DialectLexer.Style(true, true, true, "any library");
 
     private Giveaways() {
     }
 
-    static List<Giveaway> find(String text, boolean fuzzylite) {
-        List<Giveaway> out = new ArrayList<>();
-        try {
-            DialectLexer lexer = DialectLexer.lex(text == null ? "" : text, fuzzylite);
-            for (DialectLexer.Comment c : lexer.comments) {
-                if (fuzzylite && c.style().equals("#")) {
-                    out.add(new Giveaway("'#' comment", c.line()));
-                } else if (!fuzzylite && c.style().equals("/* */")) {
-                    out.add(new Giveaway("'/* */' comment", c.line()));
-                }
-            }
+    /** The text's tokens outside comments and where its comments are. */
+    static final class Scan {
+        private final DialectLexer lexer;
+        private final boolean[] inVar;
+
+        Scan(String text) {
+            this.lexer = DialectLexer.lex(text == null ? "" : text, ALL_COMMENTS);
             List<Token> t = lexer.tokens;
-            boolean inDefuzzify = false;
+            inVar = new boolean[t.size()];
+            boolean in = false;
             for (int i = 0; i < t.size(); i++) {
                 Token tok = t.get(i);
-                Token prev = i > 0 ? t.get(i - 1) : null;
-                Token next = i + 1 < t.size() ? t.get(i + 1) : tok;
-                boolean afterAssign = prev != null && prev.kind() == Kind.ASSIGN;
-                boolean afterColon = prev != null && prev.kind() == Kind.COLON;
-                if (tok.is("DEFUZZIFY")) {
-                    inDefuzzify = true;
-                } else if (tok.is("END_DEFUZZIFY")) {
-                    inDefuzzify = false;
+                if (tok.is("VAR_INPUT") || tok.is("VAR_OUTPUT") || tok.is("VAR")) {
+                    in = true;
+                } else if (tok.is("END_VAR")) {
+                    in = false;
                 }
-                if (tok.kind() != Kind.WORD && tok.kind() != Kind.NUMBER) {
-                    continue;
-                }
-                String w = tok.text();
-                if (fuzzylite) {
-                    if (afterAssign && FL_SHAPES.contains(w)) {
-                        out.add(new Giveaway("shape '" + w + "'", tok.line()));
-                    } else if (prev != null && prev.text().equals("is") && HEDGES.contains(w)) {
-                        out.add(new Giveaway("hedge '" + w + "'", tok.line()));
-                    } else if ((w.equals("ENABLED") || w.equals("LOCK")) && next.kind() == Kind.COLON) {
-                        out.add(new Giveaway("'" + w + "'", tok.line()));
-                    } else if (w.equals("nan") || w.endsWith("inf") && (tok.kind() == Kind.NUMBER || w.equals("inf"))) {
-                        out.add(new Giveaway("'" + w + "'", tok.line()));
-                    } else if (afterColon && w.equals("COGSS")) {
-                        out.add(new Giveaway("METHOD COGSS", tok.line()));
-                    } else if (inDefuzzify && w.equals("ACCU")) {
-                        out.add(new Giveaway("ACCU inside DEFUZZIFY", tok.line()));
-                    } else if (w.equals("RULE") && ruleWithoutSemicolon(t, i)) {
-                        out.add(new Giveaway("rule without ';'", tok.line()));
-                    }
-                } else {
-                    if (afterAssign && JFL_SHAPES.contains(w)) {
-                        out.add(new Giveaway("shape '" + w + "'", tok.line()));
-                    } else if (afterColon && (w.equalsIgnoreCase("PROBOR") || w.equalsIgnoreCase("COGF"))) {
-                        out.add(new Giveaway("'" + w + "'", tok.line()));
-                    } else if (afterColon && w.equalsIgnoreCase("MM") && i > 1 && t.get(i - 2).is("METHOD")) {
-                        out.add(new Giveaway("METHOD MM", tok.line()));
-                    }
-                }
+                inVar[i] = in;
             }
-        } catch (RuntimeException e) {
-            // never throws: what was found so far is the answer
+        }
+
+        List<Token> tokens() {
+            return lexer.tokens;
+        }
+
+        /** The lines of the comments written in {@code style} ({@code //}, {@code /* *\/}, {@code #}). */
+        List<Integer> comments(String style) {
+            return lexer.comments.stream().filter(c -> c.style().equals(style)).map(DialectLexer.Comment::line).toList();
+        }
+
+        boolean inVarSection(int token) {
+            return inVar[token];
+        }
+    }
+
+    /**
+     * One dialect's giveaways in source order. A failure of the scan is a bug of fclcert, not evidence: it is
+     * thrown as an {@link IllegalStateException} for {@link DialectReaders#auto} to report, never swallowed.
+     */
+    static List<Giveaway> find(String text, LibraryDialect dialect) {
+        List<Giveaway> out;
+        try {
+            out = new ArrayList<>(dialect.giveaways(new Scan(text)));
+        } catch (RuntimeException | StackOverflowError e) {
+            throw new IllegalStateException("the " + dialect.library() + " giveaway scan failed", e);
         }
         out.sort(Comparator.comparingInt(Giveaway::line));
         return List.copyOf(out);
     }
 
     /** A RULE whose line holds no ';' and whose next token is on a later line. */
-    private static boolean ruleWithoutSemicolon(List<Token> t, int i) {
+    static boolean ruleWithoutSemicolon(List<Token> t, int i) {
         int line = t.get(i).line();
         for (int j = i + 1; j < t.size(); j++) {
             Token x = t.get(j);

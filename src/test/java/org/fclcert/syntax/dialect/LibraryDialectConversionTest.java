@@ -263,6 +263,8 @@ class LibraryDialectConversionTest {
         String fuzzylite = "RULEBLOCK r\n RULE 1 : if a is x then c is z\n RULE 2 : if a is y then c is z\n"
                 + "END_RULEBLOCK\n";
         assertEquals(List.of(new DialectReader.Giveaway("rule without ';'", 2),
-                new DialectReader.Giveaway("rule without ';'", 3)), new FuzzyliteReader().giveaways(fuzzylite));
+                new DialectReader.Giveaway("lower-case rule keywords", 2, 0),
+                new DialectReader.Giveaway("rule without ';'", 3),
+                new DialectReader.Giveaway("lower-case rule keywords", 3, 0)), new FuzzyliteReader().giveaways(fuzzylite));
     }
 }

@@ -1,0 +1,322 @@
+package org.fclcert.syntax.dialect;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.DefaultValue;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Feature;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Hedge;
+import org.fclcert.model.Literal;
+import org.fclcert.model.Located;
+import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Names;
+import org.fclcert.model.Point;
+import org.fclcert.model.Range;
+import org.fclcert.model.ShapeKind;
+import org.fclcert.model.Term;
+import org.fclcert.syntax.dialect.DialectLexer.Kind;
+import org.fclcert.syntax.dialect.DialectLexer.Token;
+import org.fclcert.syntax.dialect.DialectReader.Giveaway;
+
+/**
+ * jFuzzyLogic's dialect: the standard's grammar plus {@code //} and {@code /* *\/} comments, RANGE in
+ * FUZZIFY and after a declaration, named shapes in any case ({@link ShapeNames#JFUZZYLOGIC}), {@code function}
+ * output terms (Takagi–Sugeno), ACCU PROBOR and SUM, METHOD COGF and MM, and what it supplies when a setting
+ * is left out: ACCU SUM, METHOD CoG, DEFAULT NC and, for an output without RANGE, the universe its terms span
+ * (points: first to last x; Gaussian mean ± 4 sd). Where it gives a program another meaning (coupled AND/OR,
+ * one priority for AND and OR, case-sensitive names, NSUM as BSUM) the reader warns.
+ */
+final class JFuzzyLogicDialect extends LibraryDialect {
+    private static final DialectLexer.Style STYLE = new DialectLexer.Style(false, true, false, "jFuzzyLogic");
+
+    @Override
+    Dialect dialect() {
+        return Dialect.JFUZZYLOGIC;
+    }
+
+    @Override
+    DialectLexer.Style lexing() {
+        return STYLE;
+    }
+
+    @Override
+    ShapeNames.Table shapes() {
+        return ShapeNames.JFUZZYLOGIC;
+    }
+
+    @Override
+    void checkName(DialectParser p, Token t) {
+        if (t.text().startsWith("_")) {
+            p.error(t, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic rejects names starting with '_'");
+        }
+    }
+
+    @Override
+    boolean rangeAfterDeclaration() {
+        return true;
+    }
+
+    @Override
+    boolean defuzzifyStatement(DialectParser p, Token t, DialectParser.Output out) {
+        if (!t.is("ACCU")) {
+            return false;
+        }
+        p.accumulation();
+        p.error(t, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic takes ACCU in the RULEBLOCK");
+        return true;
+    }
+
+    @Override
+    String defuzzifyStatements() {
+        return "TERM, RANGE, METHOD, DEFAULT or END_DEFUZZIFY";
+    }
+
+    @Override
+    Optional<DefuzzificationMethod> method(DialectParser p, Token w, String upper) {
+        return Optional.ofNullable(switch (upper) {
+            case "COG" -> DefuzzificationMethod.COG;
+            case "COGS" -> DefuzzificationMethod.COGS;
+            case "COA" -> DefuzzificationMethod.COA;
+            case "LM" -> DefuzzificationMethod.LM;
+            case "RM" -> DefuzzificationMethod.RM;
+            case "MM" -> {
+                p.feature(Feature.O_METHOD_MM, p.at(w));
+                yield DefuzzificationMethod.MOM;
+            }
+            case "COGF" -> {
+                p.feature(Feature.O_METHOD_COGF, p.at(w));
+                yield DefuzzificationMethod.COG;
+            }
+            default -> null;
+        });
+    }
+
+    @Override
+    String methodNames() {
+        return "COG, COGF, COGS, COA, LM, RM, MM";
+    }
+
+    @Override
+    Optional<AccumulationMethod> accumulation(String upper) {
+        return Optional.ofNullable(switch (upper) {
+            case "MAX" -> AccumulationMethod.MAX;
+            case "BSUM" -> AccumulationMethod.BSUM;
+            case "NSUM" -> AccumulationMethod.NSUM;
+            case "SUM" -> AccumulationMethod.SUM;
+            case "PROBOR" -> AccumulationMethod.PROBOR;
+            default -> null;
+        });
+    }
+
+    @Override
+    String accumulationNames() {
+        return "MAX, BSUM, NSUM, PROBOR, SUM";
+    }
+
+    @Override
+    String orAlgorithm(String upper) {
+        return switch (upper) {
+            case "PROBOR" -> "ASUM";
+            case "DMAX" -> "DSUM";
+            case "NIPMAX" -> "NMAX";
+            case "EINSTEIN" -> "ESUM";
+            case "HAMACHER" -> "HSUM";
+            case "ESUM", "HSUM", "DSUM", "NMAX" -> "not " + upper;    // fuzzylite's names, not jFuzzyLogic's
+            default -> upper;
+        };
+    }
+
+    @Override
+    String andAlgorithm(String upper) {
+        return switch (upper) {
+            case "DMIN" -> "DPROD";
+            case "NIPMIN" -> "NMIN";
+            case "EINSTEIN" -> "EPROD";
+            case "HAMACHER" -> "HPROD";
+            case "EPROD", "HPROD", "DPROD", "NMIN" -> "not " + upper;
+            default -> upper;
+        };
+    }
+
+    @Override
+    String andNames() {
+        return "MIN, PROD, BDIF, DMIN, NIPMIN, HAMACHER, EINSTEIN";
+    }
+
+    @Override
+    String orNames() {
+        return "MAX, ASUM, PROBOR, BSUM, DMAX, NIPMAX, HAMACHER, EINSTEIN";
+    }
+
+    @Override
+    Optional<MembershipFunction> specialTerm(DialectParser p, Token t, DialectParser.TermContext where) {
+        if (t.is("singletons")) {
+            List<Point> pts = p.points();
+            if (pts.size() != 1 || ((Literal) pts.get(0).degree()).value() != 1) {
+                p.error(t, DialectCode.UNSUPPORTED, "fclcert reads 'singletons' only as one singleton (x, 1);"
+                        + " jFuzzyLogic's several (x, y) pairs are a discrete set fclcert does not evaluate");
+                throw new DialectParser.Skip();
+            }
+            p.feature(Feature.O_SHAPE_SINGLETONS, p.at(t));
+            return Optional.of(new MembershipFunction.Singleton(pts.get(0).x()));
+        }
+        if (t.is("singleton")) {
+            return Optional.of(new MembershipFunction.Singleton(p.number(false)));
+        }
+        if (t.is("function") && p.peek().kind() == Kind.EXPRESSION) {
+            return Optional.of(FuzzyliteDialect.computed(p, t, p.next(), where, "function"));
+        }
+        return Optional.empty();
+    }
+
+    @Override
+    Optional<Hedge> hedge(Token t) {
+        return t.is("NOT") ? Optional.of(Hedge.NOT) : Optional.empty();
+    }
+
+    @Override
+    boolean notOperator() {
+        return true;
+    }
+
+    @Override
+    boolean conclusionSeparator(DialectParser p, Token t) {
+        return t.kind() == Kind.COMMA;
+    }
+
+    @Override
+    boolean oneAndOrPriority() {
+        return true;
+    }
+
+    @Override
+    void finishOutput(DialectParser p, DialectParser.Output out) {
+        if (out.method.isEmpty()) {
+            p.warn(out.start, DialectCode.SUPPLIED_SETTING, "no METHOD: jFuzzyLogic uses CoG, and so does fclcert");
+            p.feature(Feature.O_IMPLICIT_SETTING, out.start);
+            out.method = Optional.of(new Located<>(DefuzzificationMethod.COG, out.start));
+        }
+        if (out.defaultValue.isEmpty()) {
+            p.warn(out.start, DialectCode.SUPPLIED_SETTING,
+                    "no DEFAULT: jFuzzyLogic keeps the previous value when no rule fires; read as DEFAULT NC");
+            p.feature(Feature.O_IMPLICIT_SETTING, out.start);
+            out.defaultValue = Optional.of(new DefaultValue.NoChange(out.start));
+        }
+        if (out.range.isEmpty()) {
+            Range declared = p.declaredRanges.get(Names.key(out.variable));
+            out.range = declared != null ? Optional.of(declared) : impliedUniverse(p, out);
+        }
+    }
+
+    /**
+     * jFuzzyLogic's universe of an output without RANGE: from the least to the greatest x its terms reach
+     * (a Gaussian reaching mean ± 4 sd), over which it defuzzifies. Needed only when a term does not fall to 0
+     * at both ends of its points or is a smooth shape; empty otherwise (then the range changes nothing).
+     */
+    private static Optional<Range> impliedUniverse(DialectParser p, DialectParser.Output out) {
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        boolean needed = false;
+        for (Term t : out.terms) {
+            List<Point> pts = null;
+            if (t.function() instanceof MembershipFunction.Points points) {
+                pts = points.points();
+            } else if (t.function() instanceof MembershipFunction.NamedShape shape) {
+                Optional<List<Point>> exact = shape.points();
+                if (exact.isPresent()) {
+                    pts = exact.get();
+                } else if (shape.parameters().size() == shape.kind().arity()
+                        && (shape.kind() == ShapeKind.GAUSSIAN || shape.kind() == ShapeKind.GAUSSIAN_PRODUCT)) {
+                    double[] v = shape.values();
+                    double last = shape.kind() == ShapeKind.GAUSSIAN ? v[0] + 4 * v[1] : v[2] + 4 * v[3];
+                    lo = Math.min(lo, v[0] - 4 * v[1]);
+                    hi = Math.max(hi, last);
+                    needed = true;
+                    continue;
+                } else {
+                    return Optional.empty();       // FCL-C025 then asks for a RANGE
+                }
+            } else {
+                return Optional.empty();           // singletons need no universe
+            }
+            if (pts.isEmpty() || !pts.stream().allMatch(pt -> pt.x() instanceof Literal && pt.degree() instanceof Literal)) {
+                return Optional.empty();
+            }
+            for (Point pt : pts) {
+                lo = Math.min(lo, ((Literal) pt.x()).value());
+                hi = Math.max(hi, ((Literal) pt.x()).value());
+            }
+            needed |= ((Literal) pts.get(0).degree()).value() != 0 || ((Literal) pts.get(pts.size() - 1).degree()).value() != 0;
+        }
+        if (!needed || !(lo < hi)) {
+            return Optional.empty();
+        }
+        p.feature(Feature.O_IMPLIED_RANGE, out.start);
+        p.warn(out.start, DialectCode.IMPLIED_RANGE, "no RANGE: jFuzzyLogic defuzzifies '" + out.variable
+                + "' over the span of its terms, [" + num(lo) + ", " + num(hi) + "]; the standard needs a RANGE"
+                + " here (read as RANGE := (" + num(lo) + " .. " + num(hi) + "))");
+        return Optional.of(new Range(Literal.of(lo), Literal.of(hi), out.start));
+    }
+
+    private static String num(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
+    }
+
+    @Override
+    void finishRuleBlock(DialectParser p, DialectParser.Block b) {
+        if (b.and.isPresent() && b.or.isPresent() && b.and.get().value().pair() != b.or.get().value()) {
+            boolean orLast = "OR".equals(b.lastOperator);
+            var later = orLast ? b.or.get().location() : b.and.get().location();
+            String effective = orLast ? "AND as " + b.or.get().value().pair() : "OR as " + b.and.get().value().pair();
+            p.warn(later, DialectCode.COUPLED_AND_OR, "jFuzzyLogic couples AND and OR: the later declaration"
+                    + " makes it evaluate " + effective + "; fclcert reads AND " + b.and.get().value() + " and OR "
+                    + b.or.get().value() + " as written");
+        }
+        if (b.accu.isEmpty()) {
+            p.warn(b.start, DialectCode.SUPPLIED_SETTING, "no ACCU: jFuzzyLogic accumulates by a plain sum; read as ACCU SUM");
+            p.feature(Feature.O_IMPLICIT_SETTING, b.start);
+            b.accu = Optional.of(new Located<>(AccumulationMethod.SUM, b.start));
+        }
+    }
+
+    @Override
+    FunctionBlock finishFunctionBlock(DialectParser p, FunctionBlock fb) {
+        CaseSensitivity.warn(fb, p::warn);
+        return fb;
+    }
+
+    /**
+     * jFuzzyLogic's giveaways: its shape names after ':=' (any case, weight 3), {@code /* *\/} comments (2),
+     * ACCU PROBOR and METHOD COGF (3), METHOD MM (1: fuzzylite writes it too), a RANGE after a declaration (3),
+     * upper-case rule keywords with a RULEBLOCK ACCU (weak, 1).
+     */
+    @Override
+    List<Giveaway> giveaways(Giveaways.Scan scan) {
+        List<Giveaway> out = new ArrayList<>();
+        scan.comments("/* */").forEach(line -> out.add(new Giveaway("'/* */' comment", line, 2)));
+        List<Token> t = scan.tokens();
+        for (int i = 0; i < t.size(); i++) {
+            Token tok = t.get(i);
+            Token prev = i > 0 ? t.get(i - 1) : null;
+            if (tok.kind() != Kind.WORD) {
+                continue;
+            }
+            String w = tok.text();
+            boolean afterAssign = prev != null && prev.kind() == Kind.ASSIGN;
+            boolean afterColon = prev != null && prev.kind() == Kind.COLON;
+            if (afterAssign && shapes().kind(w).isPresent() || afterAssign && w.equalsIgnoreCase("singletons")) {
+                out.add(new Giveaway("shape '" + w + "'", tok.line(), 3));
+            } else if (afterColon && (w.equalsIgnoreCase("PROBOR") || w.equalsIgnoreCase("COGF"))) {
+                out.add(new Giveaway("'" + w + "'", tok.line(), 3));
+            } else if (afterColon && w.equalsIgnoreCase("MM") && i > 1 && t.get(i - 2).is("METHOD")) {
+                out.add(new Giveaway("METHOD MM", tok.line(), 1));
+            } else if (w.equalsIgnoreCase("RANGE") && scan.inVarSection(i)) {
+                out.add(new Giveaway("RANGE in a VAR section", tok.line(), 3));
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,83 @@
+package org.fclcert.syntax.dialect;
+
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.fclcert.model.Literal;
+import org.fclcert.model.ShapeKind;
+
+/**
+ * The one table of membership-function names the libraries write: for each library, its name of each
+ * {@link ShapeKind} and the order it writes the parameters in. The readers read shapes from it and the
+ * auto-detection counts its names as giveaways, so both always agree. jFuzzyLogic's names are matched
+ * in any case ({@code TRIAN}, {@code GAUSS} are common in its users' files); fuzzylite's as written.
+ */
+final class ShapeNames {
+    /**
+     * One library's shape names.
+     *
+     * @param shapes        name (key as matched) to kind
+     * @param reorder       kind to the written position of each canonical parameter; absent: written canonically
+     * @param ignoreCase    whether names match in any case
+     * @param otherNames    names the library defines that are not a {@link ShapeKind} (read by special forms,
+     *                      or Takagi–Sugeno terms); they count as giveaways too
+     */
+    record Table(Map<String, ShapeKind> shapes, Map<ShapeKind, int[]> reorder, boolean ignoreCase,
+            Set<String> otherNames) {
+        Optional<ShapeKind> kind(String word) {
+            return Optional.ofNullable(shapes.get(ignoreCase ? word.toLowerCase(Locale.ROOT) : word));
+        }
+
+        /** True for any name of the library's own shape vocabulary. */
+        boolean known(String word) {
+            String w = ignoreCase ? word.toLowerCase(Locale.ROOT) : word;
+            return shapes.containsKey(w) || otherNames.contains(w);
+        }
+
+        /** The parameters as written, in canonical order; a wrong count is kept as written (FCL-C040 reports it). */
+        List<Literal> canonical(ShapeKind kind, List<Literal> written) {
+            int[] order = reorder.get(kind);
+            if (order == null || written.size() != kind.arity()) {
+                return written;
+            }
+            Literal[] out = new Literal[order.length];
+            for (int i = 0; i < order.length; i++) {
+                out[i] = written.get(order[i]);
+            }
+            return List.of(out);
+        }
+    }
+
+    private ShapeNames() {
+    }
+
+    /**
+     * jFuzzyLogic: {@code trian a b c}, {@code trape a b c d}, {@code gauss mean sd}, {@code gauss2 ...},
+     * {@code gbell width slope center}, {@code sigm gain center}, {@code dsigm gain1 center1 gain2 center2},
+     * {@code cosine width center}; {@code singletons}, {@code singleton}, {@code piece_wise_linear},
+     * {@code freeform} and {@code function} are its special forms.
+     */
+    static final Table JFUZZYLOGIC = new Table(Map.of(
+            "trian", ShapeKind.TRIANGLE, "trape", ShapeKind.TRAPEZOID, "gauss", ShapeKind.GAUSSIAN,
+            "gauss2", ShapeKind.GAUSSIAN_PRODUCT, "gbell", ShapeKind.BELL, "sigm", ShapeKind.SIGMOID,
+            "dsigm", ShapeKind.SIGMOID_DIFFERENCE, "cosine", ShapeKind.COSINE),
+            Map.of(ShapeKind.BELL, new int[] {2, 0, 1}, ShapeKind.SIGMOID, new int[] {1, 0},
+                    ShapeKind.SIGMOID_DIFFERENCE, new int[] {1, 0, 2, 3}, ShapeKind.COSINE, new int[] {1, 0}),
+            true, Set.of("singletons", "singleton", "function", "piece_wise_linear", "freeform"));
+
+    /** fuzzylite: its class names, parameters in the canonical order (fclcert's order is fuzzylite's). */
+    static final Table FUZZYLITE = new Table(Map.ofEntries(
+            Map.entry("Triangle", ShapeKind.TRIANGLE), Map.entry("Trapezoid", ShapeKind.TRAPEZOID),
+            Map.entry("Rectangle", ShapeKind.RECTANGLE), Map.entry("Ramp", ShapeKind.RAMP),
+            Map.entry("Gaussian", ShapeKind.GAUSSIAN), Map.entry("GaussianProduct", ShapeKind.GAUSSIAN_PRODUCT),
+            Map.entry("Bell", ShapeKind.BELL), Map.entry("Sigmoid", ShapeKind.SIGMOID),
+            Map.entry("SigmoidDifference", ShapeKind.SIGMOID_DIFFERENCE),
+            Map.entry("SigmoidProduct", ShapeKind.SIGMOID_PRODUCT), Map.entry("Cosine", ShapeKind.COSINE),
+            Map.entry("SShape", ShapeKind.S_SHAPE), Map.entry("ZShape", ShapeKind.Z_SHAPE),
+            Map.entry("PiShape", ShapeKind.PI_SHAPE), Map.entry("Concave", ShapeKind.CONCAVE),
+            Map.entry("Spike", ShapeKind.SPIKE)),
+            Map.of(), false, Set.of("Discrete", "Constant", "Linear", "Function", "Binary", "Aggregated",
+                    "Activated"));
+}

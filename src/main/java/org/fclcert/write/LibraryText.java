@@ -1,0 +1,117 @@
+package org.fclcert.write;
+
+import java.util.List;
+import java.util.Locale;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Literal;
+import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.MembershipFunction.NamedShape;
+import org.fclcert.model.Point;
+import org.fclcert.model.ShapeKind;
+
+/** Spellings the library writers share: numbers, points, shape names. */
+final class LibraryText {
+    private LibraryText() {
+    }
+
+    /** A number as {@link LiteralText} spells it (both libraries read these spellings: no '_', no leading '.'). */
+    static String number(double v) {
+        return LiteralText.of(Literal.of(v));
+    }
+
+    static String number(Literal l) {
+        return LiteralText.of(l);
+    }
+
+    /** {@code (x, y) (x, y) ...}: the point list both libraries and the standard read. */
+    static String points(List<Point> points, BlockContext cx, String term) {
+        StringBuilder out = new StringBuilder();
+        double previous = 0;
+        for (Point p : points) {
+            if (!out.isEmpty()) {
+                out.append(' ');
+            }
+            // a point given by a variable falls back to the x before it, so that the points stay in order
+            String x = cx.numberText(p.x(), previous, WriterCode.POINT_VARIABLE, "a point of term '" + term + "'");
+            previous = Double.parseDouble(x);
+            out.append('(').append(x)
+                    .append(", ").append(cx.numberText(p.degree(), 0, WriterCode.POINT_VARIABLE, "a degree of term '"
+                            + term + "'")).append(')');
+        }
+        return out.toString();
+    }
+
+    /** fuzzylite's class name of a shape; its parameter order is fclcert's. */
+    static String fuzzyliteShape(ShapeKind kind) {
+        return switch (kind) {
+            case TRIANGLE -> "Triangle";
+            case TRAPEZOID -> "Trapezoid";
+            case RECTANGLE -> "Rectangle";
+            case RAMP -> "Ramp";
+            case GAUSSIAN -> "Gaussian";
+            case GAUSSIAN_PRODUCT -> "GaussianProduct";
+            case BELL -> "Bell";
+            case SIGMOID -> "Sigmoid";
+            case SIGMOID_DIFFERENCE -> "SigmoidDifference";
+            case SIGMOID_PRODUCT -> "SigmoidProduct";
+            case COSINE -> "Cosine";
+            case S_SHAPE -> "SShape";
+            case Z_SHAPE -> "ZShape";
+            case PI_SHAPE -> "PiShape";
+            case CONCAVE -> "Concave";
+            case SPIKE -> "Spike";
+        };
+    }
+
+    /** A shape by name with its parameters. */
+    static String shape(String name, NamedShape shape, int[] order) {
+        StringBuilder out = new StringBuilder(name);
+        for (int i : order) {
+            out.append(' ').append(number(shape.parameters().get(i)));
+        }
+        return out.toString();
+    }
+
+    static int[] identity(int n) {
+        int[] order = new int[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        return order;
+    }
+
+    /** The method keyword both libraries read (upper case; MoM is spelled MM). */
+    static String method(DefuzzificationMethod m) {
+        return m == DefuzzificationMethod.MOM ? "MM" : m.keyword().toUpperCase(Locale.ROOT);
+    }
+
+    static boolean sampled(DefuzzificationMethod m) {
+        return m != DefuzzificationMethod.COGS && m != DefuzzificationMethod.COGSS;
+    }
+
+    static boolean singleton(MembershipFunction f) {
+        return f instanceof MembershipFunction.Singleton;
+    }
+
+    /** A bound rounded up to 3 significant digits, so that the printed number is still a bound. */
+    static String upTo3Digits(double bound) {
+        if (!Double.isFinite(bound) || bound == 0) {
+            return Double.toString(bound);
+        }
+        return new java.math.BigDecimal(bound).round(new java.math.MathContext(3, java.math.RoundingMode.UP))
+                .stripTrailingZeros().toPlainString();
+    }
+
+    /** FCL-X209 when a point list has a vertical edge (two points at one x), where the libraries differ. */
+    static void verticalEdge(BlockContext cx, org.fclcert.model.Term t, MembershipFunction.Points p) {
+        for (int i = 1; i < p.points().size(); i++) {
+            if (p.points().get(i).x() instanceof Literal a && p.points().get(i - 1).x() instanceof Literal b
+                    && a.value() == b.value()) {
+                cx.findings.differs(t.location(), WriterCode.VERTICAL_EDGE, "term '" + t.name() + "' has a vertical"
+                        + " edge at " + number(a) + "; " + cx.findings.library() + " takes another degree there than"
+                        + " fclcert does");
+                return;
+            }
+        }
+    }
+}

@@ -1,0 +1,72 @@
+package org.fclcert.write;
+
+import org.fclcert.model.DiagnosticCode;
+import org.fclcert.model.Severity;
+
+/**
+ * The codes of what a {@link DialectWriter} reports. {@code FCL-X1nn} (errors): the program says something the
+ * library's FCL cannot say, so the written text means something else even as fclcert reads that dialect.
+ * {@code FCL-X2nn} (warnings): the text means the same as fclcert reads the dialect, but the library itself is
+ * known to compute it otherwise (../shared/notes/peers.md); the round trip cannot see these. Entries of the
+ * catalogue ({@code cli.DiagnosticCatalogue}), listed in docs/diagnostics.md.
+ */
+public enum WriterCode implements DiagnosticCode {
+    INITIAL_VALUE("FCL-X101", "an initial value the library's FCL cannot declare"),
+    WEIGHT_VARIABLE("FCL-X102", "a WITH weight given by a variable"),
+    POINT_VARIABLE("FCL-X103", "a membership-function point given by a variable"),
+    BARE_VARIABLE("FCL-X104", "a bare variable as a subcondition or subconclusion (Table 9)"),
+    HEDGE("FCL-X105", "a hedge the library does not have"),
+    SHAPE("FCL-X106", "a membership function the library does not have"),
+    OPERATOR("FCL-X107", "an operator or a combination of operators the library cannot state"),
+    ACCUMULATION("FCL-X108", "an accumulation the library cannot state for that output"),
+    RULE_FORM("FCL-X109", "a rule the library's rule syntax cannot state"),
+    METHOD("FCL-X110", "a defuzzification method the library does not have"),
+    DEFAULT("FCL-X111", "a DEFAULT the library cannot state"),
+    NAME("FCL-X112", "a name the library does not read"),
+    TYPE("FCL-X113", "a data type the library does not declare"),
+    SAMPLED("FCL-X201", "the library samples this defuzzification instead of computing it exactly"),
+    NSUM("FCL-X202", "the library computes ACCU NSUM as BSUM"),
+    WEIGHT_BEFORE_ACTIVATION("FCL-X203", "the library folds a weight into the rule's degree before ACT MIN"),
+    COGS_PER_RULE("FCL-X204", "the library's CoGS counts each rule, not each term"),
+    FIRST_BLOCK_ONLY("FCL-X205", "the library builds only the first function block"),
+    IGNORED_BY_LIBRARY("FCL-X206", "a setting the library ignores or replaces by its own"),
+    LEFT_OUT("FCL-X207", "a part without effect on evaluation that the library's FCL has no place for, left out"),
+    NOT_LOADED("FCL-X208", "a construct the library is known not to load"),
+    VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x");
+
+    private final String code;
+    private final String meaning;
+
+    WriterCode(String code, String meaning) {
+        this.code = code;
+        this.meaning = meaning;
+    }
+
+    @Override
+    public String code() {
+        return code;
+    }
+
+    /** What the code is about, in a few words (the catalogue's line). */
+    @Override
+    public String meaning() {
+        return meaning;
+    }
+
+    /** A loss is an error (a warning with --allow-lossy); a library's deviation a warning. */
+    @Override
+    public Severity severity() {
+        return lossOfMeaning() ? Severity.ERROR : Severity.WARNING;
+    }
+
+    /** The libraries' constructs are Open Level features (Table 10), as for the conversion codes. */
+    @Override
+    public String clause() {
+        return "Table 10";
+    }
+
+    /** X1nn codes are losses of meaning; X2nn codes are the library's own deviations. */
+    public boolean lossOfMeaning() {
+        return code.startsWith("FCL-X1");
+    }
+}

@@ -1,0 +1,117 @@
+package org.fclcert.report;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.Map;
+import org.fclcert.harness.CaseResult;
+import org.fclcert.harness.CaseStatus;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Causes from messages written as the real libraries write them (copied from their output on corpus cases) and
+ * from hand-made wrong values: one cause per reason, the largest group first, interpretation cases left out.
+ */
+class CausesTest {
+    private static final String PROGRAM = String.join("\n",
+            "FUNCTION_BLOCK f",
+            "VAR_INPUT x : REAL := 1.0; END_VAR",
+            "VAR_OUTPUT y : REAL; END_VAR",
+            "FUZZIFY x TERM on := (0, 0) (1, 1); END_FUZZIFY",
+            "DEFUZZIFY y",
+            "    RANGE (0 .. 100);",
+            "    a, b : REAL;",
+            "END_DEFUZZIFY");
+
+    static CaseResult failed(String id, String message, Object expected, Object actual, String... flags) {
+        return MadeResults.made(id, "basic", List.of(id.replaceFirst("-\\d+$", "")), List.of(flags), CaseStatus.FAILED,
+                message, expected, actual, null, PROGRAM);
+    }
+
+    static CaseResult errored(String id, String message) {
+        return MadeResults.made(id, "extension", List.of("E-COND-VARIABLE"), List.of(), CaseStatus.ERRORED, message,
+                null, null, null, PROGRAM);
+    }
+
+    private static String cause(CaseResult c) {
+        String[] label = Causes.classify(c);
+        return label[0] + ": " + label[1];
+    }
+
+    @Test
+    void fuzzyliteAndJfuzzyliteMessagesGiveTheirDialectReason() {
+        assertEquals("rejected at load: one statement per line", cause(failed("E-NOT-001",
+                "rejected a program the standard accepts at line 3: jfuzzylite: [syntax error] expected <END_VAR> before"
+                        + " <VAR_OUTPUT> in line: VAR_OUTPUT y : REAL END_VAR", "load and evaluate", "rejected")));
+        assertEquals("rejected at load: `CoGS` spelling of METHOD", cause(failed("B-COGS-001",
+                "rejected a program the standard accepts: fuzzylite: [factory error] constructor of Defuzzifier <CoGS>"
+                        + " not registered", "load and evaluate", "rejected")));
+        assertEquals("rejected at load: `CoGS` spelling of METHOD", cause(failed("B-COGS-002",
+                "rejected a program the standard accepts: jfuzzylite: [construction error] constructor <CoGS> not"
+                        + " registered in DefuzzifierFactory", "load and evaluate", "rejected")));
+        // the line the message points at decides: line 2 declares an initial value
+        assertEquals("rejected at load: declared initial value", cause(failed("B-FB-005",
+                "rejected a program the standard accepts at line 2: fuzzylite: [syntax error] expected property of type"
+                        + " (key : value) in line: x : REAL := 1.0", "load and evaluate", "rejected")));
+        assertEquals("rejected at load: one statement per line", cause(failed("E-AND-PROD-001",
+                "rejected a program the standard accepts: fuzzylite: [syntax error] expected property of type"
+                        + " (key : value) in line: a : REAL b : REAL c : REAL", "load and evaluate", "rejected")));
+    }
+
+    @Test
+    void antlrMessagesAreExplainedByTheStatementAtTheirLine() {
+        assertEquals("rejected at load: `RANGE (a .. b)` without `:=`", cause(failed("E-RANGE-001",
+                "rejected a program the standard accepts at line 6: jFuzzyLogic printed a parse error and still returned"
+                        + " a system: line 6:10 missing ASSIGN_OPERATOR at '('", "load and evaluate", "rejected")));
+        assertEquals("rejected at load: several variables in one declaration", cause(failed("B-FB-002",
+                "rejected a program the standard accepts at line 7: jFuzzyLogic: line 7:5 mismatched input ','"
+                        + " expecting COLON", "load and evaluate", "rejected")));
+        // an unknown message: itself, without the case's position and numbers
+        assertEquals("rejected at load: jFuzzyLogic: mismatched input 'FOO' expecting N tokens", cause(failed("B-FB-009",
+                "rejected a program the standard accepts at line 4: jFuzzyLogic: line 4:3 mismatched input 'FOO'"
+                        + " expecting 12 tokens", "load and evaluate", "rejected")));
+    }
+
+    @Test
+    void wrongValuesAreGroupedByFeatureAndKindOfDeviation() {
+        assertEquals("wrong value: E-ACCU-NSUM (ACCU with the NSUM algorithm): wrong value", cause(failed("E-ACCU-NSUM-001",
+                "step 1 of 3: y = 33.3 where 25.0 is expected", Map.of("y", 25.0), Map.of("y", 100.0 / 3))));
+        // 0.5 % off: the size of a sampled defuzzification's error
+        assertEquals("wrong value: E-COG (METHOD CoG, centre of gravity): small deviation (relative error at most 1 %,"
+                + " as from sampling)", cause(failed("E-COG-001", "step 1 of 1: y = 40.2 where 40 is expected",
+                Map.of("y", 40.0), Map.of("y", 40.2))));
+        assertEquals("wrong value: E-COG (METHOD CoG, centre of gravity): NaN where a value is expected", cause(failed(
+                "E-COG-002", "step 1 of 1: y = NaN where 40 is expected", Map.of("y", 40.0), Map.of("y", Double.NaN))));
+    }
+
+    @Test
+    void crashesByExceptionAndPlaceAcceptedProgramsAndTimeouts() {
+        assertEquals("errored: crashed: NullPointerException in net.sourceforge.jFuzzyLogic.rule.RuleBlock.x:263",
+                cause(errored("E-COND-VARIABLE-001", "load: the implementation crashed: the implementation failed"
+                        + " internally on 'load': java.lang.NullPointerException: Cannot invoke \"a.b()\" because x is null"
+                        + " (at net.sourceforge.jFuzzyLogic.rule.RuleBlock.x:263)")));
+        assertEquals("errored: timed out", cause(errored("E-COND-VARIABLE-002",
+                "load: the implementation timed out: load did not return within 100 ms")));
+        assertEquals("refused to evaluate: jFuzzyLogic: MembershipFunction and Defuzzifier are neither both discrete nor"
+                + " both continuous", cause(failed("E-LM-002", "step 1 of 4: the implementation reported an evaluation"
+                + " error: the IUT reported an error on 'eval': jFuzzyLogic: MembershipFunction and Defuzzifier are"
+                + " neither both discrete nor both continuous\tTerm: ylm IS s1", null, null)));
+        assertEquals("accepted an invalid program: no error reported where the standard requires one", cause(failed(
+                "N-C016-001", "accepted a program the standard rejects: FCL-C016 at line 26", "reject FCL-C016 at line 26",
+                "accepted")));
+    }
+
+    @Test
+    void causesCountTheirCasesLargestFirstWithoutInterpretationCases() {
+        String cogs = "rejected a program the standard accepts: fuzzylite: [factory error] constructor of Defuzzifier"
+                + " <CoGS> not registered";
+        String line = "rejected a program the standard accepts at line 3: fuzzylite: [syntax error] expected <END_VAR>"
+                + " before <VAR_OUTPUT> in line: VAR_OUTPUT y : REAL END_VAR";
+        List<Causes.Cause> causes = Causes.of(List.of(failed("B-COGS-001", cogs, "load and evaluate", "r"),
+                failed("B-FB-001", line, "load and evaluate", "r"), failed("B-FB-002", line, "load and evaluate", "r"),
+                failed("B-COGS-003", cogs, "load and evaluate", "r", "interpretation:1")));
+        assertEquals(List.of("2 cases: rejected at load: one statement per line",
+                "1 case: rejected at load: `CoGS` spelling of METHOD"), causes.stream().map(Causes.Cause::sentence).toList());
+        assertEquals(List.of("B-FB-001", "B-FB-002"), causes.get(0).cases());
+    }
+}

@@ -1,0 +1,410 @@
+package org.fclcert.syntax.dialect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.Map;
+import org.fclcert.check.Analysis;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.model.DefaultValue;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Feature;
+import org.fclcert.model.Program;
+import org.fclcert.model.ShapeKind;
+import org.fclcert.syntax.FclReader;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.write.CanonicalWriter;
+import org.fclcert.write.StandardConversion;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Small programs written in each library's style, one construct each, of the kinds found in FCL files in the
+ * wild (issue 13): each read with its library's meaning, values calculated by hand.
+ */
+class DialectsInTheWildTest {
+
+    private static Analysis analyze(FclReader reader, String text) {
+        return Analysis.analyze(reader, "t.fcl", text);
+    }
+
+    private static Program read(FclReader reader, String text) {
+        Analysis a = analyze(reader, text);
+        return a.program().orElseThrow(() -> new AssertionError(a.diagnostics() + "\n" + text));
+    }
+
+    private static boolean has(Analysis a, String code, int line) {
+        return a.diagnostics().stream().anyMatch(d -> d.code().equals(code) && d.location().line() == line);
+    }
+
+    private static double eval(Program p, Map<String, Double> in, String out) throws Exception {
+        FunctionBlockInstance x = Evaluator.load(p).newInstance();
+        for (Map.Entry<String, Double> e : in.entrySet()) {
+            x.set(e.getKey(), e.getValue());
+        }
+        x.evaluate();
+        return x.get(out);
+    }
+
+    private static final String TS_HEAD = """
+            FUNCTION_BLOCK sugeno
+            VAR_INPUT
+              a: REAL;
+              b: REAL;
+            END_VAR
+            VAR_OUTPUT
+              y: REAL;
+            END_VAR
+            FUZZIFY a
+              RANGE := (0.000 .. 1.000);
+              TERM low := Ramp 1.000 0.000;
+              TERM high := Ramp 0.000 1.000;
+            END_FUZZIFY
+            FUZZIFY b
+              RANGE := (0.000 .. 4.000);
+            END_FUZZIFY
+            """;
+
+    /** fuzzylite Linear (one coefficient per input, then a constant) and Constant: a weighted average. */
+    @Test
+    void fuzzyliteTakagiSugenoIsTheWeightedAverageOfLinearFunctions() throws Exception {
+        String text = TS_HEAD + """
+                DEFUZZIFY y
+                  RANGE := (0.000 .. 20.000);
+                  TERM lin := Linear 2.000 3.000 1.000;
+                  TERM five := Constant 5.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  RULE 1 : if a is low then y is lin
+                  RULE 2 : if a is high then y is five
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = read(new FuzzyliteReader(), text);
+        // a = 0.25: low 0.75, high 0.25; lin = 2·0.25 + 3·2 + 1 = 7.5; (0.75·7.5 + 0.25·5) / 1 = 6.875
+        assertEquals(6.875, eval(p, Map.of("a", 0.25, "b", 2.0), "y"), 1e-12);
+        // a = 1: only high fires: 5, whatever b
+        assertEquals(5.0, eval(p, Map.of("a", 1.0, "b", 3.0), "y"), 0.0);
+        assertTrue(p.dialectFeatures().stream().anyMatch(u -> u.feature() == Feature.O_TAKAGI_SUGENO));
+        assertTrue(p.dialectFeatures().stream().anyMatch(u -> u.feature() == Feature.O_UNNAMED_BLOCK));
+        // the conversion says the Linear term is not standard FCL, and writes the Constant as a singleton
+        StandardConversion.Result r = new StandardConversion().convert(p);
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-TAKAGI-SUGENO")
+                && f.kind() instanceof StandardConversion.Kind.NotExpressible && f.location().line() == 19));
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-TAKAGI-SUGENO")
+                && f.kind() instanceof StandardConversion.Kind.Exact && f.location().line() == 20));
+    }
+
+    /** fuzzylite Function: a formula of the variables; a mistake in it is located at the formula. */
+    @Test
+    void fuzzyliteFunctionTermsAreFormulasOfTheVariables() throws Exception {
+        String body = """
+                DEFUZZIFY y
+                  RANGE := (0.000 .. 20.000);
+                  TERM f := Function %s;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  RULE 1 : if a is any then y is f
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = read(new FuzzyliteReader(), TS_HEAD + body.formatted("2*a + b^2 - fabs(-1)"));
+        assertEquals(2 * 0.25 + 9 - 1, eval(p, Map.of("a", 0.25, "b", 3.0), "y"), 1e-12);
+        Analysis bad = analyze(new FuzzyliteReader(), TS_HEAD + body.formatted("2*c + 1"));
+        assertTrue(has(bad, "FCL-S305", 19), bad.diagnostics()::toString);
+    }
+
+    @Test
+    void fuzzyliteConcaveAndSpikeFollowItsFormulas() {
+        // Concave 0.85 0.25 (falling): ½ at the inflection, 1 up to the end, 0.6 / (0.35 + u) beyond it
+        assertEquals(0.5, ShapeKind.CONCAVE.degree(new double[] {0.85, 0.25}, 0.85), 1e-15);
+        assertEquals(1.0, ShapeKind.CONCAVE.degree(new double[] {0.85, 0.25}, 0.1), 0.0);
+        assertEquals(0.6 / 1.35, ShapeKind.CONCAVE.degree(new double[] {0.85, 0.25}, 1.0), 1e-15);
+        // rising Concave 5.65 6.25: (6.25 − 5.65) / (12.5 − 5.65 − u)
+        assertEquals(0.6 / 1.85, ShapeKind.CONCAVE.degree(new double[] {5.65, 6.25}, 5.0), 1e-15);
+        // Spike 3.64 1.04: 1 at the centre, 1/e a tenth of the width away
+        assertEquals(1.0, ShapeKind.SPIKE.degree(new double[] {3.64, 1.04}, 3.64), 0.0);
+        assertEquals(Math.exp(-1), ShapeKind.SPIKE.degree(new double[] {3.64, 1.04}, 3.64 + 0.104), 1e-12);
+    }
+
+    /** fuzzylite 5 wrote the engine name verbatim; DEFAULT := nan | NC keeps the previous value. */
+    @Test
+    void fuzzyliteVerbatimNamesAndKeepingThePreviousValue() {
+        String text = """
+                FUNCTION_BLOCK my engine-1
+                VAR_INPUT
+                  a: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM low := Triangle 0.000 0.000 1.000;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  TERM one := 1.000;
+                  METHOD : COGS;
+                  DEFAULT := nan | NC;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  RULE 1 : if a is low then y is one
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = analyze(new FuzzyliteReader(), text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertEquals("my_engine_1", p.functionBlocks().get(0).name());
+        assertTrue(has(a, "FCL-W308", 1) && has(a, "FCL-W305", 14), a.diagnostics()::toString);
+        Defuzzification d = p.functionBlocks().get(0).defuzzifications().get(0);
+        assertTrue(d.defaultValue().orElseThrow() instanceof DefaultValue.NoChange);
+    }
+
+    /** fuzzylite evaluates AND PROD with OR MAX as written: read so, with a warning naming Table 3. */
+    @Test
+    void fuzzyliteOperatorsOutsideTable3AreEvaluatedAsWritten() throws Exception {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT
+                  a: REAL;
+                  b: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM hi := Ramp 0.000 1.000;
+                END_FUZZIFY
+                FUZZIFY b
+                  TERM hi := Ramp 0.000 1.000;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  TERM one := 1.000;
+                  TERM zero := 0.000;
+                  METHOD : COGS;
+                  DEFAULT := 0.000;
+                END_DEFUZZIFY
+                RULEBLOCK r
+                  AND : PROD;
+                  OR : MAX;
+                  ACCU : MAX;
+                  RULE 1 : if a is hi or b is hi then y is one
+                  RULE 2 : if a is hi and b is hi then y is zero
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = analyze(new FuzzyliteReader(), text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertTrue(has(a, "FCL-W308", 21), a.diagnostics()::toString);
+        // a = 0.5, b = 0.4: OR MAX 0.5 for one, AND PROD 0.2 for zero: (0.5·1 + 0.2·0) / 0.7
+        assertEquals(0.5 / 0.7, eval(p, Map.of("a", 0.5, "b", 0.4), "y"), 1e-12);
+    }
+
+    /**
+     * fuzzylite applies a conclusion's hedge to the rule's degree itself, so it holds for the later subconclusions
+     * of the rule too (the fuzzylite binary gives y = 0.2, z = 0.310345 here); EPROD is the Einstein product.
+     */
+    @Test
+    void fuzzyliteHedgesInConclusionsAndEinsteinProduct() throws Exception {
+        String text = """
+                FUNCTION_BLOCK h
+                VAR_INPUT
+                  a: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                  z: REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM hi := Ramp 0.000 1.000;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  TERM one := 1.000;
+                  TERM zero := 0.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                DEFUZZIFY z
+                  TERM one := 1.000;
+                  TERM zero := 0.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  AND : EPROD;
+                  RULE 1 : if a is hi then y is very one and z is one
+                  RULE 2 : if a is any then y is zero and z is zero
+                  RULE 3 : if a is hi and a is hi then z is one
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = read(new FuzzyliteReader(), text);
+        // a = 0.5: rule 1 degree 0.5, very → 0.25 for y and for z; rule 3: 0.25 / (2 − 0.75) = 0.2
+        assertEquals(0.25 / 1.25, eval(p, Map.of("a", 0.5), "y"), 1e-15);
+        assertEquals((0.25 + 0.2) / 1.45, eval(p, Map.of("a", 0.5), "z"), 1e-15);
+        StandardConversion.Result r = new StandardConversion().convert(p);
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-HEDGE-IN-CONCLUSION")
+                && f.kind() instanceof StandardConversion.Kind.NotExpressible));
+        assertTrue(r.findings().stream().anyMatch(f -> f.construct().equals("O-OTHER-NORM")
+                && f.kind() instanceof StandardConversion.Kind.NotExpressible));
+        // the strict reader does not take EPROD
+        assertTrue(analyze(new StrictReader(), text.replace("RULEBLOCK\n", "RULEBLOCK r\n")).program().isEmpty());
+    }
+
+    private static final String JFL_HEAD = """
+            FUNCTION_BLOCK tipper
+            VAR_INPUT
+              service : REAL;
+            END_VAR
+            VAR_OUTPUT
+              tip : REAL;
+            %s
+            END_VAR
+            FUZZIFY service
+              TERM poor := trian 0 0 10;
+              TERM good := trian 0 10 10;
+            END_FUZZIFY
+            DEFUZZIFY tip
+            %s
+              METHOD : COG;
+              DEFAULT := 0;
+            END_DEFUZZIFY
+            RULEBLOCK No1
+              AND : MIN;
+              ACCU : MAX;
+              RULE 1 : IF service IS poor THEN tip IS cheap;
+              RULE 2 : IF service IS good THEN tip IS generous;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /** jFuzzyLogic defuzzifies an output without RANGE over its terms' span: read as that RANGE, warned. */
+    @Test
+    void jfuzzylogicImpliedUniverseIsReadAsARange() throws Exception {
+        String text = JFL_HEAD.formatted("", "  TERM cheap := (0, 1) (10, 0);\n  TERM generous := (10, 0) (30, 1);");
+        Analysis a = analyze(new JFuzzyLogicReader(), text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertTrue(has(a, "FCL-W309", 13), a.diagnostics()::toString);
+        Defuzzification d = p.functionBlocks().get(0).defuzzifications().get(0);
+        assertEquals(0.0, d.range().orElseThrow().min().value());
+        assertEquals(30.0, d.range().orElseThrow().max().value());
+        // service = 0: only cheap at 1 → its triangle over [0, 10]: CoG 10/3
+        assertEquals(10.0 / 3, eval(p, Map.of("service", 0.0), "tip"), 1e-12);
+        // the conversion writes the RANGE out, and the strict reader reads it back
+        String converted = new CanonicalWriter().write(new StandardConversion().convert(p).program());
+        assertTrue(converted.contains("RANGE (0 .. 30);"), converted);
+        assertTrue(analyze(new StrictReader(), converted).program().isPresent());
+    }
+
+    @Test
+    void jfuzzylogicGaussianUniverseIsMeanPlusMinusFourSd() {
+        String text = JFL_HEAD.formatted("", "  TERM cheap := gauss 5 2;\n  TERM generous := gauss 25 3;");
+        Program p = read(new JFuzzyLogicReader(), text);
+        Defuzzification d = p.functionBlocks().get(0).defuzzifications().get(0);
+        assertEquals(-3.0, d.range().orElseThrow().min().value());
+        assertEquals(37.0, d.range().orElseThrow().max().value());
+    }
+
+    /** 'tip : REAL; RANGE := (0 .. 30);' in VAR_OUTPUT gives tip its range. */
+    @Test
+    void jfuzzylogicRangeAfterADeclaration() {
+        String text = JFL_HEAD.formatted("  RANGE := (0 .. 40);", "  TERM cheap := (0, 1) (10, 0);\n"
+                + "  TERM generous := (10, 0) (30, 1);");
+        Analysis a = analyze(new JFuzzyLogicReader(), text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertEquals(40.0, p.functionBlocks().get(0).defuzzifications().get(0).range().orElseThrow().max().value());
+        assertFalse(has(a, "FCL-W309", 13));
+    }
+
+    /** Text after END_FUNCTION_BLOCK: jFuzzyLogic ignores it; read with a warning at it. */
+    @Test
+    void trailingTextIsToleratedWithAWarning() {
+        String text = JFL_HEAD.formatted("", "  TERM cheap := 5;\n  TERM generous := 25;").replace("COG;", "COGS;")
+                + "some notes here\n";
+        Analysis a = analyze(new JFuzzyLogicReader(), text);
+        assertTrue(a.program().isPresent(), a.diagnostics()::toString);
+        assertTrue(has(a, "FCL-W308", 26), a.diagnostics()::toString);
+    }
+
+    // ---------------------------------------------------------------- auto-detection
+
+    @Test
+    void wordsInCommentsAreNoEvidence() {
+        String jfl = JFL_HEAD.formatted("", "  TERM cheap := (0, 1) (10, 0);\n  TERM generous := (10, 0) (30, 1);")
+                .replace("VAR_OUTPUT", "VAR_OUTPUT // Define input variables Triangle Gaussian ACCUM");
+        DialectReaders.Choice c = DialectReaders.auto(jfl);
+        assertEquals(Dialect.JFUZZYLOGIC, c.dialect(), c.explanation());
+        assertFalse(c.unsure());
+        // a standard program with '//' comments naming FFLL and fuzzylite constructs stays strict
+        String standard = """
+                FUNCTION_BLOCK f // ACCUM: Triangle nan
+                VAR_INPUT // Define input variables
+                  a : REAL;
+                END_VAR
+                END_FUNCTION_BLOCK
+                """;
+        assertEquals(Dialect.STRICT, DialectReaders.auto(standard).dialect(), DialectReaders.auto(standard).explanation());
+    }
+
+    @Test
+    void upperCaseJfuzzylogicShapeNamesCount() {
+        String text = JFL_HEAD.formatted("", "  TERM cheap := (0, 1) (10, 0);\n  TERM generous := (10, 0) (30, 1);")
+                .replace("trian 0 0 10", "TRIAN 0 0 10").replace("trian 0 10 10", "TRIAN 0 10 10");
+        assertEquals(Dialect.JFUZZYLOGIC, DialectReaders.auto(text).dialect());
+        assertTrue(read(new JFuzzyLogicReader(), text).functionBlocks().size() == 1);
+    }
+
+    /** As many signs of jFuzzyLogic as of fuzzylite: a located FCL-S311 naming both, never a guess. */
+    @Test
+    void aCloseCallAsksForDialect() {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT
+                  a : REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM x := trian 0 1 2;
+                  TERM y := Triangle 0 1 2;
+                END_FUZZIFY
+                END_FUNCTION_BLOCK
+                """;
+        DialectReaders.Choice c = DialectReaders.auto(text);
+        assertTrue(c.unsure(), c.explanation());
+        List<Diagnostic> d = c.reader().read("t.fcl", text).diagnostics();
+        assertEquals(1, d.size());
+        assertEquals("FCL-S311", d.get(0).code());
+        assertEquals(6, d.get(0).location().line());
+        assertTrue(d.get(0).message().contains("--dialect jfuzzylogic") && d.get(0).message().contains("--dialect fuzzylite"),
+                d.get(0).message());
+    }
+
+    /** A detector's failure is reported, never taken for 'no evidence' (which would read the file as strict). */
+    @Test
+    void aFailingDetectorIsAnErrorNotStrict() {
+        LibraryDialect broken = new FuzzyliteDialect() {
+            @Override
+            List<DialectReader.Giveaway> giveaways(Giveaways.Scan scan) {
+                throw new IndexOutOfBoundsException("bug");
+            }
+        };
+        IllegalStateException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class,
+                () -> Giveaways.find("FUNCTION_BLOCK f END_FUNCTION_BLOCK", broken));
+        assertTrue(e.getMessage().contains("fuzzylite"));
+        LibraryDialect brokenReader = new FuzzyliteDialect() {
+            @Override
+            String defuzzifyStatements() {
+                throw new IllegalStateException("bug");
+            }
+        };
+        var r = DialectParser.read("t.fcl", "FUNCTION_BLOCK f\nDEFUZZIFY y\n  BOGUS;\nEND_DEFUZZIFY\nEND_FUNCTION_BLOCK\n",
+                brokenReader);
+        assertTrue(r.program().isEmpty());
+        assertTrue(r.diagnostics().stream().anyMatch(d -> d.code().equals("FCL-S999")), r.diagnostics()::toString);
+    }
+}

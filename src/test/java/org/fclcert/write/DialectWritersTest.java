@@ -1,0 +1,231 @@
+package org.fclcert.write;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.fclcert.check.Analysis;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
+import org.junit.jupiter.api.Test;
+
+/** The library writers on small programs whose written text and values are worked out by hand. */
+class DialectWritersTest {
+
+    private static Program standard(String text) {
+        Analysis a = Analysis.analyze(StrictReader.openLevel(), "p.fcl", text);
+        assertFalse(a.hasErrors(), a.diagnostics().toString());
+        return a.program().orElseThrow();
+    }
+
+    private static final String TWO_WEIGHTS = """
+            FUNCTION_BLOCK fan
+            VAR_INPUT t : REAL; END_VAR
+            VAR_OUTPUT speed : REAL; noise : REAL; END_VAR
+            FUZZIFY t TERM warm := (10, 0) (30, 1); END_FUZZIFY
+            DEFUZZIFY speed TERM fast := 100; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+            DEFUZZIFY noise TERM loud := 60; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+            RULEBLOCK r
+                AND : MIN;
+                ACCU : MAX;
+                RULE 1 : IF NOT (t IS warm) THEN speed IS fast WITH 0.5, noise IS loud;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /** fuzzylite: one statement per line, ACCU in DEFUZZIFY, the rule split by weight, NOT as 'is not'. */
+    @Test
+    void fuzzyliteLayoutSplitsARuleByWeight() {
+        Written w = DialectWriters.writer(Dialect.FUZZYLITE).write(standard(TWO_WEIGHTS));
+        assertEquals("""
+                FUNCTION_BLOCK fan
+
+                VAR_INPUT
+                  t: REAL;
+                END_VAR
+
+                VAR_OUTPUT
+                  speed: REAL;
+                  noise: REAL;
+                END_VAR
+
+                FUZZIFY t
+                  TERM warm := (10, 0) (30, 1);
+                END_FUZZIFY
+
+                DEFUZZIFY speed
+                  RANGE := (99 .. 101);
+                  TERM fast := 100;
+                  METHOD : COGS;
+                  ACCU : MAX;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+
+                DEFUZZIFY noise
+                  RANGE := (59 .. 61);
+                  TERM loud := 60;
+                  METHOD : COGS;
+                  ACCU : MAX;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+
+                RULEBLOCK r
+                  AND : MIN;
+                  OR : MAX;
+                  ACT : MIN;
+                  RULE 1 : if t is not warm then speed is fast with 0.5
+                  RULE 2 : if t is not warm then noise is loud
+                END_RULEBLOCK
+
+                END_FUNCTION_BLOCK
+                """, w.text());
+        assertTrue(w.exact());
+        assertTrue(w.differences().isEmpty(), w.differences().toString());
+        RoundTrip rt = DialectWriters.readBackAndCompare(standard(TWO_WEIGHTS), w);
+        assertTrue(rt.equal(), rt.summary());
+    }
+
+    /** jFuzzyLogic: one WITH per rule too, ACCU and DEFAULT written out, NOT as IS NOT. */
+    @Test
+    void jfuzzylogicLayout() {
+        Written w = DialectWriters.writer(Dialect.JFUZZYLOGIC).write(standard(TWO_WEIGHTS));
+        assertTrue(w.text().contains("""
+                RULEBLOCK r
+                    AND : MIN;
+                    ACCU : MAX;
+                    RULE 1 : IF t IS NOT warm THEN speed IS fast WITH 0.5;
+                    RULE 2 : IF t IS NOT warm THEN noise IS loud;
+                END_RULEBLOCK
+                """), w.text());
+        assertTrue(w.text().contains("    METHOD : COGS;\n    DEFAULT := 0;\n"), w.text());
+        assertTrue(DialectWriters.readBackAndCompare(standard(TWO_WEIGHTS), w).equal());
+    }
+
+    private static final String OR_NOT = """
+            FUNCTION_BLOCK heater
+            VAR_INPUT a : REAL; b : REAL; END_VAR
+            VAR_OUTPUT y : REAL; END_VAR
+            FUZZIFY a TERM hot := (0, 0) (10, 1); END_FUZZIFY
+            FUZZIFY b TERM dry := (0, 1) (4, 1) (8, 0) (10, 0); END_FUZZIFY
+            DEFUZZIFY y TERM on := 100; TERM off := 0; METHOD : CoGS; DEFAULT := 50; END_DEFUZZIFY
+            RULEBLOCK r
+                AND : MIN; OR : MAX; ACCU : MAX;
+                RULE 1 : IF b IS NOT dry OR a IS hot THEN y IS off;
+                RULE 2 : IF b IS dry THEN y IS on;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /**
+     * FFLL: the OR becomes two rules, each naming both inputs in declaration order; 'b IS NOT dry' becomes the
+     * complement term (x, 1 − y) and an input a conjunction leaves out gets the term 'anything' of degree 1.
+     */
+    @Test
+    void ffllExpandsOrAndNotIntoRulesOverEveryInput() throws Exception {
+        Program p = standard(OR_NOT);
+        Written w = DialectWriters.writer(Dialect.FFLL).write(p);
+        assertTrue(w.exact(), w.notExpressible().toString());
+        assertTrue(w.text().contains("""
+                FUZZIFY a
+                    TERM hot := (0, 0) (10, 1) (10, 1);
+                    TERM anything := (0, 1) (5, 1) (10, 1);
+                END_FUZZIFY
+                """), w.text());
+        assertTrue(w.text().contains("""
+                FUZZIFY b
+                    TERM dry := (0, 1) (4, 1) (8, 0) (10, 0);
+                    TERM not_dry := (0, 0) (4, 0) (8, 1) (10, 1);
+                    TERM anything := (0, 1) (5, 1) (10, 1);
+                END_FUZZIFY
+                """), w.text());
+        assertTrue(w.text().contains("""
+                    RULE 0: IF a IS anything AND b IS not_dry THEN y IS off;
+                    RULE 1: IF a IS hot AND b IS anything THEN y IS off;
+                    RULE 2: IF a IS anything AND b IS dry THEN y IS on;
+                """), w.text());
+        assertTrue(w.text().contains("    a REAL; (* RANGE(0 .. 10) *)\n"), w.text());
+        // by hand: a = 5, b = 6: hot 0.5, dry 0.5, not dry 0.5; off = max(0.5, 0.5) = 0.5, on = 0.5 → 50
+        // a = 2, b = 9: hot 0.2, dry 0, not dry 1; off = 1, on = 0 → 0
+        Program back = Analysis.analyze(DialectReaders.reader(Dialect.FFLL), "w.fcl", w.text()).program().orElseThrow();
+        FunctionBlockInstance fb = Evaluator.load(back).newInstance();
+        fb.set("a", 5);
+        fb.set("b", 6);
+        fb.evaluate();
+        assertEquals(50, fb.get("y"), 1e-12);
+        fb.set("a", 2);
+        fb.set("b", 9);
+        fb.evaluate();
+        assertEquals(0, fb.get("y"), 1e-12);
+        RoundTrip rt = DialectWriters.readBackAndCompare(p, w);
+        assertTrue(rt.equal(), rt.summary());
+        assertTrue(rt.comparisons() > 1000, rt.summary());
+    }
+
+    /** What cannot be said is located at the original construct and makes the written program differ. */
+    @Test
+    void lossesAreLocatedAndTheRoundTripSaysWhere() {
+        String text = """
+                FUNCTION_BLOCK w
+                VAR_INPUT a : REAL; k : REAL := 0.25; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY a TERM on := (0, 0) (1, 1); END_FUZZIFY
+                FUZZIFY k TERM on := (0, 0) (1, 1); END_FUZZIFY
+                DEFUZZIFY y TERM hi := 100; TERM lo := 0; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r
+                    AND : PROD; OR : ASUM; ACCU : MAX;
+                    RULE 1 : IF a IS on OR k IS on THEN y IS hi WITH k;
+                    RULE 2 : IF a IS NOT on THEN y IS lo;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = standard(text);
+        Written jfl = DialectWriters.writer(Dialect.JFUZZYLOGIC).write(p);
+        assertFalse(jfl.exact());
+        List<String> codes = jfl.notExpressible().stream().map(d -> d.code() + "@" + d.location().line() + ":"
+                + d.location().column()).toList();
+        assertEquals(List.of("FCL-X101@2:33", "FCL-X102@9:54"), codes);
+        RoundTrip rt = DialectWriters.readBackAndCompare(p, jfl, null, List.of(Map.of("a", 0.5)));
+        assertTrue(rt.readBack().isPresent());
+        assertFalse(rt.equal());
+        // a = 0.5, k = 0.25 (its initial value): original OR ASUM = 0.5 + 0.25 - 0.125 = 0.625, weighted by k;
+        // written, k starts at 0 (OR 0.5) and the weight is k's initial value 0.25: hi 0.125; lo = 1 - 0.5 both times
+        RoundTrip.Mismatch first = rt.mismatches().get(0);
+        assertEquals(Map.of("a", 0.5), first.inputs());
+        assertEquals(100 * 0.625 * 0.25 / (0.625 * 0.25 + 0.5), first.original(), 1e-12);
+        assertEquals(100 * 0.5 * 0.25 / (0.5 * 0.25 + 0.5), first.written(), 1e-12);
+        assertEquals("FCL-X101", jfl.notExpressible().get(0).code());
+        Written ffll = DialectWriters.writer(Dialect.FFLL).write(p);
+        assertTrue(ffll.notExpressible().stream().anyMatch(d -> d.code().equals("FCL-X109")
+                && d.location().line() == 9 && d.message().contains("no OR")), ffll.notExpressible().toString());
+    }
+
+    @Test
+    void strictHasNoLibraryWriter() {
+        assertThrows(IllegalArgumentException.class, () -> DialectWriters.writer(Dialect.STRICT));
+    }
+
+    @Test
+    void theDiagnosticsCatalogueListsEveryWriterCode() throws Exception {
+        String doc = Files.readString(Path.of("docs/diagnostics.md"));
+        for (WriterCode c : WriterCode.values()) {
+            assertTrue(doc.contains("| " + c.code() + " | " + c.severity().word() + " | " + c.meaning() + " |"), c.code());
+            assertEquals(c.code().startsWith("FCL-X1"), c.lossOfMeaning());
+        }
+        assertEquals(WriterCode.values().length, java.util.Arrays.stream(WriterCode.values()).map(WriterCode::code)
+                .distinct().count());
+    }
+
+    static String codes(List<Diagnostic> ds) {
+        return String.join(",", ds.stream().map(Diagnostic::code).toList());
+    }
+}
