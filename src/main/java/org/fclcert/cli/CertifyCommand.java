@@ -229,7 +229,7 @@ final class CertifyCommand implements Callable<Integer> {
         out.println("Open Level features realised (Table 10): " + realised(r, 10));
         if (!r.causes().isEmpty()) {
             out.println("Failures by cause:");
-            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
+            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + TerminalText.visible(c.sentence())));
             if (r.causes().size() > CAUSES_SHOWN) {
                 out.println("  … and " + (r.causes().size() - CAUSES_SHOWN) + " more causes (report.md, \"Failures by cause\")");
             }

@@ -51,7 +51,7 @@ public final class MarkdownReport {
         line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
                 + ".");
         line("");
-        line("- Implementation: " + Texts.implementation(r));
+        line("- Implementation: " + Texts.implementation(r, Texts::cell));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));
@@ -193,7 +193,7 @@ public final class MarkdownReport {
             if (!rejected.isEmpty()) {
                 line("");
                 line("Rejected at load for a reason of the implementation's own dialect, so they say nothing about the"
-                        + " point they depend on: " + String.join(", ", rejected) + ".");
+                        + " point they depend on: " + Texts.cell(String.join(", ", rejected)) + ".");
             }
         }
         line("");

@@ -152,10 +152,15 @@ final class Texts {
 
     /** The header's implementation line: its name and version, then how it was reached. */
     static String implementation(Report r) {
+        return implementation(r, s -> s);
+    }
+
+    /** {@link #implementation(Report)} with the implementation's own words (name, version) passed through {@code own}. */
+    static String implementation(Report r, java.util.function.UnaryOperator<String> own) {
         String spec = r.iut().spec();
         String command = r.iut().command();
         String how = spec == null || spec.isBlank() ? command : spec;
-        String out = r.iut().name() + " " + r.iut().version() + ", reached as `" + how + "`";
+        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `" + how + "`";
         if (command != null && !command.isBlank() && !command.equals(how)) {
             out += " (" + command + ")";
         }

@@ -161,7 +161,8 @@ class HostileIutTest {
         assertFalse(terminal.contains("\rFAILED") || terminal.contains("\r\u001b"), terminal);
         assertTrue(terminal.contains("evil\\r\\e[2K\\e]0;pwned\\aFAILED\\n# forged heading"), terminal);
         String md = Files.readString(dir.resolve("report.md"));
-        assertFalse(md.contains("\n# forged heading"), "no forged heading");
+        assertFalse(md.contains("\n# forged heading"), () -> "no forged heading: " + md.lines()
+                .filter(l -> l.startsWith("# forged")).findFirst().orElse("") + " in\n" + md);
         assertFalse(md.contains("\n**Basic Level: conformant**"), "no forged verdict line");
         assertFalse(md.contains("<script>") || java.util.regex.Pattern.compile("(?<!\\\\)\\]\\(javascript:").matcher(md).find()
                 || md.contains("\u0000")
