@@ -59,6 +59,14 @@ final class Texts {
      * (no emphasis, links such as {@code [x](javascript:…)}, autolinks, raw HTML or entities), control
      * characters shown visibly ({@code \0}, {@code \e}, {@code \x07}) rather than written.
      */
+    /**
+     * A table cell of fclcert's own Markdown (the comparison page's links and bold marks): one line, pipes
+     * escaped, nothing else touched. Text from an implementation goes through {@link #cell} instead.
+     */
+    static String tableCell(String s) {
+        return s == null ? "" : s.replace("\r", "").replace("\n", " ").replace("|", "\\|");
+    }
+
     static String cell(String s) {
         if (s == null) {
             return "";
