@@ -125,7 +125,7 @@ final class CertifyCommand implements Callable<Integer> {
         try {
             return certify(spec.commandLine().getOut(), err);
         } catch (CannotRun e) {
-            err.println("fclcert certify: " + e.getMessage());
+            err.println("fclcert certify: " + TerminalText.visibleLines(e.getMessage()));
             err.flush();
             return CANNOT_RUN;
         }
@@ -249,7 +249,7 @@ final class CertifyCommand implements Callable<Integer> {
 
     private static void print(PrintWriter out, Report r, Path dir) {
         Report.Summary s = r.summary();
-        out.println(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
+        out.println(TerminalText.visible(r.iut().name()) + " " + TerminalText.visible(r.iut().version()) + ": " + s.cases() + " cases, " + s.passed()
                 + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
         if (r.rejections().doubtful()) {
             out.println("Negative cases: " + r.rejections().sentence());
@@ -267,13 +267,13 @@ final class CertifyCommand implements Callable<Integer> {
         }
         if (!r.causes().isEmpty()) {
             out.println("Failures by cause:");
-            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
+            r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + TerminalText.visible(c.sentence())));
             if (r.causes().size() > CAUSES_SHOWN) {
                 out.println("  … and " + (r.causes().size() - CAUSES_SHOWN) + " more causes (report.md, \"Failures by cause\")");
             }
         }
         if (!r.claims().notRealised().isEmpty()) {
-            out.println("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
+            out.println("Claimed but not realised: " + TerminalText.visible(String.join(", ", r.claims().notRealised())));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);

@@ -25,6 +25,6 @@ final class IutArguments {
     /** The end of the implementation's standard error to append to a message about e; empty when it wrote none. */
     static String stderrTail(IutException e) {
         String tail = e.stderrTail();
-        return tail == null || tail.isBlank() ? "" : "\n--- its stderr ---\n" + tail.strip();
+        return tail == null || tail.isBlank() ? "" : "\n--- its stderr ---\n" + TerminalText.visibleLines(tail.strip());
     }
 }

@@ -75,14 +75,49 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         return cli;
     }
 
-    /** Executes; an Error (stack overflow, out of memory) bypasses picocli's handler, so it is caught here. */
+    /**
+     * Stack of the thread every command runs on. Conditions may legally nest {@code Limits.MAX_NESTING_DEPTH}
+     * deep (and an IUT's export may too); reading, checking, evaluating and writing them recurse once or a few
+     * times per level, which overflows the JVM's default 1 MiB thread stack near depth 700. 512 MiB is address
+     * space reserved, not memory used: pages are committed only as deep programs touch them.
+     */
+    static final long COMMAND_STACK_BYTES = 512L * 1024 * 1024;
+
+    /**
+     * Executes on a thread with {@link #COMMAND_STACK_BYTES} of stack (the one place the CLI's depth is set);
+     * an Error (stack overflow, out of memory) bypasses picocli's handler, so it is caught here.
+     */
     static int execute(CommandLine cli, PrintWriter err, String... args) {
-        try {
-            return cli.execute(args);
-        } catch (Error e) {
+        int[] exit = {ExitCodes.INTERNAL};
+        Throwable[] thrown = {null};
+        Thread worker = new Thread(null, () -> {
+            try {
+                exit[0] = cli.execute(args);
+            } catch (Throwable e) {
+                thrown[0] = e;
+            }
+        }, "fclcert", COMMAND_STACK_BYTES);
+        worker.start();
+        boolean interrupted = false;
+        while (true) {
+            try {
+                worker.join();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+        if (thrown[0] instanceof Error e) {
             err.println("fclcert: internal error: " + describe(e));
             return ExitCodes.INTERNAL;
         }
+        if (thrown[0] instanceof RuntimeException e) {
+            throw e;
+        }
+        return exit[0];
     }
 
     private static String describe(Throwable e) {

@@ -66,7 +66,7 @@ final class ProbeCommand implements Callable<Integer> {
                     (row, index, count) -> progress(err, row.id(), index, count));
         } catch (IutException e) {
             clearProgress(err);
-            err.println("fclcert probe: cannot probe '" + iut.spec + "': " + e.getMessage() + IutArguments.stderrTail(e));
+            err.println("fclcert probe: cannot probe '" + iut.spec + "': " + TerminalText.visible(e.getMessage()) + IutArguments.stderrTail(e));
             err.flush();
             return ExitCodes.USAGE;
         }

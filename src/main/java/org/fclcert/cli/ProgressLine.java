@@ -86,7 +86,7 @@ final class ProgressLine implements RunListener {
         synchronized (err) {
             err.print(terminal ? "\r\033[K" : "");
             err.println(result.status().word().toUpperCase(Locale.ROOT) + " " + result.id()
-                    + (result.title() == null ? "" : " (" + result.title() + ")") + ": " + firstLine(result.message()));
+                    + (result.title() == null ? "" : " (" + TerminalText.visible(result.title()) + ")") + ": " + TerminalText.visible(firstLine(result.message())));
             if (result.status() != CaseStatus.SKIPPED) {
                 details(result);
             }
@@ -106,7 +106,7 @@ final class ProgressLine implements RunListener {
         negativeCase(r);
         String stderr = lastStderrLine(r.evidence().error());
         if (stderr != null) {
-            err.println("  its stderr: " + stderr);
+            err.println("  its stderr: " + TerminalText.visible(stderr));
         }
         err.println("  reproduce: " + reproduce(r.id()));
         if (directory != null && r.status() != CaseStatus.SKIPPED) {

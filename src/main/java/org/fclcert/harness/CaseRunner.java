@@ -54,6 +54,9 @@ final class CaseRunner {
         } catch (RuntimeException e) {
             // the contract allows only IutException; an in-process implementation may still break it
             r.errored("the implementation failed unexpectedly: " + e, String.valueOf(e));
+        } catch (StackOverflowError e) {
+            // an in-process implementation recursing without end: its fault, and the run goes on
+            r.errored("the implementation overflowed the stack", "java.lang.StackOverflowError");
         }
         CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
         if (presenter != null && !c.expectReject()) {
@@ -180,6 +183,10 @@ final class CaseRunner {
             r.export(ExportStatus.FAILED, "export: the implementation " + IutFaults.describe(e));
         } catch (RuntimeException e) {
             r.export(ExportStatus.FAILED, "export: the exported text could not be checked: " + e);
+        } catch (StackOverflowError e) {
+            // whatever the implementation exports is its own fault, never the end of the run (results are kept)
+            r.export(ExportStatus.FAILED, "export: the exported FCL nests too deeply for fclcert to read and"
+                    + " evaluate it on this thread's stack");
         }
     }
 

@@ -2,6 +2,7 @@ package org.fclcert.harness;
 
 import org.fclcert.probe.DataCheckEntry;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -9,6 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 /**
  * A {@code results.jsonl} read back: its header, the case results it holds, and the lines it could not use
@@ -21,6 +26,9 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
         dataCheckList = List.copyOf(dataCheckList);
         problems = List.copyOf(problems);
     }
+
+    /** The parts of the run header a report is made from. */
+    private static final List<String> HEADER_PARTS = List.of("iut", "toolkit", "corpus", "selection");
 
     /** Reads a results file; fails with a located message when there is no usable header line. */
     public static ResultsFile read(Path file) throws IOException, InvalidResultsException {
@@ -39,8 +47,19 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                 JsonNode node = Json.mapper().readTree(line);
                 String type = node.path("type").asText("");
                 if (type.equals("run")) {
+                    Optional<String> missing = HEADER_PARTS.stream().filter(f -> !node.path(f).isObject()).findFirst();
+                    if (missing.isPresent()) {
+                        throw new InvalidResultsException(where + ": the run header has no '" + missing.get()
+                                + "' object; the file is damaged (rerun fclcert certify to write it again)");
+                    }
                     header = Json.mapper().treeToValue(node, RunHeader.class);
                 } else if (type.equals("case")) {
+                    Optional<String> missing = Stream.of("id", "status")
+                            .filter(f -> !node.path(f).isTextual() || node.path(f).asText().isBlank()).findFirst();
+                    if (missing.isPresent()) {
+                        problems.add(where + ": case line without '" + missing.get() + "' ignored");
+                        continue;
+                    }
                     results.add(Json.mapper().treeToValue(node, CaseResult.class));
                 } else if (type.equals("dataCheckList")) {
                     dataCheckList.clear();
@@ -48,8 +67,17 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                 } else {
                     problems.add(where + ": line of unknown type '" + type + "' ignored");
                 }
+            } catch (JsonMappingException e) {
+                // its own message names Java types; say which field, in the file's terms
+                String field = e.getPath().stream().map(JsonMappingException.Reference::getFieldName)
+                        .filter(Objects::nonNull).collect(Collectors.joining("."));
+                problems.add(where + ": line ignored: " + (field.isEmpty() ? "a value" : "field '" + field + "'")
+                        + " has a value of the wrong kind");
             } catch (JsonProcessingException e) {
-                problems.add(where + ": unreadable line ignored (" + e.getOriginalMessage() + ")");
+                problems.add(where + ": unreadable line ignored (not one JSON object)");
+            } catch (RuntimeException e) {
+                // a record refused a missing part (a damaged line): never a crash of `report --from`
+                problems.add(where + ": line ignored: a required part is missing or empty");
             }
         }
         if (header == null) {

@@ -30,9 +30,9 @@ public final class IutException extends Exception {
     private final String stderrTail;
 
     public IutException(Kind kind, String message, String stderrTail) {
-        super(message);
+        super(IutText.kept(message));
         this.kind = Objects.requireNonNull(kind, "kind");
-        this.stderrTail = stderrTail == null ? "" : stderrTail;
+        this.stderrTail = stderrTail == null ? "" : IutText.wellFormed(stderrTail);   // bounded by stderrTailBytes
     }
 
     public IutException(Kind kind, String message) {

@@ -18,10 +18,11 @@ import java.util.Objects;
 public record IutInfo(
         String name, String version, String command, List<String> claims, Map<String, Long> declaredLimits) {
     public IutInfo {
-        Objects.requireNonNull(name, "name");
-        Objects.requireNonNull(version, "version");
+        // what the implementation says of itself is kept as IutText keeps any of its strings
+        name = IutText.kept(Objects.requireNonNull(name, "name"));
+        version = IutText.kept(Objects.requireNonNull(version, "version"));
         Objects.requireNonNull(command, "command");
-        claims = List.copyOf(claims);
+        claims = claims.stream().map(IutText::kept).toList();
         declaredLimits = Map.copyOf(declaredLimits);
     }
 }

@@ -10,7 +10,7 @@ public sealed interface LoadOutcome {
     /** The program loaded; {@code blocks} are its function block names in the order written. */
     record Loaded(List<String> blocks) implements LoadOutcome {
         public Loaded {
-            blocks = List.copyOf(blocks);
+            blocks = blocks.stream().map(IutText::kept).toList();
         }
     }
 
@@ -20,7 +20,7 @@ public sealed interface LoadOutcome {
      */
     record Rejected(String message, OptionalInt line) implements LoadOutcome {
         public Rejected {
-            Objects.requireNonNull(message, "message");
+            message = IutText.kept(Objects.requireNonNull(message, "message"));
             Objects.requireNonNull(line, "line");
         }
     }

@@ -1,6 +1,7 @@
 package org.fclcert.iut;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.exc.StreamReadException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -93,7 +94,14 @@ final class ProcessIut implements ImplementationUnderTest {
 
     @Override
     public Optional<String> export() throws IutException {
-        return call(Protocol.request("export"), Protocol::exported, true);
+        JsonNode reply = call(Protocol.request("export"), r -> r, true);
+        try {
+            return Protocol.exported(reply);
+        } catch (IutException e) {
+            // a well-formed reply with our id but without 'fcl': the process is still in step, so it is not
+            // killed (a restart would spend the restart budget on a missing optional feature)
+            throw new IutException(e.kind(), e.getMessage(), stderrTail());
+        }
     }
 
     @Override
@@ -207,6 +215,11 @@ final class ProcessIut implements ImplementationUnderTest {
     private JsonNode exchange(ObjectNode request, Duration timeout) throws IutException {
         long id = ++nextId;
         String op = request.get("op").asText();
+        ReplyReader.Line early = session.unasked();
+        if (early != null) {
+            // a reply written before the question (say an eval answer sent along with the load reply) is no answer
+            throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: " + quote(early.text()));
+        }
         session.send(write(request.put("id", id)));
         long deadline = System.nanoTime() + timeout.toNanos();
         while (true) {
@@ -245,11 +258,22 @@ final class ProcessIut implements ImplementationUnderTest {
         JsonNode reply;
         try {
             reply = mapper.readTree(text);
+        } catch (StreamReadException e) {
+            if (e.getMessage() != null && e.getMessage().startsWith("Duplicate field")) {
+                throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is ambiguous: it gives a key twice in one object: "
+                        + quote(text));
+            }
+            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not JSON: " + quote(text));
         } catch (JsonProcessingException e) {
             throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not JSON: " + quote(text));
         }
         if (reply == null || !reply.isObject() || !reply.path("ok").isBoolean()) {
             throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not an object with a boolean 'ok': " + quote(text));
+        }
+        Optional<String> collision = Protocol.caseCollision(reply);
+        if (collision.isPresent()) {
+            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is ambiguous: key '" + IutText.kept(collision.get())
+                    + "' differs from another key of the same object only in case: " + quote(text));
         }
         JsonNode echoed = reply.get("id");
         if (echoed != null && !(echoed.canConvertToExactIntegral() && echoed.asLong() == id)) {
@@ -290,6 +314,9 @@ final class ProcessIut implements ImplementationUnderTest {
     }
 
     private static String quote(String text) {
-        return text.length() <= QUOTE_CHARS ? text : text.substring(0, QUOTE_CHARS) + "…";
+        String shown = IutText.wellFormed(text);
+        return shown.length() <= QUOTE_CHARS ? shown
+                : shown.substring(0, Character.isHighSurrogate(shown.charAt(QUOTE_CHARS - 1)) ? QUOTE_CHARS - 1
+                        : QUOTE_CHARS) + "…";
     }
 }

@@ -51,8 +51,20 @@ final class ProcessSession {
         return process.isAlive();
     }
 
+    /**
+     * Every process the IUT has been seen to start. A child that outlives its parent is re-parented away
+     * from the IUT's tree (and may keep its stdout open), so {@code descendants()} at kill time would miss
+     * it; the tree is therefore noted at every request and reply and all of it is killed.
+     */
+    private final java.util.Set<ProcessHandle> seen = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    private void noteDescendants() {
+        process.descendants().forEach(seen::add);
+    }
+
     /** Sends one line (without its newline) in the background; a failure shows up as a reply event. */
     void send(String line) {
+        noteDescendants();
         byte[] bytes = (line + "\n").getBytes(StandardCharsets.UTF_8);
         writer.execute(() -> {
             try {
@@ -64,8 +76,15 @@ final class ProcessSession {
         });
     }
 
+    /** A line the process wrote before being asked (see {@link ReplyReader#unasked}), or null. */
+    ReplyReader.Line unasked() {
+        return replies.unasked();
+    }
+
     ReplyReader.Event next(long nanos) throws InterruptedException {
-        return replies.next(nanos);
+        ReplyReader.Event event = replies.next(nanos);
+        noteDescendants();
+        return event;
     }
 
     /** The exit code, waiting at most {@code millis} for the process to end; empty if it still runs. */
@@ -88,7 +107,8 @@ final class ProcessSession {
 
     /** Kills the process and every process it started (collected first, so none is orphaned unseen). */
     void kill() {
-        killTree(process);
+        noteDescendants();
+        killTree(process, seen);
         writer.shutdownNow();
         replies.stop();
     }
@@ -98,7 +118,19 @@ final class ProcessSession {
      * waits briefly for them to end.
      */
     static void killTree(Process process) {
-        List<ProcessHandle> tree = process.descendants().toList();
+        killTree(process, java.util.Set.of());
+    }
+
+    /** {@link #killTree(Process)}, also killing the processes seen earlier and whatever they started since. */
+    static void killTree(Process process, java.util.Set<ProcessHandle> seenBefore) {
+        java.util.Set<ProcessHandle> all = new java.util.LinkedHashSet<>(process.descendants().toList());
+        for (ProcessHandle p : seenBefore) {
+            if (p.isAlive()) {
+                all.add(p);
+                p.descendants().forEach(all::add);
+            }
+        }
+        List<ProcessHandle> tree = List.copyOf(all);
         process.destroyForcibly();
         tree.forEach(ProcessHandle::destroyForcibly);
         try {

@@ -1,6 +1,7 @@
 package org.fclcert.iut;
 
 import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.StreamReadFeature;
 import com.fasterxml.jackson.core.json.JsonReadFeature;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -11,8 +12,10 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalInt;
+import java.util.Set;
 
 /**
  * The JSON-lines messages of {@code docs/iut-protocol.md}: building requests and reading replies. A
@@ -24,9 +27,15 @@ final class Protocol {
 
     private Protocol() {}
 
-    /** Python's json module writes NaN and Infinity; they are read (and then fail as wrong numbers). */
+    /**
+     * Python's json module writes NaN and Infinity; they are read (and then fail as wrong numbers). A key
+     * given twice in one object makes the reply ambiguous ({@code {"y":1,"y":2}}): Jackson would keep the
+     * last, another reader the first, so it is a protocol fault ({@link #caseCollision} adds keys that
+     * differ only in case, since FCL names are case-insensitive).
+     */
     static ObjectMapper mapper() {
-        JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS).build();
+        JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
+                .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION).build();
         return new ObjectMapper(factory).enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
     }
 
@@ -123,10 +132,11 @@ final class Protocol {
         }
         Map<String, Double> values = new LinkedHashMap<>();
         for (Map.Entry<String, JsonNode> output : outputs.properties()) {
+            String name = IutText.kept(output.getKey());
             if (!output.getValue().isNumber()) {
-                throw protocol("output " + output.getKey() + " is not a number: " + output.getValue());
+                throw protocol("output " + name + " is not a number: " + IutText.kept(output.getValue().toString()));
             }
-            values.put(output.getKey(), output.getValue().asDouble());
+            values.put(name, output.getValue().asDouble());
         }
         return values;
     }
@@ -140,7 +150,35 @@ final class Protocol {
             return Optional.empty();
         }
         failOnError(reply, "export");
-        return Optional.of(text(reply, "fcl", "export"));
+        return Optional.of(IutText.wellFormed(text(reply, "fcl", "export")));
+    }
+
+    /**
+     * The first key of an object in the reply (at any depth) that equals an earlier key of the same object
+     * but for case, as in {@code {"y":60,"Y":12345}}: FCL names are case-insensitive, so the reply names
+     * one output twice. Exact duplicates are already refused by the parser ({@link #mapper}).
+     */
+    static Optional<String> caseCollision(JsonNode node) {
+        if (node.isObject()) {
+            Set<String> seen = new java.util.HashSet<>();
+            for (Map.Entry<String, JsonNode> field : node.properties()) {
+                if (!seen.add(field.getKey().toLowerCase(Locale.ROOT))) {
+                    return Optional.of(field.getKey());
+                }
+                Optional<String> inner = caseCollision(field.getValue());
+                if (inner.isPresent()) {
+                    return inner;
+                }
+            }
+        } else if (node.isArray()) {
+            for (JsonNode item : node) {
+                Optional<String> inner = caseCollision(item);
+                if (inner.isPresent()) {
+                    return inner;
+                }
+            }
+        }
+        return Optional.empty();
     }
 
     /** An {@code ok:false} reply of kind {@code error} becomes an evaluation error; other kinds are faults. */
@@ -184,7 +222,7 @@ final class Protocol {
 
     private static String message(JsonNode error) {
         JsonNode message = error.path("message");
-        return message.isTextual() ? message.asText() : "(no message)";
+        return message.isTextual() ? message.asText() : "(no message)";   // kept where it lands (Rejected, IutException)
     }
 
     private static String text(JsonNode node, String field, String op) throws IutException {

@@ -399,9 +399,9 @@ public final class ComparisonPage {
                 l.items().forEach(i -> out.append("- ").append(i).append('\n'));
                 out.append('\n');
             } else if (b instanceof Table t) {
-                out.append("| ").append(String.join(" | ", t.head().stream().map(Texts::cell).toList())).append(" |\n");
+                out.append("| ").append(String.join(" | ", t.head().stream().map(Texts::tableCell).toList())).append(" |\n");
                 out.append("|").append(" --- |".repeat(t.head().size())).append('\n');
-                t.rows().forEach(r -> out.append("| ").append(String.join(" | ", r.stream().map(Texts::cell).toList()))
+                t.rows().forEach(r -> out.append("| ").append(String.join(" | ", r.stream().map(Texts::tableCell).toList()))
                         .append(" |\n"));
                 out.append('\n');
             }

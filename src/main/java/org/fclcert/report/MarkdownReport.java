@@ -48,12 +48,12 @@ public final class MarkdownReport {
     }
 
     private void header() {
-        line("# FCL compliance statement: " + r.iut().name() + " " + r.iut().version());
+        line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
         line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
                 + ".");
         line("");
-        line("- Implementation: " + Texts.implementation(r));
+        line("- Implementation: " + Texts.implementation(r, Texts::cell));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));
@@ -216,14 +216,14 @@ public final class MarkdownReport {
         if (c.claimed().isEmpty()) {
             line("The implementation claims no feature.");
         } else {
-            line("- Claimed: " + String.join(", ", c.claimed()));
+            line("- Claimed: " + Texts.cell(String.join(", ", c.claimed())));
             line("- Confirmed: " + none(c.confirmed()));
             line("- **Claimed but not realised**: " + none(c.notRealised()));
             if (!c.untested().isEmpty()) {
                 line("- Claimed, no case in this run: " + String.join(", ", c.untested()));
             }
             if (!c.unknown().isEmpty()) {
-                line("- Unknown feature ids claimed: " + String.join(", ", c.unknown()));
+                line("- Unknown feature ids claimed: " + Texts.cell(String.join(", ", c.unknown())));
             }
         }
         if (!c.unclaimed().isEmpty()) {
@@ -258,7 +258,7 @@ public final class MarkdownReport {
             if (!rejected.isEmpty()) {
                 line("");
                 line("Rejected at load for a reason of the implementation's own dialect, so they say nothing about the"
-                        + " point they depend on: " + String.join(", ", rejected) + ".");
+                        + " point they depend on: " + Texts.cell(String.join(", ", rejected)) + ".");
             }
         }
         line("");

@@ -52,9 +52,46 @@ final class Texts {
         return ch == '\t' || ch == '\n' || ch == '\r' || (ch >= 0x20 && ch != 0xFFFE && ch != 0xFFFF);
     }
 
-    /** A Markdown table cell: one line, pipes escaped. */
-    static String cell(String s) {
+    /**
+     * Untrusted text (an implementation's name, version, claims, messages) in report.md, in a table cell or
+     * after a list marker: one line (a newline cannot start a forged {@code # heading} or
+     * {@code **Basic Level: conformant**} line), every character with a Markdown or HTML meaning backslash-escaped
+     * (no emphasis, links such as {@code [x](javascript:…)}, autolinks, raw HTML or entities), control
+     * characters shown visibly ({@code \0}, {@code \e}, {@code \x07}) rather than written.
+     */
+    /**
+     * A table cell of fclcert's own Markdown (the comparison page's links and bold marks): one line, pipes
+     * escaped, nothing else touched. Text from an implementation goes through {@link #cell} instead.
+     */
+    static String tableCell(String s) {
         return s == null ? "" : s.replace("\r", "").replace("\n", " ").replace("|", "\\|");
+    }
+
+    static String cell(String s) {
+        if (s == null) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder(s.length() + 16);
+        for (int i = 0; i < s.length(); i++) {
+            char ch = s.charAt(i);
+            if (ch == '\r') {
+                continue;
+            }
+            if (ch == '\n' || ch == '\t') {
+                b.append(' ');
+            } else if ("\\`*_[]<>|&~".indexOf(ch) >= 0) {
+                b.append('\\').append(ch);
+            } else if (ch == 0) {
+                b.append("\\0");
+            } else if (ch == 0x1b) {
+                b.append("\\e");
+            } else if (ch < 0x20 || (ch >= 0x7f && ch <= 0x9f)) {
+                b.append(String.format("\\x%02x", (int) ch));
+            } else {
+                b.append(ch);
+            }
+        }
+        return b.toString();
     }
 
     /** Quotes a word for a POSIX shell. */
@@ -123,10 +160,15 @@ final class Texts {
 
     /** The header's implementation line: its name and version, then how it was reached. */
     static String implementation(Report r) {
+        return implementation(r, s -> s);
+    }
+
+    /** {@link #implementation(Report)} with the implementation's own words (name, version) passed through {@code own}. */
+    static String implementation(Report r, java.util.function.UnaryOperator<String> own) {
         String spec = r.iut().spec();
         String command = r.iut().command();
         String how = spec == null || spec.isBlank() ? command : spec;
-        String out = r.iut().name() + " " + r.iut().version() + ", reached as `" + how + "`";
+        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `" + how + "`";
         if (command != null && !command.isBlank() && !command.equals(how)) {
             out += " (" + command + ")";
         }

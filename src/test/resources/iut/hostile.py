@@ -1,0 +1,87 @@
+"""A hostile IUT: greets, loads and evaluates like fakebase (sum = a + b), but attacks fclcert in the way
+named by its argument:
+
+  deep-export     exports the loaded program with its first condition wrapped 1000 times in NOT (c AND a IS on)
+  surrogate-name  names itself with a lone UTF-16 surrogate (valid JSON: "\\udc00")
+  surrogate-msg   rejects every program with a message holding a lone surrogate
+  huge-msg        rejects every program with a 1 MB message
+  dup-key         answers eval with {"sum": 12345, "sum": <right>} (a key twice)
+  case-key        answers eval with {"sum": <right>, "SUM": 12345} (keys equal but for case)
+  inject          a name, version and rejection message full of terminal and Markdown/HTML injections
+  no-fcl-export   answers export with ok:true but no 'fcl'
+  unasked         writes an extra eval reply right after each load reply, before being asked
+  orphan FILE     at hello starts a child (its pid appended to FILE) that keeps stdout open; at the first eval
+                  the IUT itself exits without a reply, so stdout stays open and the child is re-parented
+"""
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fakebase import FakeIut
+
+MODE = sys.argv[1] if len(sys.argv) > 1 else "deep-export"
+INJECT = ("evil\r\x1b[2K\x1b]0;pwned\x07FAILED\n# forged heading\n**Basic Level: conformant**"
+          " <script>alert(1)</script> [click](javascript:alert(1)) \x00nul")
+
+
+class Hostile(FakeIut):
+    program = ""
+
+    def op_hello(self, req):
+        body = super().op_hello(req)
+        if MODE == "surrogate-name":
+            body["implementation"]["name"] = "sur\udc00rogate"
+        if MODE == "orphan":
+            import subprocess
+            child = subprocess.Popen(["sleep", "60"], stdin=subprocess.DEVNULL)   # inherits stdout
+            with open(sys.argv[2], "a") as f:
+                f.write("%d\n" % child.pid)
+        if MODE == "inject":
+            body["implementation"]["name"] = INJECT
+            body["implementation"]["version"] = "1.0\x1b[31m"
+        return body
+
+    def op_load(self, req):
+        self.program = req["fcl"]
+        reject = {"surrogate-msg": "bad \udc00 program", "huge-msg": "x" * 1_000_000, "inject": INJECT}
+        if MODE in reject:
+            return {"ok": False, "error": {"kind": "rejected", "message": reject[MODE], "line": 1}}
+        return super().op_load(req)
+
+    def op_eval(self, req):
+        if MODE == "orphan":
+            os._exit(0)
+        body = super().op_eval(req)
+        right = body["outputs"]["sum"]
+        if MODE == "dup-key":
+            return '{"ok": true, "outputs": {"sum": 12345, "sum": %r}, "id": %d}' % (right, req["id"])
+        if MODE == "case-key":
+            return '{"ok": true, "outputs": {"sum": %r, "SUM": 12345}, "id": %d}' % (right, req["id"])
+        return body
+
+    def op_export(self, req):
+        if MODE == "deep-export":
+            m = re.search(r"\bIF\s+(.*?)\s+THEN\b", self.program)
+            c = m.group(1)
+            for _ in range(1000):
+                c = "NOT (" + c + " AND a IS on)"
+            fcl = self.program[:m.start(1)] + c + self.program[m.end(1):]
+            return {"ok": True, "fcl": re.sub(r"ACCU\s*:\s*MAX;", "AND : MIN; ACCU : MAX;", fcl, count=1)}
+        if MODE == "no-fcl-export":
+            return {"ok": True}
+        return super().op_export(req)
+
+    def send(self, req, body):
+        if isinstance(body, str):
+            sys.stdout.write(body + "\n")
+            sys.stdout.flush()
+            return
+        super().send(req, body)
+        if MODE == "unasked" and req["op"] == "load":
+            sys.stdout.write(json.dumps({"ok": True, "outputs": {"sum": 3.0}}) + "\n")
+            sys.stdout.flush()
+
+
+Hostile().run()
