@@ -19,6 +19,7 @@ import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -37,12 +38,8 @@ final class FuzzCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Option(names = "--iut", paramLabel = "SPEC", required = true,
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH]")
-    String iut;
-
-    @Option(names = "--classpath", paramLabel = "PATHS", description = "Where java:CLASS is found")
-    String classpath;
+    @Mixin
+    IutMixin iutOptions;
 
     @Option(names = "--seed", paramLabel = "N", defaultValue = "1", description = "Seed of the run (default: ${DEFAULT-VALUE})")
     long seed;
@@ -75,22 +72,19 @@ final class FuzzCommand implements Callable<Integer> {
             description = "Where the case files, fuzz.json and fuzz.md go (default: ${DEFAULT-VALUE})")
     Path out;
 
-    @Option(names = "--timeout", paramLabel = "DURATION", defaultValue = "5s",
-            description = "Per-request timeout for the implementation (default: ${DEFAULT-VALUE})")
-    String timeout;
-
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
         Duration total = Durations.parse(budget).orElse(null);
-        Duration request = Durations.parse(timeout).orElse(null);
         if (total == null) {
             return usage(err, "--budget: '" + budget + "' is not a duration (write e.g. 30s, 10m)");
         }
-        if (request == null) {
-            return usage(err, "--timeout: '" + timeout + "' is not a duration (write e.g. 5s, 500ms)");
+        // Fuzzing the reference against itself finds nothing: unlike certify, fuzz wants --iut named.
+        if (!spec.commandLine().getParseResult().hasMatchedOption("--iut")) {
+            return usage(err, "Missing required option: '--iut=SPEC'");
         }
+        String iut = iutOptions.spec;
         if (jobs < 1 || jobs > 64) {
             return usage(err, "--jobs must be between 1 and 64, not " + jobs);
         }
@@ -115,7 +109,7 @@ final class FuzzCommand implements Callable<Integer> {
             }
             focus.add(f);
         }
-        IutOptions options = IutArguments.options(request, classpath);
+        IutOptions options = iutOptions.options();
         Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs)
                 .withMaxFindings(Math.max(0, maxFindings));
         boolean terminal = System.console() != null;

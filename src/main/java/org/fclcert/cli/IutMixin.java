@@ -5,7 +5,7 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.orchestration.Defaults;
 import picocli.CommandLine.Option;
 
-/** The options that name and open the implementation under test, shared by {@code certify} and {@code probe}. */
+/** The options that name and open the implementation under test, shared by {@code certify}, {@code probe} and {@code fuzz}. */
 final class IutMixin {
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
             description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR"
