@@ -48,7 +48,7 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         }
         // only blocks rules can reach: the first FUZZIFY of an input, the first DEFUZZIFY of an output
         // (the terms of a misplaced or repeated block are already covered by that block's error)
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (Fuzzification f : block.fuzzifications()) {
             if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
                 report(f.variable(), f.terms(), inCondition, "subcondition", sink);
