@@ -104,6 +104,8 @@ class Parser:
 
     def fail(self, what):
         kind, value, line = self.peek()
+        if what == ";" and self.i > 0 and self.tokens[self.i - 1][2] < line:
+            line = self.tokens[self.i - 1][2]   # a missing ';' is the mistake of the line that lacks it
         raise Reject("expected %s, found %s" % (what, "end of text" if kind == "eof" else repr(value)), line)
 
     def expect(self, word):

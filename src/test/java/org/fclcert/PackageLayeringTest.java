@@ -54,7 +54,7 @@ class PackageLayeringTest {
             List.of("harness"),
             List.of("probe"),
             List.of("corpus", "iut"),
-            List.of("write"),
+            List.of("write", "plot"),
             List.of("eval", "check"),
             List.of("syntax.dialect"),
             List.of("syntax"),

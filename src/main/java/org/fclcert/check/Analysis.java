@@ -21,12 +21,15 @@ public record Analysis(Optional<Program> program, List<Diagnostic> diagnostics) 
         diagnostics = List.copyOf(diagnostics);
     }
 
-    /** Reads the text; when it has no syntax error, checks the program. */
+    /** Reads the text; when it has no syntax error (or only ones a one-token repair mends), checks the program. */
     public static Analysis analyze(FclReader reader, String sourceName, String text) {
         ReadResult read = reader.read(sourceName, text);
         List<Diagnostic> all = new ArrayList<>(read.diagnostics());
         if (!read.hasErrors() && read.program().isPresent()) {
             all.addAll(new Checker().check(read.program().get()));
+        } else if (read.repaired().isPresent()) {
+            // the syntax errors were one-token slips: the rest of the program is still worth checking
+            all.addAll(new Checker().check(read.repaired().get()));
         }
         // a stable sort on position alone keeps reader diagnostics ahead of checks at the same position
         all.sort(Comparator.comparing(Diagnostic::location));

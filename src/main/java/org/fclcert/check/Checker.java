@@ -27,7 +27,7 @@ public final class Checker {
         this.rules = List.copyOf(rules);
     }
 
-    /** Every check rule, in code order: FCL-C001 to FCL-C031, FCL-C040 and FCL-C041 (dialect shapes), then the warnings FCL-W001 to FCL-W004. */
+    /** Every check rule, in code order: FCL-C001 to FCL-C032, FCL-C040 and FCL-C041 (dialect shapes), then the warnings FCL-W001 to FCL-W004. */
     public static List<CheckRule> standardRules() {
         return List.of(
                 new NoUndefinedVariables(), new NoUndefinedTerms(), new TermsBelongToTheirVariable(),
@@ -39,7 +39,7 @@ public final class Checker {
                 new OutputTermsOfOneKind(), new OneAccumulationPerOutput(), new RangeAscending(),
                 new ConclusionsOnOutputs(), new BoundedOutputSets(), new NestingWithinLimit(),
                 new SubconditionsOnInputs(), new OneFuzzificationPerVariable(), new AtLeastTwoPoints(),
-                new InitialValueFitsType(), new SubconclusionsOnDefuzzifiedOutputs(),
+                new InitialValueFitsType(), new SubconclusionsOnDefuzzifiedOutputs(), new UniqueFunctionBlockNames(),
                 new ShapeParameterCount(), new ShapeParametersValid(),
                 new NoUnusedTerms(), new NoEmptyRuleBlocks(), new NoUnconcludedOutputs(), new NoZeroWeights());
     }

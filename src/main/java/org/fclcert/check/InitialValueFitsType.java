@@ -27,22 +27,34 @@ public final class InitialValueFitsType implements FunctionBlockRule {
                 continue;
             }
             Literal init = v.initialValue().get();
-            String problem = problem(init.value(), v.type());
+            String problem = problem(init, v.type());
             if (problem != null) {
-                sink.report(finding(init.location(), "initial value " + Describe.number(init.value()) + " of "
+                sink.report(finding(init.location(), "initial value " + written(init) + " of "
                         + Describe.variable(v) + " " + problem + " (5.2.1)"));
             }
         }
     }
 
-    private static String problem(double value, DataType type) {
-        if (!Double.isFinite(value) || value < type.min() || value > type.max()) {
-            return "is outside the range of " + type + " (" + Describe.number(type.min()) + " .. "
-                    + Describe.number(type.max()) + ")";
+    private static String written(Literal init) {
+        boolean whole = Double.isFinite(init.value()) && init.value() == Math.rint(init.value());
+        return init.integral() && whole ? init.exactValue().toBigInteger().toString() : Describe.number(init.value());
+    }
+
+    /* Compared exactly: as doubles, LINT 9223372036854775808 equals Long.MAX_VALUE (both 2^63). */
+    private static String problem(Literal init, DataType type) {
+        double value = init.value();
+        if (!Double.isFinite(value) || init.exactValue().compareTo(type.exactMin()) < 0
+                || init.exactValue().compareTo(type.exactMax()) > 0) {
+            return "is outside the range of " + type + " (" + bound(type, type.exactMin(), type.min()) + " .. "
+                    + bound(type, type.exactMax(), type.max()) + ")";
         }
         if (type.isInteger() && value != Math.rint(value)) {
             return "is not a whole number, but " + type + " holds only integers";
         }
         return null;
+    }
+
+    private static String bound(DataType type, java.math.BigDecimal exact, double value) {
+        return type.isInteger() ? exact.toBigInteger().toString() : Describe.number(value);
     }
 }

@@ -26,11 +26,13 @@ public final class NoUnconcludedOutputs implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
         Set<String> concluded = new HashSet<>();
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Subconclusion s : rule.conclusion()) {
-                    concluded.add(Names.key(s.variable()));
+                    // a misspelt output is FCL-C001's, as a typo of the output it most likely means
+                    concluded.add(Names.key(scope.suggestVariable(s.variable()).orElse(s.variable())));
                 }
             }
         }

@@ -72,7 +72,10 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
         String note = elsewhere.isEmpty() ? "" : "; '" + term + "' is a term of "
                 + String.join(" and ", elsewhere.stream().map(scope::describe).toList())
                 + (inCondition ? ", and a condition tests only inputs" : ", and a conclusion sets only outputs");
+        // a name another variable defines is a mix-up, not a typo: no guess then
+        String hint = elsewhere.isEmpty()
+                ? Scope.suggestTerm(term, terms.get()).map(t -> "; did you mean '" + t + "'?").orElse("") : "";
         sink.report(finding(at, element.get() + ": '" + term + "' is not a term of " + scope.describe(variable)
-                + " (its terms: " + Describe.termNames(terms.get()) + ")" + note));
+                + hint + " (its terms: " + Describe.termNames(terms.get()) + ")" + note));
     }
 }

@@ -64,7 +64,9 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
         List<String> declared = scope.block().variables().stream().map(Variable::name).toList();
         String known = declared.isEmpty() ? "it declares no variables"
                 : "its variables: " + Describe.names(declared);
+        String hint = scope.suggestVariable(name).map(v -> "did you mean '" + v + "'? ").orElse("");
         sink.report(finding(at, element.get() + ": '" + name + "' is not a declared variable of function block '"
-                + scope.block().name() + "' (" + known + "); declare it in " + section + " (5.2.1)"));
+                + scope.block().name() + "'; " + hint + "(" + known + "); "
+                + (hint.isEmpty() ? "declare it in " + section + " (5.2.1)" : "or declare it in " + section + " (5.2.1)")));
     }
 }

@@ -17,7 +17,8 @@ import org.fclcert.model.VariableKind;
 /**
  * FCL-W001 (warning): every term of a FUZZIFY block is named by some subcondition and every term of
  * a DEFUZZIFY block by some subconclusion. An unused term is legal but usually a leftover or a typo
- * elsewhere (Annex C itself defines terms no rule uses). Only the first FUZZIFY block of an input and
+ * elsewhere (Annex C itself defines terms no rule uses). A misspelt use ({@code temp IS lwo}) counts as a
+ * use of the term it most likely means: the typo's own error says so, and a second report would mislead. Only the first FUZZIFY block of an input and
  * the first DEFUZZIFY block of an output are considered: other blocks are errors of their own.
  */
 public final class NoUnusedTerms implements FunctionBlockRule {
@@ -32,23 +33,27 @@ public final class NoUnusedTerms implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
+        Scope scope = new Scope(block);
         Set<String> inCondition = new HashSet<>();
         Set<String> inConclusion = new HashSet<>();
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {
-                        inCondition.add(key(t.variable(), t.term()));
+                        String[] meant = scope.meant(t.variable(), t.term(), true);
+                        inCondition.add(key(meant[0], meant[1]));
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
-                    s.term().ifPresent(t -> inConclusion.add(key(s.variable(), t)));
+                    s.term().ifPresent(t -> {
+                        String[] meant = scope.meant(s.variable(), t, false);
+                        inConclusion.add(key(meant[0], meant[1]));
+                    });
                 }
             }
         }
         // only blocks rules can reach: the first FUZZIFY of an input, the first DEFUZZIFY of an output
         // (the terms of a misplaced or repeated block are already covered by that block's error)
-        Scope scope = Scope.of(block);
         for (Fuzzification f : block.fuzzifications()) {
             if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
                 report(f.variable(), f.terms(), inCondition, "subcondition", sink);

@@ -120,6 +120,35 @@ final class Scope {
         }
     }
 
+    /** The declared variable an undeclared name most likely misspells ({@link Names#closest}). */
+    Optional<String> suggestVariable(String name) {
+        if (declared(name)) {
+            return Optional.empty();
+        }
+        return Names.closest(name, block.variables().stream().map(Variable::name).toList());
+    }
+
+    /** The term of {@code terms} an undefined term name most likely misspells. */
+    static Optional<String> suggestTerm(String term, List<Term> terms) {
+        return Names.closest(term, terms.stream().map(Term::name).toList());
+    }
+
+    /**
+     * What a use of {@code variable IS term} most likely means: the names themselves when they are
+     * declared, else the declared names they misspell (so a typo is reported once, as a typo, and the
+     * term it meant is not also reported as unused).
+     */
+    String[] meant(String variable, String term, boolean inCondition) {
+        String v = declared(variable) ? variable : suggestVariable(variable).orElse(variable);
+        Optional<List<Term>> terms = inCondition ? conditionTerms(v) : conclusionTerms(v);
+        String t = term;
+        if (terms.isPresent() && terms.get().stream().noneMatch(x -> Names.same(x.name(), term))
+                && ownersOfTerm(term, v, true).isEmpty() && ownersOfTerm(term, v, false).isEmpty()) {
+            t = suggestTerm(term, terms.get()).orElse(term);
+        }
+        return new String[] {v, t};
+    }
+
     /** "input 'temp'", "output 'valve'", "local variable 'x'" or "'x'" when undeclared. */
     String describe(String variable) {
         return variable(variable).map(Describe::variable).orElse("'" + variable + "'");

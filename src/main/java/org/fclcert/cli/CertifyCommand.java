@@ -22,6 +22,7 @@ import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.orchestration.PresentAs;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
@@ -63,6 +64,11 @@ final class CertifyCommand implements Callable<Integer> {
         return corpus == null && Files.isDirectory(DEFAULT_CORPUS) ? DEFAULT_CORPUS : corpus;
     }
 
+    /** The corpus as a reproduce command names it: null for the default (conformance/ here, or the bundled one). */
+    private String corpusArgument() {
+        return corpus == null || corpus.equals(DEFAULT_CORPUS) ? null : corpus.toString();
+    }
+
     /** How the run names its corpus: its directory, or {@code bundled}. */
     private String corpusName() {
         Path dir = corpusDirectory();
@@ -70,7 +76,9 @@ final class CertifyCommand implements Callable<Integer> {
     }
 
     @Option(names = "--out", paramLabel = "DIR",
-            description = "Output directory (default: reports/reference for the reference, else reports/<iut-name>)")
+            description = "Output directory (default: fclcert-reports/<iut-name>, which git ignores; with --case,"
+                    + " fclcert-reports/<iut-name> of the system's temporary directory, so that reproducing a case"
+                    + " writes nothing into the checkout)")
     Path out;
 
     @Option(names = "--level", paramLabel = "LEVEL", split = ",",
@@ -89,8 +97,17 @@ final class CertifyCommand implements Callable<Integer> {
             description = "none | basic | claimed | any: exit 1 when this does not hold (default: ${DEFAULT-VALUE})")
     FailOn failOn;
 
+    @Option(names = "--present-as", paramLabel = "LAYOUT", defaultValue = "auto",
+            description = "auto | none | fuzzylite | jfuzzylogic | ffll: also send each positive case the layout can"
+                    + " express written in that library's layout, the semantic axis (default: ${DEFAULT-VALUE}: the"
+                    + " built-in library adapters in their library's layout, none for reference, java: and process:)")
+    PresentAs presentAs;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
+
+    @Option(names = "--probe", description = "Measure the Table 11 data check list also when --case selects cases")
+    boolean forceProbe;
 
     @Option(names = "--probe-cap", paramLabel = "N", defaultValue = Defaults.CERTIFY_PROBE_CAP_TEXT,
             description = "Largest size the Table 11 probes try (default: ${DEFAULT-VALUE}; fclcert probe uses "
@@ -120,14 +137,22 @@ final class CertifyCommand implements Callable<Integer> {
         if (probeCap < 1) {
             throw new CannotRun("--probe-cap must be at least 1, not " + probeCap);
         }
-        Prober.Options probe = noProbe ? null : new Prober.Options(probeCap, probeBudget, Set.of());
+        if (noProbe && forceProbe) {
+            throw new CannotRun("--probe and --no-probe contradict each other");
+        }
+        // selecting cases is reproducing them: seconds, not the probes' minute, and nothing in the checkout
+        boolean reproducing = !cases.isEmpty();
+        boolean probing = forceProbe || !noProbe && !reproducing;
+        Prober.Options probe = probing ? new Prober.Options(probeCap, probeBudget, Set.of()) : null;
         Corpus loaded = loadCorpus();
         Certification.Request request = Certification.Request.builder(iut.spec, loaded)
                 .options(iut.options()).classpath(iut.classpath)
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
-                .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases).build();
+                .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
+                .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
+                .presentAs(presentAs).build();
         boolean terminal = System.console() != null;
-        ProgressLine progress = new ProgressLine(err, terminal);
+        ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, progress, new TerminalHooks(progress, err, terminal));
@@ -135,6 +160,8 @@ final class CertifyCommand implements Callable<Integer> {
             throw new CannotRun("no case of " + corpusName() + " matches the selection");
         } catch (Certification.CannotCertify e) {
             throw new CannotRun(e.getMessage());
+        } finally {
+            progress.stop();
         }
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
@@ -165,6 +192,7 @@ final class CertifyCommand implements Callable<Integer> {
 
         @Override
         public void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
+            progress.directory(directory);
             onInterrupt = new Thread(() -> reportInterruptedRun(iut, resultsFile, directory, err));
             Runtime.getRuntime().addShutdownHook(onInterrupt);
         }
@@ -180,11 +208,14 @@ final class CertifyCommand implements Callable<Integer> {
                 probed = true;
                 err.print("\r\u001b[Kprobing Table 11, " + index + "/" + total + ": " + row.id());
                 err.flush();
+            } else {
+                progress.probing(row.id(), index, total);
             }
         }
 
         @Override
         public void resultsComplete() {
+            progress.stop();
             if (probed) {
                 err.print("\r\u001b[K");
                 err.flush();
@@ -225,8 +256,15 @@ final class CertifyCommand implements Callable<Integer> {
         }
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
-        out.println("Standard Extensions realised (Table 9): " + realised(r, 9));
-        out.println("Open Level features realised (Table 10): " + realised(r, 10));
+        String axis = r.semantic() != null ? " (language axis)" : "";
+        out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
+        out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));
+        if (r.semantic() != null) {
+            out.println(r.semantic().sentence());
+            out.println("Basic Level rows realised (Table 8, semantic axis): " + semanticRealised(r, 8));
+            out.println("Standard Extensions realised (Table 9, semantic axis): " + semanticRealised(r, 9));
+            out.println("Open Level features realised (Table 10, semantic axis): " + semanticRealised(r, 10));
+        }
         if (!r.causes().isEmpty()) {
             out.println("Failures by cause:");
             r.causes().stream().limit(CAUSES_SHOWN).forEach(c -> out.println("  " + c.sentence()));
@@ -248,6 +286,19 @@ final class CertifyCommand implements Callable<Integer> {
                 .map(Report.FeatureRow::id).toList();
         long rows = r.features().stream().filter(f -> f.table() == table).count();
         return ids.size() + " of " + rows + (ids.isEmpty() ? "" : ": " + String.join(", ", ids));
+    }
+
+    /** As {@link #realised}, by the rows' semantic verdicts; {@code (n not presentable)} counts rows none of whose cases the layout can say. */
+    private static String semanticRealised(Report r, int table) {
+        List<Report.FeatureRow> rows = r.features().stream().filter(f -> f.table() == table && f.semantic() != null)
+                .toList();
+        List<String> ids = rows.stream().filter(f -> f.semantic().status() == FeatureStatus.REALISED)
+                .map(Report.FeatureRow::id).toList();
+        List<String> not = rows.stream().filter(f -> f.semantic().status() == FeatureStatus.NOT_REALISED
+                || f.semantic().status() == FeatureStatus.PARTIAL).map(f -> f.id() + " " + f.semantic().passed()
+                + "/" + f.semantic().total()).toList();
+        return ids.size() + " of " + rows.size() + (table == 8 || ids.isEmpty() ? "" : ": " + String.join(", ", ids))
+                + (not.isEmpty() ? "" : "; not realised: " + String.join(", ", not));
     }
 
     private Set<String> parseFeatures() throws CannotRun {

@@ -47,6 +47,7 @@ final class CheckCommand implements Callable<Integer> {
                 if (format == OutputFormat.text) {
                     DiagnosticPrinter.text(out, found);
                 }
+                dialect.hintWhenLibraryDialect(file, text, found, err);
                 all.addAll(found);
                 checked++;
             } catch (FileProblem e) {

@@ -34,6 +34,7 @@ record CheckedSource(String text, Dialect dialect, Optional<Program> program) {
             analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
         }
         DiagnosticPrinter.text(err, analysis.diagnostics());
+        name.hintWhenLibraryDialect(file, text, analysis.diagnostics(), err);
         if (analysis.program().isEmpty()) {
             err.println("fclcert: " + file + " has errors; not " + notDone);
         }

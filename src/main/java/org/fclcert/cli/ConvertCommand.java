@@ -52,7 +52,7 @@ final class ConvertCommand implements Callable<Integer> {
     DialectName to;
 
     @Option(names = "--approximate-points", defaultValue = "0", paramLabel = "N",
-            description = "approximate curved membership functions by N points (default: do not approximate)")
+            description = "approximate curved membership functions by N points, 2 to 10000 (default: do not approximate)")
     int approximatePoints;
 
     @Option(names = "--allow-lossy", description = "write the result even when it does not mean exactly the same")
@@ -70,6 +70,11 @@ final class ConvertCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         if (approximatePoints != 0 && approximatePoints < 2) {
             err.println("fclcert: --approximate-points must be at least 2 (got " + approximatePoints + ")");
+            return ExitCodes.USAGE;
+        }
+        if (approximatePoints > StandardConversion.Options.MAX_APPROXIMATE_POINTS) {
+            err.println("fclcert: --approximate-points must be at most " + StandardConversion.Options.MAX_APPROXIMATE_POINTS
+                    + " (got " + approximatePoints + ")");
             return ExitCodes.USAGE;
         }
         try {

@@ -17,7 +17,7 @@ import picocli.CommandLine.Parameters;
         description = "Work with the conformance corpus (conformance/).",
         mixinStandardHelpOptions = true,
         versionProvider = VersionProvider.class,
-        subcommands = {CorpusCommand.Lint.class})
+        subcommands = {CorpusCommand.Lint.class, CorpusCommand.Add.class})
 public final class CorpusCommand implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -64,6 +64,59 @@ public final class CorpusCommand implements Runnable {
                     + " negative): " + (findings == 0 ? "clean" : findings + " finding(s)"));
             out.flush();
             return findings == 0 ? 0 : 1;
+        }
+    }
+
+    /** {@code fclcert corpus add FILE [--corpus DIR]}: exit 0 added, 1 the lint found problems in the case, 2 bad usage. */
+    @Command(
+            name = "add",
+            description = {
+                "Add a case file (e.g. one written by fclcert fuzz) to the corpus: give it the next free id of its "
+                        + "prefix, place it in the directory of its level and lint it with the corpus; a case with "
+                        + "lint findings is not added.",
+                "Exit status: 0 added, 1 lint findings in the case (not added), 2 usage error."},
+            mixinStandardHelpOptions = true,
+            versionProvider = VersionProvider.class)
+    static final class Add implements Callable<Integer> {
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Parameters(index = "0", paramLabel = "FILE", description = "the case file to add")
+        Path file;
+
+        @CommandLine.Option(names = "--corpus", paramLabel = "DIR", description = "corpus directory (default: conformance)")
+        Path dir = Path.of("conformance");
+
+        @Override
+        public Integer call() {
+            PrintWriter out = spec.commandLine().getOut();
+            PrintWriter err = spec.commandLine().getErr();
+            if (!Files.isDirectory(dir)) {
+                err.println("fclcert corpus add: " + dir + " is not a directory (give the corpus directory, e.g. conformance)");
+                return 2;
+            }
+            if (!Files.isRegularFile(file)) {
+                err.println("fclcert corpus add: " + file + " is not a file");
+                return 2;
+            }
+            try {
+                org.fclcert.corpus.CorpusAdd.Outcome o = org.fclcert.corpus.CorpusAdd.add(dir, file);
+                if (o.placed().isEmpty()) {
+                    o.findings().forEach(out::println);
+                    out.println(file + ": not added: " + o.findings().size() + " lint finding(s) as " + o.id());
+                    out.flush();
+                    return 1;
+                }
+                out.println(file + ": added as " + o.placed().get() + " (lint clean)");
+                out.flush();
+                return 0;
+            } catch (org.fclcert.corpus.CorpusAdd.NotACase e) {
+                err.println("fclcert corpus add: " + e.getMessage());
+                return 2;
+            } catch (java.io.IOException e) {
+                err.println("fclcert corpus add: " + e.getMessage());
+                return 2;
+            }
         }
     }
 }

@@ -39,4 +39,21 @@ enum DialectName {
         err.println("fclcert: " + file + ": " + choice.explanation());
         return choice.reader();
     }
+
+    /**
+     * After a strict reading with syntax errors: when the text shows a library dialect's signs, one line
+     * saying so ({@code fclcert: FILE looks like jFuzzyLogic (...): try --dialect auto or fclcert convert}).
+     */
+    void hintWhenLibraryDialect(String file, String text, java.util.List<org.fclcert.model.Diagnostic> found,
+            PrintWriter err) {
+        if (this != strict || found.stream().noneMatch(d -> d.isError() && d.code().startsWith("FCL-S"))) {
+            return;
+        }
+        DialectReaders.Choice choice = DialectReaders.auto(text);
+        if (choice.dialect() != Dialect.STRICT) {
+            String signs = choice.explanation().substring(choice.explanation().indexOf(": ") + 2);
+            err.println("fclcert: " + file + ": this looks like " + choice.dialect().displayName() + " (" + signs
+                    + "): try --dialect auto, or 'fclcert convert " + file + "' to turn it into standard FCL");
+        }
+    }
 }

@@ -126,7 +126,9 @@ final class EvalCommand implements Callable<Integer> {
         Run run = new Run(fb, declaration(program));
         for (String in : inputs) {
             int eq = in.indexOf('=');
-            run.set(in.substring(0, eq).trim(), in.substring(eq + 1).trim(), "--in " + in);
+            String name = in.substring(0, eq).trim();
+            run.requireInput(name, "--in " + in);
+            run.set(name, in.substring(eq + 1).trim(), "--in " + in);
         }
         return run;
     }
@@ -158,6 +160,10 @@ final class EvalCommand implements Callable<Integer> {
         Run run = start(program);
         List<String> lines = SourceFiles.read(csv).lines().toList();
         CsvTable table = CsvTable.parse(csv, lines);
+        for (String column : table.columns()) {
+            // a header typo is the header's mistake, found before any row runs
+            run.requireInput(column, csv + ":" + table.headerLine() + ": column '" + column + "'");
+        }
         List<Map<String, Object>> json = new ArrayList<>();
         StringBuilder sb = new StringBuilder(header(run.fb));
         for (CsvTable.Row row : table.rows()) {
@@ -190,6 +196,10 @@ final class EvalCommand implements Callable<Integer> {
         return String.join(",", cells) + "\n";
     }
 
+    /** A decimal number; NaN and Infinity are numbers too, which the evaluator refuses (FCL-V002) by name. */
+    private static final java.util.regex.Pattern DECIMAL = java.util.regex.Pattern.compile(
+            "\\s*[+-]?((\\d+(\\.\\d*)?|\\.\\d+)([eE][+-]?\\d+)?|NaN|Infinity)\\s*");
+
     /** One instance and which of its inputs have a value (declared initial value or given). */
     private static final class Run {
         final FunctionBlockInstance fb;
@@ -197,13 +207,35 @@ final class EvalCommand implements Callable<Integer> {
 
         Run(FunctionBlockInstance fb, FunctionBlock declaration) {
             this.fb = fb;
+            Map<String, Variable> declared = new java.util.HashMap<>();   // one pass: 10^5 inputs were quadratic
+            for (Variable v : declaration.variables()) {
+                declared.putIfAbsent(Names.key(v.name()), v);
+            }
             for (String input : fb.inputNames()) {
-                hasValue.put(Names.key(input), declaration.variable(input).flatMap(Variable::initialValue).isPresent());
+                Variable v = declared.get(Names.key(input));
+                hasValue.put(Names.key(input), v != null && v.initialValue().isPresent());
+            }
+        }
+
+        /** An unknown name is reported with the inputs there are, and the one it most likely misspells. */
+        void requireInput(String name, String where) throws EvaluationException {
+            try {
+                fb.get(name);
+            } catch (EvaluationException e) {
+                List<String> names = fb.inputNames();
+                String hint = Names.closest(name, names).map(n -> "did you mean '" + n + "'? ").orElse("");
+                throw new EvaluationException(e.diagnosticCode(), where + ": " + e.getMessage() + "; " + hint
+                        + (names.size() == 1 ? "its input: " : "its inputs: ") + String.join(", ", names));
             }
         }
 
         void set(String name, String text, String where) throws EvaluationException, InputProblem {
             double value;
+            if (!DECIMAL.matcher(text).matches()) {
+                // Double.parseDouble would also take 0x1p2, 5d and 5f: Java spellings, not numbers to a user
+                throw new InputProblem(where + ": '" + text + "' is not a number: write a decimal number"
+                        + " such as 4, -2.5 or 1.5E3");
+            }
             try {
                 value = Double.parseDouble(text);
             } catch (NumberFormatException e) {

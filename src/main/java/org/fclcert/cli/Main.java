@@ -27,8 +27,10 @@ import picocli.CommandLine.Command;
             ReportCommand.class,
             CompareCommand.class,
             EvalCommand.class,
+            PlotCommand.class,
+            FuzzCommand.class,
         })
-public final class Main implements Runnable {
+public final class Main implements java.util.concurrent.Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
@@ -58,6 +60,13 @@ public final class Main implements Runnable {
         cli.setCaseInsensitiveEnumValuesAllowed(true);
         cli.setOut(out);
         cli.setErr(err);
+        cli.setParameterExceptionHandler((e, args) -> {
+            // one line saying what is wrong, and where the whole help is: the help itself buries the line
+            err.println(e.getMessage());
+            CommandLine.UnmatchedArgumentException.printSuggestions(e, err);
+            err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for more information.");
+            return ExitCodes.USAGE;
+        });
         cli.setExecutionExceptionHandler((e, command, parsed) -> {
             // a bug must still not greet the user with a stack trace
             err.println("fclcert: internal error: " + describe(e));
@@ -84,8 +93,10 @@ public final class Main implements Runnable {
         return new PrintWriter(new OutputStreamWriter(s, StandardCharsets.UTF_8), true);
     }
 
+    /** No command given: a usage problem, so the usage goes to stderr and the exit code is 2. */
     @Override
-    public void run() {
-        spec.commandLine().usage(spec.commandLine().getOut());
+    public Integer call() {
+        spec.commandLine().usage(spec.commandLine().getErr());
+        return ExitCodes.USAGE;
     }
 }

@@ -623,7 +623,7 @@ public final class CompiledEvaluator {
                 } else {
                     double y0 = y[i - 1];
                     double y1 = y[i];
-                    d[t] = y0 == y1 ? y0 : ((x[i] - u) * y0 + (u - x[i - 1]) * y1) / (x[i] - x[i - 1]);
+                    d[t] = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
                 }
             }
         }

@@ -36,14 +36,27 @@ public final class LoadedProgram {
         return new CompiledEvaluator(block(blockName));
     }
 
+    /**
+     * The one block of that name (case-insensitive). Two blocks whose names differ only in case
+     * (FCL-C032) make the name ambiguous: refused rather than silently taking the first.
+     */
     private BlockPlan block(String blockName) throws EvaluationException {
+        BlockPlan found = null;
         for (BlockPlan b : blocks) {
             if (Names.same(b.name, blockName)) {
-                return b;
+                if (found != null) {
+                    throw new EvaluationException(EvaluationCode.UNKNOWN_NAME, "the function block name '" + blockName
+                            + "' is ambiguous: the program has both '" + found.name + "' and '" + b.name
+                            + "' (names are not case-sensitive)");
+                }
+                found = b;
             }
         }
-        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
-                "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
+        if (found == null) {
+            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
+                    "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
+        }
+        return found;
     }
 
     /** The plan of the named block (null: the first), for FairVectors; null when there is none. */
@@ -51,7 +64,11 @@ public final class LoadedProgram {
         if (blockName == null) {
             return blocks.get(0);
         }
-        return blocks.stream().filter(b -> Names.same(b.name, blockName)).findFirst().orElse(null);
+        try {
+            return block(blockName);
+        } catch (EvaluationException e) {
+            return null;
+        }
     }
 
     /** A fresh exact-path instance of the first function block, numbers read as {@link NumberReading#DECIMAL}. */
@@ -67,12 +84,6 @@ public final class LoadedProgram {
         if (blockName == null) {
             return new ExactInstance(blocks.get(0), reading);
         }
-        for (BlockPlan b : blocks) {
-            if (Names.same(b.name, blockName)) {
-                return new ExactInstance(b, reading);
-            }
-        }
-        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
-                "no function block named '" + blockName + "' (the program has " + functionBlockNames() + ")");
+        return new ExactInstance(block(blockName), reading);
     }
 }

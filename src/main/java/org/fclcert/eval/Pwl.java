@@ -32,13 +32,22 @@ final class Pwl {
     /**
      * The value at {@code u} of the segment from (x0, y0) to (x1, y1), x0 &lt; u &lt; x1. The form
      * with one division is exact for the common 0/1 degrees; a flat segment returns its degree
-     * unchanged so that plateaus compare equal.
+     * unchanged so that plateaus compare equal. A segment wider than the largest double (from
+     * -1.0E308 to 1.0E308, say) is computed on halved abscissas: halving such large numbers is exact,
+     * and the width then no longer overflows to infinity (which would give degree 0 everywhere).
      */
     static double interpolate(double x0, double y0, double x1, double y1, double u) {
         if (y0 == y1) {
             return y0;
         }
-        return ((x1 - u) * y0 + (u - x0) * y1) / (x1 - x0);
+        double width = x1 - x0;
+        if (Double.isInfinite(width)) {
+            double h0 = x0 / 2;
+            double h1 = x1 / 2;
+            double hu = u / 2;
+            return ((h1 - hu) * y0 + (hu - h0) * y1) / (h1 - h0);
+        }
+        return ((x1 - u) * y0 + (u - x0) * y1) / width;
     }
 
     /** First index whose x is &gt;= u, for short point lists where a scan beats bisection. */

@@ -20,7 +20,8 @@ import java.util.Optional;
  */
 @JsonSerialize(converter = CaseResultJson.FromResult.class)
 @JsonDeserialize(converter = CaseResultJson.ToResult.class)
-public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup) {
+public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup,
+        Presented presented) {
 
     public CaseResult {
         Objects.requireNonNull(plan, "plan");
@@ -28,6 +29,40 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
         evidence = evidence == null ? Evidence.NONE : evidence;
         export = export == null ? Export.NOT_RUN : export;
         setup = setup == null ? Setup.NOT_RUN : setup;
+    }
+
+    /** A result of the language axis only (no program presented in a library's layout). */
+    public CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup) {
+        this(plan, verdict, evidence, export, setup, null);
+    }
+
+    /** This result with its semantic axis. */
+    public CaseResult withPresented(Presented value) {
+        return new CaseResult(plan, verdict, evidence, export, setup, value);
+    }
+
+    /** The semantic axis of this case, when the run presented programs in a library's layout. */
+    public Optional<Presented> presentedResult() {
+        return Optional.ofNullable(presented);
+    }
+
+    /**
+     * The semantic axis of a positive case ({@code --present-as}): the case's program written in a library's
+     * layout by fclcert's writer of it, proved by reading it back, and run on the implementation. {@code status}
+     * is {@link PresentedStatus#NOT_PRESENTABLE} (with the writer's reason) when the layout cannot say the
+     * program, or fclcert's own reading of the written text does not give the case's expected values.
+     *
+     * @param dialect  the layout ({@code fuzzylite}, {@code jfuzzylogic}, {@code ffll})
+     * @param program  the written text, kept for a presented case that did not pass
+     */
+    public record Presented(String dialect, PresentedStatus status, String message, List<String> notes,
+            Evidence evidence, String program) {
+        public Presented {
+            Objects.requireNonNull(dialect, "dialect");
+            Objects.requireNonNull(status, "status");
+            notes = notes == null ? List.of() : List.copyOf(notes);
+            evidence = evidence == null ? Evidence.NONE : evidence;
+        }
     }
 
     /**

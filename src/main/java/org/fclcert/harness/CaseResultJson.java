@@ -35,7 +35,34 @@ record CaseResultJson(
         String block,
         String program,
         Long durationMs,
-        RejectionPlace rejection) {
+        RejectionPlace rejection,
+        PresentedJson presented) {
+
+    /** The semantic axis of a case ({@link CaseResult.Presented}), flat like the case itself. */
+    @JsonInclude(JsonInclude.Include.NON_NULL)
+    record PresentedJson(String dialect, PresentedStatus status, String message, Integer step,
+            Map<String, Double> inputs, Object expected, Object actual, String error, Double maxError,
+            List<String> notes, String program) {
+
+        static PresentedJson of(CaseResult.Presented p) {
+            if (p == null) {
+                return null;
+            }
+            CaseResult.Evidence e = p.evidence();
+            CaseResult.Step step = e.step();
+            CaseResult.Mismatch m = e.mismatch();
+            return new PresentedJson(p.dialect(), p.status(), p.message(), step == null ? null : step.number(),
+                    step == null ? null : step.inputs(), m == null ? null : m.expected(),
+                    m == null ? null : m.actual(), e.error(), e.maxError(), p.notes().isEmpty() ? null : p.notes(),
+                    p.program());
+        }
+
+        CaseResult.Presented toPresented() {
+            CaseResult.Step s = step == null ? null : new CaseResult.Step(step, inputs);
+            return new CaseResult.Presented(dialect, status == null ? PresentedStatus.SKIPPED : status, message,
+                    notes, new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError), program);
+        }
+    }
 
     static CaseResultJson of(CaseResult r) {
         CaseResult.Evidence e = r.evidence();
@@ -45,7 +72,8 @@ record CaseResultJson(
                 step == null ? null : step.number(), step == null ? null : step.inputs(),
                 m == null ? null : m.expected(), m == null ? null : m.actual(), e.error(), e.maxError(),
                 r.setup().tolerance(), r.export().status(), r.export().message(), r.verdict().notes(),
-                r.setup().block(), r.setup().program(), r.setup().durationMs(), r.verdict().rejection());
+                r.setup().block(), r.setup().program(), r.setup().durationMs(), r.verdict().rejection(),
+                PresentedJson.of(r.presented()));
     }
 
     CaseResult toResult() {
@@ -53,11 +81,13 @@ record CaseResultJson(
                 flags == null ? List.of() : flags);
         CaseResult.Step s = step == null ? null : new CaseResult.Step(step, inputs);
         return new CaseResult(plan, new CaseResult.Verdict(status, message, notes, rejection),
-                new CaseResult.Evidence(s, mismatch(), error, maxError), new CaseResult.Export(exportStatus,
-                        exportMessage), new CaseResult.Setup(block, tolerance, program, durationMs));
+                new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError),
+                new CaseResult.Export(exportStatus, exportMessage),
+                new CaseResult.Setup(block, tolerance, program, durationMs),
+                presented == null ? null : presented.toPresented());
     }
 
-    private CaseResult.Mismatch mismatch() {
+    private static CaseResult.Mismatch mismatch(Object expected, Object actual) {
         if (expected == null && actual == null) {
             return null;
         }

@@ -22,9 +22,16 @@ final class CaseRunner {
     }
 
     private final ExportCheck exportCheck;
+    private final Presenter presenter;
 
     CaseRunner(ExportCheck exportCheck) {
+        this(exportCheck, null);
+    }
+
+    /** With {@code presenter} (null: none), every positive case also runs on the semantic axis. */
+    CaseRunner(ExportCheck exportCheck, Presenter presenter) {
         this.exportCheck = exportCheck;
+        this.presenter = presenter;
     }
 
     Ran run(ImplementationUnderTest iut, RunCase c) {
@@ -48,7 +55,26 @@ final class CaseRunner {
             // the contract allows only IutException; an in-process implementation may still break it
             r.errored("the implementation failed unexpectedly: " + e, String.valueOf(e));
         }
-        return new Ran(r.build((System.nanoTime() - start) / 1_000_000), gaveUp);
+        CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
+        if (presenter != null && !c.expectReject()) {
+            if (gaveUp) {
+                result = notPresented(c, result);
+            } else {
+                Presenter.Presentation p = presenter.present(iut, c);
+                result = result.withPresented(p.presented());
+                gaveUp = p.gaveUp();
+            }
+        }
+        return new Ran(result, gaveUp);
+    }
+
+    /** {@code result} of a case that was not run: a positive one is not presented either. */
+    CaseResult notPresented(RunCase c, CaseResult result) {
+        if (presenter == null || c.expectReject()) {
+            return result;
+        }
+        return result.withPresented(new CaseResult.Presented(presenter.dialect().cliName(), PresentedStatus.SKIPPED,
+                "not presented: the implementation was given up", List.of(), null, null));
     }
 
     private static void judgeRejection(RunCase c, LoadOutcome outcome, ResultBuilder r) {
@@ -89,7 +115,7 @@ final class CaseRunner {
         checkExport(iut, c, r);
     }
 
-    private static List<Map<String, Double>> runForward(ImplementationUnderTest iut, RunCase c, ResultBuilder r)
+    static List<Map<String, Double>> runForward(ImplementationUnderTest iut, RunCase c, ResultBuilder r)
             throws StepBreakdown {
         List<Map<String, Double>> actuals = new ArrayList<>();
         int wrong = 0;
@@ -181,9 +207,9 @@ final class CaseRunner {
     }
 
     /** Ends a case early once the implementation has answered a step with an error. */
-    private static final class StepBreakdown extends Exception {
+    static final class StepBreakdown extends Exception {
         private static final long serialVersionUID = 1L;
-        private final boolean gaveUp;
+        final boolean gaveUp;
 
         StepBreakdown(boolean gaveUp) {
             super(null, null, false, false);

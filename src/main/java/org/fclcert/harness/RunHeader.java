@@ -7,7 +7,19 @@ import java.util.Map;
  * The first line of {@code results.jsonl}: everything a report needs besides the case results — which
  * implementation, which toolkit, which corpus, which selection.
  */
-public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt) {
+public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt,
+        @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+        String presentAs) {
+
+    /** A header of a run on the language axis only. */
+    public RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt) {
+        this(iut, toolkit, corpus, selection, startedAt, null);
+    }
+
+    /** The same header, the positive cases also presented in {@code dialect}'s layout (null: not presented). */
+    public RunHeader presentedAs(String dialect) {
+        return new RunHeader(iut, toolkit, corpus, selection, startedAt, dialect);
+    }
 
     /**
      * The implementation as it introduced itself, and the {@code --iut} spec (with {@code --classpath}, if

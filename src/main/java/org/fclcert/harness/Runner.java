@@ -15,7 +15,16 @@ public final class Runner {
     private final RunListener listener;
 
     public Runner(ExportCheck exportCheck, RunListener listener) {
-        this.caseRunner = new CaseRunner(exportCheck);
+        this(exportCheck, listener, null);
+    }
+
+    /**
+     * With {@code presentAs} (null: none) every positive case is also presented in that library's layout
+     * (the semantic axis, {@link Presenter}); the caller names the layout in the header
+     * ({@link RunHeader#presentedAs}).
+     */
+    public Runner(ExportCheck exportCheck, RunListener listener, org.fclcert.syntax.dialect.Dialect presentAs) {
+        this.caseRunner = new CaseRunner(exportCheck, presentAs == null ? null : new Presenter(presentAs));
         this.listener = listener;
     }
 
@@ -34,8 +43,8 @@ public final class Runner {
             listener.caseStarted(c, i, cases.size());
             CaseResult result;
             if (gaveUpAt != null) {
-                result = CaseResult.skipped(c.plan(), "not run: the implementation was given up at case "
-                        + gaveUpAt + " (restart budget exhausted)");
+                result = caseRunner.notPresented(c, CaseResult.skipped(c.plan(),
+                        "not run: the implementation was given up at case " + gaveUpAt + " (restart budget exhausted)"));
             } else {
                 CaseRunner.Ran ran = caseRunner.run(iut, c);
                 result = ran.result();

@@ -30,6 +30,15 @@ public interface ImplementationUnderTest extends AutoCloseable {
      * instance per function block; it keeps its state between calls (the ordered vectors of one case
      * run on one instance) until {@link #reset()} or the next {@link #load}.
      */
+    /**
+     * Loads a program written in a library's layout (the semantic axis, {@code certify --present-as}). An
+     * implementation gets the text as it is, through {@link #load}; only fclcert's reference evaluator, which
+     * reads the standard's layout by default, reads it with fclcert's reader of {@code layout}.
+     */
+    default LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+        return load(text);
+    }
+
     Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException;
 
     /** Fresh state for every instance; the program stays loaded. */

@@ -47,9 +47,6 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     @Override
     public LoadOutcome load(String fcl) throws IutException {
-        program = null;
-        loaded = null;
-        instances.clear();
         Analysis analysis;
         try {
             // memoised: the prober has usually just judged this very text with the same reader
@@ -57,6 +54,25 @@ final class ReferenceIut implements ImplementationUnderTest {
         } catch (RuntimeException e) {
             throw crash("reading and checking", e);
         }
+        return loadAnalysed(analysis);
+    }
+
+    /** A library's layout is read with fclcert's reader of that dialect, then computed as the standard says. */
+    @Override
+    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+        Analysis analysis;
+        try {
+            analysis = Analysis.analyze(org.fclcert.syntax.dialect.DialectReaders.reader(layout), SOURCE_NAME, text);
+        } catch (RuntimeException e) {
+            throw crash("reading and checking", e);
+        }
+        return loadAnalysed(analysis);
+    }
+
+    private LoadOutcome loadAnalysed(Analysis analysis) throws IutException {
+        program = null;
+        loaded = null;
+        instances.clear();
         if (analysis.program().isEmpty()) {
             return rejection(analysis.diagnostics());
         }

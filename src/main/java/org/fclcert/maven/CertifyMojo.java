@@ -24,6 +24,8 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.orchestration.PresentAs;
+import org.fclcert.report.JunitReport;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -49,6 +51,13 @@ public class CertifyMojo extends AbstractMojo {
     /** Where results.jsonl and the four reports go. */
     @Parameter(property = "fclcert.reportsDirectory", defaultValue = "${project.build.directory}/fclcert-reports")
     private File reportsDirectory;
+
+    /**
+     * Where the JUnit results also go as {@code TEST-fclcert.xml}, one testcase per case, class per feature row:
+     * Surefire's directory by default, so that CI servers and the surefire-report plugin find them as they are.
+     */
+    @Parameter(property = "fclcert.junitDirectory", defaultValue = "${project.build.directory}/surefire-reports")
+    private File junitDirectory;
 
     /** Only cases of these levels (basic, extension, open); all when empty. */
     @Parameter(property = "fclcert.levels")
@@ -78,6 +87,14 @@ public class CertifyMojo extends AbstractMojo {
     @Parameter(property = "fclcert.probeBudgetSeconds", defaultValue = Defaults.PROBE_BUDGET_SECONDS)
     private long probeBudgetSeconds;
 
+    /**
+     * The semantic axis: auto, none, fuzzylite, jfuzzylogic or ffll. Each positive case the layout can express
+     * is also sent written in that library's layout (auto: the built-in library adapters in their library's
+     * layout, none for reference, java: and process:).
+     */
+    @Parameter(property = "fclcert.presentAs", defaultValue = "auto")
+    private String presentAs;
+
     /** Skip this goal (also skipped with -DskipTests or -DskipITs). */
     @Parameter(property = "fclcert.skip", defaultValue = "false")
     private boolean skip;
@@ -97,6 +114,13 @@ public class CertifyMojo extends AbstractMojo {
             getLog().info("fclcert:certify skipped");
             return;
         }
+        PresentAs layout;
+        try {
+            layout = PresentAs.byWord(presentAs == null ? "auto" : presentAs);
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException("fclcert:certify: presentAs '" + presentAs
+                    + "' is not one of auto, none, fuzzylite, jfuzzylogic, ffll");
+        }
         Corpus corpus = corpus();
         IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis));
         List<Path> classpath = iut.startsWith("java:") ? testClasspath() : List.of();
@@ -109,7 +133,7 @@ public class CertifyMojo extends AbstractMojo {
                 .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
-                .build();
+                .presentAs(layout).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));
@@ -117,12 +141,29 @@ public class CertifyMojo extends AbstractMojo {
             throw new MojoExecutionException("fclcert:certify could not run: " + e.getMessage(), e);
         }
         Report r = outcome.report();
-        Report.Summary s = r.summary();
-        getLog().info(r.iut().name() + " " + r.iut().version() + ": " + s.cases() + " cases, " + s.passed()
-                + " passed, " + s.failed() + " failed, " + s.errored() + " errored, " + s.skipped() + " skipped");
-        getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant"));
+        Path surefire = junitDirectory.toPath().resolve(ReportFiles.SUREFIRE);
+        try {
+            java.nio.file.Files.createDirectories(surefire.getParent());
+            java.nio.file.Files.writeString(surefire, JunitReport.render(r));
+        } catch (java.io.IOException e) {
+            throw new MojoExecutionException("cannot write " + surefire + ": " + e.getMessage(), e);
+        }
+        // Surefire's summary, counted as the JUnit file counts (unclaimed features' cases skipped)
+        JunitReport.Counts counts = JunitReport.counts(r);
+        String summary = counts.surefireLine() + " - " + r.iut().name() + " " + r.iut().version();
+        if (counts.failures() + counts.errors() > 0) {
+            getLog().warn(summary);
+        } else {
+            getLog().info(summary);
+        }
+        getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant ("
+                + r.basicLevel().reason() + ")"));
+        if (r.semantic() != null) {
+            getLog().info(r.semantic().sentence());
+        }
         r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
-        getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN));
+        getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
+                + surefire);
     }
 
     private Corpus corpus() throws MojoExecutionException {

@@ -33,7 +33,8 @@ final class ReportGate {
     static Optional<String> failure(Report report, FailOn failOn, List<String> claims) {
         List<String> problems = new ArrayList<>();
         if (failOn != FailOn.NONE && failOn != FailOn.ANY && !report.basicLevel().conformant()) {
-            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + failingCases(report, "basic"));
+            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + failingCases(report, "basic")
+                    + table8Rows(report));
         }
         if (failOn == FailOn.CLAIMED) {
             List<String> claimed = claims.isEmpty() ? report.iut().claims() : claims;
@@ -64,6 +65,14 @@ final class ReportGate {
         String cases = f.notPassed().isEmpty() ? "" : "; cases not passed: " + String.join(", ", f.notPassed());
         return List.of("claimed " + id + " (Table " + f.table() + ", " + f.description() + ") is "
                 + f.status().label() + cases);
+    }
+
+    /** The Table 8 rows that are not realised, named, so that a Basic Level failure says which rows keep it out. */
+    private static String table8Rows(Report report) {
+        List<String> rows = report.features().stream()
+                .filter(f -> f.table() == 8 && f.status() != FeatureStatus.REALISED)
+                .map(f -> f.id() + " (" + f.description() + ": " + f.status().label() + ")").toList();
+        return rows.isEmpty() ? "" : "; Table 8 rows not realised: " + String.join(", ", rows);
     }
 
     private static String failingCases(Report report, String level) {

@@ -1,5 +1,7 @@
 package org.fclcert.model;
 
+import java.math.BigDecimal;
+import java.math.BigInteger;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -41,6 +43,23 @@ public enum DataType {
     /** Largest representable value. */
     public double max() {
         return max;
+    }
+
+    /**
+     * The exact smallest value: the doubles {@link #min()} and {@link #max()} round LINT's and ULINT's
+     * bounds to 2^63 and 2^64, which a range check must not accept.
+     */
+    public BigDecimal exactMin() {
+        return this == LINT ? BigDecimal.valueOf(Long.MIN_VALUE) : new BigDecimal(min);
+    }
+
+    /** The exact largest value (see {@link #exactMin()}). */
+    public BigDecimal exactMax() {
+        return switch (this) {
+            case LINT -> BigDecimal.valueOf(Long.MAX_VALUE);
+            case ULINT -> new BigDecimal(BigInteger.ONE.shiftLeft(64).subtract(BigInteger.ONE));
+            default -> new BigDecimal(max);
+        };
     }
 
     /** The type named by a keyword in any case, e.g. {@code real} or {@code UDInt}. */

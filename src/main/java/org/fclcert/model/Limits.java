@@ -14,6 +14,13 @@ public final class Limits {
      */
     public static final int MAX_NESTING_DEPTH = 1_000;
 
+    /**
+     * Largest program, CSV or results file the command line reads, in bytes (128 MiB). Only regular
+     * files are read (not devices, FIFOs or directories), so {@code /dev/zero} or a pipe that never
+     * ends gets a plain error instead of exhausting memory or hanging.
+     */
+    public static final long MAX_SOURCE_BYTES = 128L * 1024 * 1024;
+
     private Limits() {
     }
 }

@@ -1,6 +1,7 @@
 package org.fclcert.orchestration;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
@@ -10,6 +11,8 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ReferenceExportCheck;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
@@ -23,12 +26,14 @@ import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutInfo;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
+import org.fclcert.iut.RecordingIut;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * One certification run from start to finish: select the cases, start the implementation, run the cases
@@ -56,14 +61,15 @@ public final class Certification {
      * @param corpusName  how the report names the corpus (its directory, or {@code bundled})
      * @param selection   which cases run
      * @param outDir      where results and reports go; null for {@code <reportsRoot>/<iut-name>}
-     * @param reportsRoot parent of the default output directory
+     * @param reportsRoot parent of the default output directory ({@code fclcert-reports})
      * @param probe       how to measure the Table 11 data check list after the cases; null: not measured
      * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
      *                    null to describe {@code selection}
+     * @param presentAs   the semantic axis: in which library's layout positive cases are also sent (null: auto)
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters) {
+            List<List<String>> filters, PresentAs presentAs) {
 
         public Request {
             Objects.requireNonNull(iutSpec, "iutSpec");
@@ -71,6 +77,7 @@ public final class Certification {
             Objects.requireNonNull(corpus, "corpus");
             Objects.requireNonNull(corpusName, "corpusName");
             Objects.requireNonNull(selection, "selection");
+            presentAs = presentAs == null ? PresentAs.AUTO : presentAs;
             if (outDir == null && reportsRoot == null) {
                 throw new IllegalArgumentException("a request needs an output directory or a reports root");
             }
@@ -93,7 +100,7 @@ public final class Certification {
 
     /**
      * Builds a {@link Request}. Defaults: {@link IutOptions#defaults()}, no class path, the corpus named
-     * {@code bundled}, every case, output to {@code reports/<iut-name>}, no Table 11 probes, the filters
+     * {@code bundled}, every case, output to {@code fclcert-reports/<iut-name>}, no Table 11 probes, the filters
      * described from the selection.
      */
     public static final class Builder {
@@ -107,6 +114,7 @@ public final class Certification {
         private Path reportsRoot = DEFAULT_REPORTS_ROOT;
         private Prober.Options probe;
         private List<List<String>> filters;
+        private PresentAs presentAs = PresentAs.AUTO;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -142,7 +150,7 @@ public final class Certification {
             return this;
         }
 
-        /** The parent of the default output directory (default {@code reports}). */
+        /** The parent of the default output directory (default {@code fclcert-reports}). */
         public Builder reportsRoot(Path value) {
             reportsRoot = value;
             return this;
@@ -160,14 +168,43 @@ public final class Certification {
             return this;
         }
 
+        /** The semantic axis ({@code --present-as}, default {@link PresentAs#AUTO}). */
+        public Builder presentAs(PresentAs value) {
+            presentAs = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters);
+                    probe, filters, presentAs);
         }
     }
 
-    /** The parent of the default output directory: {@code reports/} of the working directory. */
-    public static final Path DEFAULT_REPORTS_ROOT = Path.of("reports");
+    /**
+     * The parent of the default output directory: {@code fclcert-reports/} of the working directory, which
+     * git ignores, so that a run never overwrites the committed {@code reports/} (scripts/regenerate-reports
+     * writes those with an explicit output directory).
+     */
+    public static final Path DEFAULT_REPORTS_ROOT = Path.of("fclcert-reports");
+
+    /**
+     * The parent of the default output directory of a run of selected cases ({@code --case}): a directory
+     * of the system's temporary directory, so that reproducing a failure writes nothing into a checkout.
+     */
+    public static Path scratchReportsRoot() {
+        return Path.of(System.getProperty("java.io.tmpdir"), "fclcert-reports");
+    }
+
+    /** Where a case that did not pass leaves its protocol transcript, relative to the output directory. */
+    public static final String TRANSCRIPTS = "requests";
+
+    /** The transcript file of case {@code id} in {@code directory}: {@code requests/<id>.requests.jsonl}. */
+    public static Path transcriptFile(Path directory, String id) {
+        return directory.resolve(TRANSCRIPTS).resolve(id.replaceAll("[^A-Za-z0-9._-]+", "-") + ".requests.jsonl");
+    }
+
+    /** The longest default directory name: well below every file system's 255-byte limit on a name. */
+    public static final int MAX_DIRECTORY_NAME = 64;
 
     /** The finished run: its report and the directory holding the files. */
     public record Outcome(Report report, Path directory) {
@@ -231,8 +268,10 @@ public final class Certification {
         }
         try (ImplementationUnderTest iut = open(request)) {
             IutInfo info = hello(iut, request.iutSpec());
-            RunHeader header = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
+            RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
                     request.corpus().sha256(), all, selected, request.filtersForReport());
+            RunHeader header = request.presentAs().resolve(request.iutSpec())
+                    .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
             Path dir = request.outDir() != null ? request.outDir()
                     : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
             return new Outcome(runAndReport(request, iut, header, selected, dir, listener, hooks), dir);
@@ -244,7 +283,10 @@ public final class Certification {
         Path resultsFile = dir.resolve(RESULTS);
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             hooks.started(iut, dir, resultsFile);
-            List<CaseResult> done = new Runner(listener).run(iut, header, selected, results);
+            Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
+            RecordingIut recording = new RecordingIut(iut);
+            List<CaseResult> done = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout)
+                    .run(recording, header, selected, results);
             hooks.casesFinished();
             List<DataCheckEntry> dataCheckList = List.of();
             if (request.probe() != null) {
@@ -257,6 +299,42 @@ public final class Certification {
             return report;
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * Writes, for each case that does not pass, the protocol requests it made ({@link #transcriptFile}), so
+     * that the case can be replayed by hand: {@code python3 my_iut.py < requests/ID.requests.jsonl}.
+     */
+    private static final class Transcripts implements RunListener {
+        private final RecordingIut recording;
+        private final Path dir;
+        private final RunListener next;
+
+        Transcripts(RecordingIut recording, Path dir, RunListener next) {
+            this.recording = recording;
+            this.dir = dir;
+            this.next = next;
+        }
+
+        @Override
+        public void caseStarted(RunCase c, int index, int total) {
+            recording.clear();
+            next.caseStarted(c, index, total);
+        }
+
+        @Override
+        public void caseFinished(CaseResult result, int index, int total) {
+            if (result.status() == CaseStatus.FAILED || result.status() == CaseStatus.ERRORED) {
+                Path file = transcriptFile(dir, result.id());
+                try {
+                    Files.createDirectories(file.getParent());
+                    Files.writeString(file, recording.transcript());
+                } catch (IOException e) {
+                    // a transcript is a convenience: the case's result is in results.jsonl either way
+                }
+            }
+            next.caseFinished(result, index, total);
         }
     }
 
@@ -289,7 +367,7 @@ public final class Certification {
     /**
      * The name of the default output directory: {@code reference} for fclcert's own evaluator, else the
      * implementation's name in lower case with runs of anything but letters, digits, '.', '_' and '-'
-     * turned into one '-' ({@code iut} when nothing is left).
+     * turned into one '-', cut to {@link #MAX_DIRECTORY_NAME} characters ({@code iut} when nothing is left).
      */
     public static String defaultDirectoryName(String spec, String name) {
         if (spec.strip().equals("reference")) {
@@ -297,6 +375,9 @@ public final class Certification {
         }
         String cleaned = (name == null ? "" : name).toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9._-]+", "-")
                 .replaceAll("^[-.]+|-+$", "");
+        if (cleaned.length() > MAX_DIRECTORY_NAME) {
+            cleaned = cleaned.substring(0, MAX_DIRECTORY_NAME).replaceAll("[-.]+$", "");
+        }
         return cleaned.isEmpty() ? "iut" : cleaned;
     }
 

@@ -125,6 +125,17 @@ public final class ComparisonPage {
         }));
         rows.add(row("Standard Extensions realised (Table 9)", e -> realised(e.report(), 9)));
         rows.add(row("Open Level realised (Table 10)", e -> realised(e.report(), 10)));
+        if (entries.stream().anyMatch(e -> e.report().semantic() != null)) {
+            rows.add(row("Semantic axis: positive cases in the library's layout", e -> {
+                Report.SemanticAxis a = e.report().semantic();
+                return a == null ? "not run" : a.passed() + " of " + (a.cases() - a.notPresentable()) + " passed ("
+                        + a.presentAs() + " layout; " + a.notPresentable() + " not presentable)";
+            }));
+            for (int table : new int[] {8, 9, 10}) {
+                rows.add(row("Semantic axis: Table " + table + " rows realised", e -> semanticRealised(e.report(),
+                        table)));
+            }
+        }
         rows.add(row("Most common cause of failure", e -> e.report().causes().isEmpty() ? "none"
                 : e.report().causes().get(0).sentence()));
         rows.add(row("FCL export (clause 6 e)", ComparisonPage::export));
@@ -150,6 +161,17 @@ public final class ComparisonPage {
         long realised = r.features().stream().filter(f -> f.table() == table && f.status() == FeatureStatus.REALISED)
                 .count();
         return realised + " of " + rows;
+    }
+
+    /** Rows realised on the semantic axis, of those with a presented case. */
+    private static String semanticRealised(Report r, int table) {
+        if (r.semantic() == null) {
+            return "not run";
+        }
+        List<Report.FeatureRow> rows = r.features().stream()
+                .filter(f -> f.table() == table && f.semantic() != null && f.semantic().total() > 0).toList();
+        long realised = rows.stream().filter(f -> f.semantic().status() == FeatureStatus.REALISED).count();
+        return realised + " of " + rows.size() + " with a presentable case";
     }
 
     private static String export(Entry e) {

@@ -72,13 +72,13 @@ public final class HtmlReport {
                 .append("<title>FCL compliance: ").append(Texts.html(r.iut().name())).append("</title>")
                 .append("<style>").append(STYLE).append("</style></head><body><main>\n");
         header();
+        causes();   // what is wrong comes first, before the tables a reader scrolls past
         table(8, "Table 8: Basic Level language elements (mandatory)");
         table(9, "Table 9: Extension Level, Standard Extensions");
         table(10, "Table 10: Open Level features");
         dataCheckList();
         claimsAndInterpretation();
         export();
-        causes();
         cases();
         out.append("</main><script>").append(SCRIPT).append("</script></body></html>\n");
         return out.toString();
@@ -131,14 +131,34 @@ public final class HtmlReport {
             out.append("<p>Standard Extensions realised: ")
                     .append(realised.isEmpty() ? "none" : Texts.html(String.join(", ", realised))).append("</p>\n");
         }
-        out.append("<table><tr><th>Language element</th><th>Feature</th><th>Verdict</th><th>Passed</th>")
-                .append("<th>Not passed</th></tr>\n");
+        boolean semantic = r.semantic() != null;
+        if (semantic) {
+            out.append("<p class=\"small\"><b>").append(Texts.html(Report.LANGUAGE_AXIS)).append("</b>; <b>")
+                    .append(Texts.html(Report.SEMANTIC_AXIS)).append("</b> (").append(Texts.html(r.semantic()
+                    .presentAs())).append(" layout).</p>\n");
+        }
+        out.append("<table><tr><th>Language element</th><th>Feature</th><th>")
+                .append(semantic ? "Language verdict" : "Verdict").append("</th><th>Passed</th>")
+                .append("<th>Not passed</th>")
+                .append(semantic ? "<th>Semantic verdict</th><th>Passed</th><th>Not passed</th><th>Not presentable</th>"
+                        : "")
+                .append("</tr>\n");
         for (Report.FeatureRow f : rows) {
             out.append("<tr><td>").append(Texts.html(f.element())).append("</td><td><b>").append(f.id())
                     .append("</b> ").append(Texts.html(f.description())).append("</td><td><span class=\"st ")
                     .append(f.status().word()).append("\">").append(f.status().label()).append("</span></td><td>")
                     .append(f.passed()).append(" / ").append(f.cases().size()).append("</td><td>")
-                    .append(links(f.notPassed())).append("</td></tr>\n");
+                    .append(links(f.notPassed())).append("</td>");
+            if (semantic && f.semantic() != null) {
+                Report.Semantic sem = f.semantic();
+                out.append("<td><span class=\"st ").append(sem.status().word()).append("\">")
+                        .append(sem.status().label()).append("</span></td><td>").append(sem.passed()).append(" / ")
+                        .append(sem.total()).append("</td><td>").append(links(sem.notPassed())).append("</td><td>")
+                        .append(sem.notPresentable()).append("</td>");
+            } else if (semantic) {
+                out.append("<td></td><td></td><td></td><td></td>");
+            }
+            out.append("</tr>\n");
         }
         out.append("</table>\n");
     }
@@ -158,7 +178,8 @@ public final class HtmlReport {
             out.append("<tr><td>").append(Texts.html(d.item())).append("</td><td><b>")
                     .append(Texts.html(Texts.measured(d))).append("</b></td><td>").append(Texts.html(d.declared()))
                     .append("</td><td><span").append(flag).append('>').append(Texts.html(d.note()))
-                    .append("</span></td><td><small>").append(Texts.html(d.method())).append("</small></td></tr>\n");
+                    .append("</span></td><td><details class=\"how\"><summary>how</summary><small>")
+                    .append(Texts.html(d.method())).append("</small></details></td></tr>\n");
         }
         out.append("</table>\n");
     }
@@ -250,8 +271,13 @@ public final class HtmlReport {
         r.cases().forEach(this::caseBlock);
     }
 
+    private boolean firstFailureOpened;
+
     private void caseBlock(CaseResult c) {
-        out.append("<details class=\"case\" id=\"case-").append(Texts.html(c.id())).append("\" data-id=\"")
+        // the first failure is shown open, so that the page opens on what is wrong
+        boolean open = !firstFailureOpened && (c.status() == CaseStatus.FAILED || c.status() == CaseStatus.ERRORED);
+        firstFailureOpened |= open;
+        out.append("<details").append(open ? " open" : "").append(" class=\"case\" id=\"case-").append(Texts.html(c.id())).append("\" data-id=\"")
                 .append(Texts.html(c.id())).append("\" data-status=\"").append(c.status().word())
                 .append("\" data-level=\"").append(Texts.html(c.level())).append("\"><summary><span class=\"st ")
                 .append(c.status().word()).append("\">").append(c.status().word()).append("</span> <b>")

@@ -7,6 +7,7 @@ import java.util.Map;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ExportStatus;
+import org.fclcert.harness.PresentedStatus;
 
 /**
  * {@code report.md}: the compliance statement in the shape clause 6.1 asks for — the Basic Level verdict
@@ -37,6 +38,7 @@ public final class MarkdownReport {
         dataCheckList();
         causes();
         failures();
+        semanticFailures();
         notes();
         return out.toString();
     }
@@ -76,6 +78,12 @@ public final class MarkdownReport {
         line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
                 + r.basicLevel().reason() + ").");
         line("");
+        if (r.semantic() != null) {
+            line("Two verdicts per feature row: **" + Report.LANGUAGE_AXIS + "**; **" + Report.SEMANTIC_AXIS + "**.");
+            line("");
+            line("- " + r.semantic().sentence());
+            line("");
+        }
     }
 
     private String selection() {
@@ -132,16 +140,73 @@ public final class MarkdownReport {
     }
 
     private void featureTable(int table) {
+        if (r.semantic() != null) {
+            semanticFeatureTable(table);
+            return;
+        }
         line("| Language element | Feature | Verdict | Passed | Not passed |");
         line("| --- | --- | --- | --- | --- |");
         for (Report.FeatureRow f : rows(table)) {
-            String verdict = f.status() == FeatureStatus.REALISED || f.status() == FeatureStatus.NOT_TESTED
-                    ? f.status().label() : "**" + f.status().label() + "**";
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
-                    + verdict + " | " + f.passed() + "/" + f.cases().size() + " | "
+                    + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
                     + String.join(", ", f.notPassed()) + " |");
         }
         line("");
+    }
+
+    private static String verdict(FeatureStatus status) {
+        return status == FeatureStatus.REALISED || status == FeatureStatus.NOT_TESTED ? status.label()
+                : "**" + status.label() + "**";
+    }
+
+    /** Both axes side by side: the language verdict (the standard's text) and the semantic one (the layout). */
+    private void semanticFeatureTable(int table) {
+        String layout = r.semantic().presentAs();
+        line("| Language element | Feature | Language verdict | Passed | Not passed | Semantic verdict (" + layout
+                + " layout) | Passed | Not passed | Not presentable |");
+        line("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+        for (Report.FeatureRow f : rows(table)) {
+            Report.Semantic sem = f.semantic();
+            line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
+                    + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
+                    + String.join(", ", f.notPassed()) + " | "
+                    + (sem == null ? "" : verdict(sem.status()) + " | " + sem.passed() + "/" + sem.total() + " | "
+                            + String.join(", ", sem.notPassed()) + " | " + sem.notPresentable())
+                    + " |");
+        }
+        line("");
+    }
+
+    /** The semantic failures: each case's value in the layout against the standard's. */
+    private void semanticFailures() {
+        if (r.semantic() == null) {
+            return;
+        }
+        line("## Semantic axis: what it computes otherwise (" + r.semantic().presentAs() + " layout)");
+        line("");
+        List<CaseResult> wrong = r.cases().stream().filter(c -> c.presentedResult().map(p -> p.status()
+                == PresentedStatus.FAILED || p.status() == PresentedStatus.ERRORED).orElse(false)).toList();
+        if (wrong.isEmpty()) {
+            line("Every presented case gave the standard's results.");
+        }
+        for (CaseResult c : wrong) {
+            CaseResult.Presented p = c.presented();
+            StringBuilder b = new StringBuilder("- **" + c.id() + "** (" + p.status().word() + "): "
+                    + Texts.cell(p.message()));
+            java.util.Optional.ofNullable(p.evidence().mismatch()).ifPresentOrElse(m -> b.append(" — expected ").append(Texts.cell(Texts.describe(
+                    m.expected()))).append(", got ").append(Texts.cell(Texts.describe(m.actual()))), () -> { });
+            line(b.toString());
+            p.notes().forEach(n -> line("  - " + Texts.cell(n)));
+        }
+        line("");
+        List<CaseResult> notPresentable = r.cases().stream().filter(c -> c.presentedResult()
+                .map(p -> p.status() == PresentedStatus.NOT_PRESENTABLE).orElse(false)).toList();
+        if (!notPresentable.isEmpty()) {
+            line("### Not presentable in the " + r.semantic().presentAs() + " layout");
+            line("");
+            notPresentable.forEach(c -> line("- " + c.id() + ": " + Texts.cell(c.presented().message())));
+            line("");
+        }
     }
 
     private void claims() {
@@ -278,12 +343,32 @@ public final class MarkdownReport {
     }
 
     private void failure(CaseResult c) {
-        line("- **" + c.id() + "** " + c.status().word() + ": " + Texts.cell(c.message()));
+        line("- **" + c.id() + "** " + (c.title() == null ? "" : "(" + Texts.cell(c.title()) + ") ")
+                + c.status().word() + ": " + Texts.cell(c.message()));
+        CaseResult.Step step = c.evidence().step();
+        if (step != null && !step.inputs().isEmpty()) {
+            line("  - step " + step.number() + ", inputs: " + Texts.cell(Texts.describe(step.inputs())));
+        }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }
-        line("  - reproduce: `" + Texts.repro(r, c.id()) + "`");
+        String stderr = lastStderrLine(c.evidence().error());
+        if (stderr != null) {
+            line("  - its last stderr line: `" + stderr.replace("`", "'") + "`");
+        }
+        line("  - reproduce: `" + Texts.repro(r, c.id()) + "` (transcript: `requests/"
+                + c.id().replaceAll("[^A-Za-z0-9._-]+", "-") + ".requests.jsonl`)");
+    }
+
+    /** The last non-blank line of the stderr tail the harness appends to an implementation's error. */
+    private static String lastStderrLine(String error) {
+        int marker = error == null ? -1 : error.indexOf("--- stderr");
+        if (marker < 0) {
+            return null;
+        }
+        List<String> lines = error.substring(marker).lines().skip(1).filter(l -> !l.isBlank()).toList();
+        return lines.isEmpty() ? null : Texts.cell(lines.get(lines.size() - 1).strip());
     }
 }

@@ -27,7 +27,8 @@ public record Report(
         List<InterpretationEntry> interpretation,
         Claims claims,
         List<Causes.Cause> causes,
-        List<CaseResult> cases) {
+        List<CaseResult> cases,
+        SemanticAxis semantic) {
 
     public static final int FORMAT_VERSION = 1;
 
@@ -38,6 +39,35 @@ public record Report(
         causes = causes == null ? List.of() : List.copyOf(causes);
         cases = List.copyOf(cases);
     }
+
+    /** A report of the language axis only. */
+    public Report(int formatVersion, String generatedAt, RunHeader.Iut iut, RunHeader.Toolkit toolkit,
+            RunHeader.CorpusInfo corpus, Run run, Summary summary, Rejections rejections, BasicLevel basicLevel,
+            List<FeatureRow> features, List<DataCheckEntry> dataCheckList, List<InterpretationEntry> interpretation,
+            Claims claims, List<Causes.Cause> causes, List<CaseResult> cases) {
+        this(formatVersion, generatedAt, iut, toolkit, corpus, run, summary, rejections, basicLevel, features,
+                dataCheckList, interpretation, claims, causes, cases, null);
+    }
+
+    /** What the two axes of a feature row mean, for every rendering. */
+    public static final String LANGUAGE_AXIS = "language: reads the standard's text (the clause 6 statement)";
+    public static final String SEMANTIC_AXIS = "semantic: computes the standard's results on programs it can read"
+            + " (the positive cases written in the library's layout)";
+
+    /**
+     * The semantic axis of the run ({@code --present-as}), absent when the run had none: the layout, and what
+     * became of the positive cases presented in it ({@code notPresentable}: the layout cannot say the program).
+     */
+    public record SemanticAxis(String presentAs, int cases, int passed, int failed, int errored, int skipped,
+            int notPresentable) {
+        /** {@code semantic axis (fuzzylite layout): 90 presented, 70 passed, 20 failed, …}. */
+        public String sentence() {
+            return "Semantic axis (" + presentAs + " layout): " + (cases - notPresentable) + " of " + cases
+                    + " positive cases presented, " + passed + " passed, " + failed + " failed, " + errored
+                    + " errored, " + skipped + " skipped, " + notPresentable + " not presentable";
+        }
+    }
+
 
     /** How the run went: when, with which filters, whether every selected case ran, problems reading results. */
     public record Run(String startedAt, boolean complete, RunHeader.Selection selection, List<String> problems) {
@@ -85,7 +115,7 @@ public record Report(
      */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed, Semantic semantic) {
+            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) Semantic semantic) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
@@ -101,10 +131,20 @@ public record Report(
     }
 
     /**
-     * The semantic verdict of a feature row: of {@code total} cases the implementation's dialect can express,
-     * {@code passed} computed the standard's values when sent in that layout.
+     * The semantic verdict of a feature row: of {@code total} positive cases the implementation's dialect can
+     * express ({@code --present-as}), {@code passed} computed the standard's values when sent in that layout;
+     * {@code notPresentable} cases the layout cannot say are left out of {@code total}; {@code notPassed} names
+     * the presented cases that did not pass.
      */
-    public record Semantic(FeatureStatus status, int passed, int total) {
+    public record Semantic(FeatureStatus status, int passed, int total, int notPresentable,
+            List<String> notPassed) {
+        public Semantic {
+            notPassed = notPassed == null ? List.of() : List.copyOf(notPassed);
+        }
+
+        public Semantic(FeatureStatus status, int passed, int total) {
+            this(status, passed, total, 0, List.of());
+        }
     }
 
     /**

@@ -15,6 +15,7 @@ import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.RejectionPlace;
 import org.fclcert.harness.Flags;
 import org.fclcert.harness.PlannedCase;
+import org.fclcert.harness.PresentedStatus;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunHeader;
 import org.fclcert.model.Feature;
@@ -33,11 +34,13 @@ public final class ReportBuilder {
         List<CaseResult> cases = complete(header, results);
         boolean complete = cases.stream().noneMatch(c -> c.status() == CaseStatus.SKIPPED && isUnrun(c));
         List<CaseResult> counted = cases.stream().filter(c -> !c.interpretation()).toList();
-        List<Report.FeatureRow> features = featureRows(counted);
+        boolean semantic = header.presentAs() != null;
+        List<Report.FeatureRow> features = featureRows(counted, semantic);
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
                 summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
-                claims(header.iut().claims(), features), Causes.of(cases), cases);
+                claims(header.iut().claims(), features), Causes.of(cases), cases,
+                semantic ? semantic(header.presentAs(), cases) : null);
     }
 
     static final String NOT_RUN = "not run: the run ended before this case";
@@ -112,7 +115,44 @@ public final class ReportBuilder {
                 : String.join(", ", ids.subList(0, 10)) + " and " + (ids.size() - 10) + " more";
     }
 
-    private static List<Report.FeatureRow> featureRows(List<CaseResult> counted) {
+    /** The positive cases' semantic results; a positive case without one (a run cut short) counts as skipped. */
+    private static Report.SemanticAxis semantic(String presentAs, List<CaseResult> cases) {
+        List<PresentedStatus> s = cases.stream().filter(c -> !c.interpretation()).filter(ReportBuilder::positive)
+                .map(ReportBuilder::presentedStatus).toList();
+        return new Report.SemanticAxis(presentAs, s.size(), count(s, PresentedStatus.PASSED),
+                count(s, PresentedStatus.FAILED), count(s, PresentedStatus.ERRORED), count(s, PresentedStatus.SKIPPED),
+                count(s, PresentedStatus.NOT_PRESENTABLE));
+    }
+
+    /**
+     * A case of the semantic axis: in a presented run every positive case carries its semantic result (skipped
+     * when it never ran after the implementation was given up); a case the run never reached is left out.
+     */
+    private static boolean positive(CaseResult c) {
+        return c.presentedResult().isPresent();
+    }
+
+    private static PresentedStatus presentedStatus(CaseResult c) {
+        return c.presentedResult().map(CaseResult.Presented::status).orElse(PresentedStatus.SKIPPED);
+    }
+
+    private static int count(List<PresentedStatus> statuses, PresentedStatus status) {
+        return (int) statuses.stream().filter(s -> s == status).count();
+    }
+
+    private static Report.Semantic semanticRow(List<CaseResult> evidence) {
+        List<CaseResult> positive = evidence.stream().filter(ReportBuilder::positive).toList();
+        int notPresentable = (int) positive.stream()
+                .filter(c -> presentedStatus(c) == PresentedStatus.NOT_PRESENTABLE).count();
+        List<CaseResult> presented = positive.stream()
+                .filter(c -> presentedStatus(c) != PresentedStatus.NOT_PRESENTABLE).toList();
+        int passed = (int) presented.stream().filter(c -> presentedStatus(c) == PresentedStatus.PASSED).count();
+        return new Report.Semantic(FeatureStatus.of(passed, presented.size()), passed, presented.size(),
+                notPresentable, presented.stream().filter(c -> presentedStatus(c) != PresentedStatus.PASSED)
+                        .map(CaseResult::id).toList());
+    }
+
+    private static List<Report.FeatureRow> featureRows(List<CaseResult> counted, boolean semantic) {
         List<Report.FeatureRow> rows = new ArrayList<>();
         for (Feature f : Feature.values()) {
             if (f.dialectSyntax()) {
@@ -125,7 +165,8 @@ public final class ReportBuilder {
             rows.add(new Report.FeatureRow(f.id(), f.table(), f.level().word(), f.element(), f.description(),
                     status, passed, count(evidence, CaseStatus.FAILED), count(evidence, CaseStatus.ERRORED), skipped,
                     evidence.stream().map(CaseResult::id).toList(),
-                    evidence.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id).toList()));
+                    evidence.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id).toList(),
+                    semantic ? semanticRow(evidence) : null));
         }
         return rows;
     }

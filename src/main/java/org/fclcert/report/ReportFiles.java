@@ -13,6 +13,12 @@ public final class ReportFiles {
     public static final String HTML = "report.html";
     public static final String JUNIT = "junit.xml";
 
+    /**
+     * The name the Maven plugin gives the JUnit results in {@code target/surefire-reports/}, where CI servers
+     * and the surefire-report plugin look (only there: two copies in one directory would count every case twice).
+     */
+    public static final String SUREFIRE = "TEST-fclcert.xml";
+
     private ReportFiles() {
     }
 

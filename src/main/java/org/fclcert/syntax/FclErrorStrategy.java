@@ -121,11 +121,50 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
             return;
         }
         SyntaxMessages.Message m = SyntaxMessages.describe(recognizer.getContext(), offending, expected, tokens);
-        diagnostics.error(offending, m.code(), m.text());
+        Token before = semicolonMissing(expected) ? lineEndBefore(index, offending) : null;
+        if (before != null) {
+            // a forgotten ';' is a mistake of the line that lacks it: point there, as a compiler does
+            diagnostics.error(diagnostics.at(before.getLine(), before.getCharPositionInLine() + before.getText().length()
+                    + 1), m.code(), m.text() + (offending.getType() == Token.EOF ? "" : " on line " + offending.getLine()));
+        } else {
+            diagnostics.error(offending, m.code(), m.text());
+        }
         suppressThrough = endOfStatement(index);
         if (diagnostics.tooMany()) {
             throw new StopReading();
         }
+    }
+
+    /** ';' could end the statement here and no block's END_ keyword could: a statement lacks its ';'. */
+    private static boolean semicolonMissing(IntervalSet expected) {
+        if (!expected.contains(FclLexer.SEMI)) {
+            return false;
+        }
+        for (int type : expected.toList()) {
+            String name = FclLexer.VOCABULARY.getSymbolicName(type);
+            if (name != null && name.startsWith("END_")) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The last token on the default channel before {@code index}, when it ends a line before the one
+     * {@code offending} is on: the place where a missing ';' belongs. Null otherwise.
+     */
+    private Token lineEndBefore(int index, Token offending) {
+        if (index <= 0 || index > tokens.size()) {
+            return null;
+        }
+        for (int i = index - 1; i >= 0; i--) {
+            Token t = tokens.get(i);
+            if (t.getChannel() == Token.DEFAULT_CHANNEL) {
+                boolean earlierLine = offending.getType() == Token.EOF || t.getLine() < offending.getLine();
+                return earlierLine && t.getText() != null && t.getText().indexOf('\n') < 0 ? t : null;
+            }
+        }
+        return null;
     }
 
     /**

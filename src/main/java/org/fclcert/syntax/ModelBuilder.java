@@ -499,7 +499,9 @@ final class ModelBuilder {
 
     private Literal literal(LiteralContext ctx) {
         Token t = ctx.start;
-        return new Literal(NumberSyntax.value(t.getType(), t.getText()), NumberSyntax.integral(t.getType()), at(t));
+        double value = NumberSyntax.value(t.getType(), t.getText());
+        return new Literal(value, NumberSyntax.integral(t.getType()), at(t),
+                NumberSyntax.wideInteger(t.getType(), t.getText(), value));
     }
 
     private static String name(NameContext ctx) {

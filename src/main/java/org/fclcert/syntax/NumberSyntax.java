@@ -1,5 +1,6 @@
 package org.fclcert.syntax;
 
+import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.util.Optional;
 
@@ -111,6 +112,29 @@ final class NumberSyntax {
     /** True when the literal is an integer literal (decimal or based), false for a real literal. */
     static boolean integral(int tokenType) {
         return tokenType == FclLexer.INTEGER || tokenType == FclLexer.BASED_INTEGER;
+    }
+
+    /**
+     * The exact value of an integer token whose double is not exact (only possible beyond 2^53, so
+     * only for long digit strings), else null: a double rounds 9223372036854775807 to 2^63.
+     */
+    static BigInteger wideInteger(int tokenType, String text, double value) {
+        if (!integral(tokenType) || text.length() < 16 || !Double.isFinite(value)) {
+            return null;
+        }
+        String clean = text.replace("_", "");
+        try {
+            BigInteger exact;
+            if (tokenType == FclLexer.BASED_INTEGER) {
+                int hash = clean.indexOf('#');
+                exact = new BigInteger(clean.substring(hash + 1), Integer.parseInt(clean.substring(0, hash)));
+            } else {
+                exact = new BigInteger(clean.startsWith("+") ? clean.substring(1) : clean);
+            }
+            return new BigDecimal(value).toBigIntegerExact().equals(exact) ? null : exact;
+        } catch (NumberFormatException | ArithmeticException e) {
+            return null;
+        }
     }
 
     /** The value of a numeric token; NaN if it cannot be computed (already reported as FCL-S004). */

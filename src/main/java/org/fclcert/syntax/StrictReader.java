@@ -55,8 +55,9 @@ public final class StrictReader implements FclReader {
         }
         ReaderDiagnostics diagnostics = new ReaderDiagnostics(sourceName);
         try {
-            Optional<Program> program = readProgram(sourceName, text, diagnostics, options);
-            return new ReadResult(diagnostics.hasErrors() ? Optional.empty() : program, diagnostics.finish());
+            Outcome outcome = readProgram(sourceName, text, diagnostics, options);
+            return new ReadResult(diagnostics.hasErrors() ? Optional.empty() : outcome.program(), diagnostics.finish(),
+                    outcome.repaired());
         } catch (RuntimeException | StackOverflowError e) {
             // A bug in fclcert, not in the program: still a diagnostic, never a stack trace.
             List<Diagnostic> list = List.of(Diagnostic.error(SourceLocation.of(sourceName, 1, 1),
@@ -66,7 +67,12 @@ public final class StrictReader implements FclReader {
         }
     }
 
-    private static Optional<Program> readProgram(String sourceName, String text, ReaderDiagnostics diagnostics,
+    /** The program read, and after syntax errors the program of the repaired text ({@link SyntaxRepair}). */
+    private record Outcome(Optional<Program> program, Optional<Program> repaired) {
+        static final Outcome NONE = new Outcome(Optional.empty(), Optional.empty());
+    }
+
+    private static Outcome readProgram(String sourceName, String text, ReaderDiagnostics diagnostics,
             ReaderOptions options) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
@@ -84,7 +90,7 @@ public final class StrictReader implements FclReader {
         }
         TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics);
         if (scan.tooDeep() || diagnostics.tooMany()) {
-            return Optional.empty();    // never hand the recursive parser a nesting it may not survive
+            return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
         if (scan.maxDepth() <= SHALLOW_NESTING) {
             return parseAndBuild(sourceName, scan, diagnostics, options);
@@ -92,28 +98,29 @@ public final class StrictReader implements FclReader {
         return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options));
     }
 
-    private static Optional<Program> parseAndBuild(String sourceName, TokenPreScan.Result scan,
+    private static Outcome parseAndBuild(String sourceName, TokenPreScan.Result scan,
             ReaderDiagnostics diagnostics, ReaderOptions options) {
         ReservedNames reservedNames = new ReservedNames();
         ModelBuilder builder = new ModelBuilder(sourceName, diagnostics, options);
         Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder);
         reservedNames.report(diagnostics);
         if (parsed.tree() == null) {
-            return Optional.empty();    // stopped after too many errors
+            return Outcome.NONE;    // stopped after too many errors
         }
         if (!parsed.complete()) {
-            return Optional.empty();    // the builder needs a tree without gaps
+            // the builder needs a tree without gaps: the semantic checks get the repaired text's, if any
+            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, scan.tokens(), options));
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());
-        return diagnostics.hasErrors() ? Optional.empty() : Optional.of(program);
+        return new Outcome(diagnostics.hasErrors() ? Optional.empty() : Optional.of(program), Optional.empty());
     }
 
     private record Parsed(FclParser.ProgramContext tree, boolean complete) {
     }
 
     /** Runs the task on a fresh thread with a large stack and returns its result on this thread. */
-    private static Optional<Program> onDeepStack(java.util.function.Supplier<Optional<Program>> task) {
+    private static <T> T onDeepStack(java.util.function.Supplier<T> task) {
         Object[] outcome = new Object[1];
         Thread worker = new Thread(null, () -> {
             try {
@@ -142,8 +149,8 @@ public final class StrictReader implements FclReader {
             throw e;   // a StackOverflowError becomes FCL-S999 in read(); an OutOfMemoryError stays one
         }
         @SuppressWarnings("unchecked")
-        Optional<Program> program = (Optional<Program>) outcome[0];
-        return program;
+        T result = (T) outcome[0];
+        return result;
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */

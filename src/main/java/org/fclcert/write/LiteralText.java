@@ -23,6 +23,9 @@ public final class LiteralText {
         if (!Double.isFinite(v)) {
             throw new IllegalArgumentException("the value " + v + " has no FCL literal spelling");
         }
+        if (literal.wideInteger() != null) {
+            return literal.wideInteger().toString();   // exactly as written, not the rounded double
+        }
         return literal.integral() && v == Math.rint(v) ? integer(v) : real(v);
     }
 

@@ -47,6 +47,19 @@ public final class StandardConversion {
      */
     public record Options(int approximatePoints) {
         public static final Options DEFAULT = new Options(0);
+        /**
+         * Most points a curve is approximated by (10 000): every term gets that many points and a
+         * bound of its error, so 10^6 took minutes and then the heap; a finer approximation adds nothing
+         * an implementation could tell apart.
+         */
+        public static final int MAX_APPROXIMATE_POINTS = 10_000;
+
+        public Options {
+            if (approximatePoints != 0 && (approximatePoints < 2 || approximatePoints > MAX_APPROXIMATE_POINTS)) {
+                throw new IllegalArgumentException("approximatePoints must be 0 or 2.." + MAX_APPROXIMATE_POINTS
+                        + ", got " + approximatePoints);
+            }
+        }
     }
 
     /** How a construct converted. */

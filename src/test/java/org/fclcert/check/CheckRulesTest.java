@@ -84,8 +84,64 @@ class CheckRulesTest {
     void anUndefinedVariableIsReportedOnceNotAlsoAsAnUndefinedTerm() {
         List<Diagnostic> found = check(withRule("RULE 3 : IF tmp IS warm THEN valve IS closed;"));
         assertEquals(1, found.size(), found::toString);
-        assertEquals("tmp IS warm: 'tmp' is not a declared variable of function block 't' (its variables: temp, valve);"
-                + " declare it in VAR_INPUT (5.2.1)", found.get(0).message());
+        assertEquals("tmp IS warm: 'tmp' is not a declared variable of function block 't'; did you mean 'temp'?"
+                + " (its variables: temp, valve); or declare it in VAR_INPUT (5.2.1)", found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltTermGetsADidYouMeanAndTheTermItMeantIsNotReportedUnused() {
+        // 'cold' is used only through the typo: W001 "cold is never used" would be a knock-on of it
+        String text = BASE.replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C002@21"), codes(text), found::toString);
+        assertEquals("temp IS clod: 'clod' is not a term of input 'temp'; did you mean 'cold'? (its terms: cold, hot)",
+                found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltVariableGetsADidYouMeanAndItsTermsAreNotReportedUnused() {
+        String text = BASE.replace("IF temp IS cold THEN", "IF tmep IS cold THEN");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C001@21"), codes(text), found::toString);
+        assertTrue(found.get(0).message().contains("did you mean 'temp'?"), found.get(0).message());
+    }
+
+    @Test
+    void aMisspeltOutputIsOneErrorNotAlsoANeverConcludedOutput() {
+        String text = BASE.replace("THEN valve IS open", "THEN vlave IS open")
+                .replace("THEN valve IS closed", "THEN vlave IS closed");
+        List<Diagnostic> found = check(text);
+        assertEquals(List.of("FCL-C001@21", "FCL-C001@22"), codes(text), found::toString);
+        assertTrue(found.get(0).message().contains("did you mean 'valve'?"), found.get(0).message());
+    }
+
+    @Test
+    void aNameFarFromEveryTermGetsNoGuess() {
+        List<Diagnostic> found = check(withRule("RULE 3 : IF temp IS lukewarm THEN valve IS open;"));
+        assertEquals(1, found.size(), found::toString);
+        assertEquals("temp IS lukewarm: 'lukewarm' is not a term of input 'temp' (its terms: cold, hot)",
+                found.get(0).message());
+    }
+
+    @Test
+    void aMissingSemicolonDoesNotHideTheSemanticErrorsAfterIt() {
+        String text = BASE.replace("TERM hot := (3, 0) (27, 1);", "TERM hot := (3, 0) (27, 1)")
+                .replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<Diagnostic> found = check(text);
+        // the syntax error at the end of line 10, then the typo of line 21 that the checks still find
+        assertEquals(List.of("FCL-S014@10", "FCL-C002@21"), codes(text), found::toString);
+        assertEquals(31, found.get(0).location().column());
+        assertTrue(found.get(1).message().contains("did you mean 'cold'?"), found.get(1).message());
+    }
+
+    @Test
+    void aSyntaxErrorNoOneTokenRepairMendsGivesNoSemanticGuesses() {
+        // a TERM with no membership function at all: its repair would be a guess, so no checks run
+        String text = BASE.replace("TERM hot := (3, 0) (27, 1);", "TERM hot := ;")
+                .replace("IF temp IS cold THEN", "IF temp IS clod THEN");
+        List<String> found = codes(text);
+        assertEquals(1, found.size(), found::toString);
+        assertTrue(found.get(0).startsWith("FCL-S"), found::toString);
     }
 
     @Test
@@ -174,6 +230,36 @@ class CheckRulesTest {
         assertEquals(List.of("FCL-C030@4", "FCL-C030@5"), codes(bad));
         assertEquals("initial value 1.5 of input 'a' is not a whole number, but INT holds only integers (5.2.1)",
                 check(bad).get(0).message());
+    }
+
+    /*
+     * Issue 18: the 64-bit bounds compared exactly. As doubles, 9223372036854775808 (2^63) equals
+     * Long.MAX_VALUE and 18446744073709551616 (2^64) equals ULINT's largest value 2^64 - 1.
+     */
+    @Test
+    void sixtyFourBitBoundsAreComparedExactly() {
+        String ok = BASE.replace("    temp : REAL;\n", "    temp : REAL;\n    a : LINT := 9223372036854775807;\n"
+                + "    b : LINT := -9223372036854775808;\n    c : ULINT := 18446744073709551615;\n");
+        assertEquals(List.of(), check(ok));
+        String bad = BASE.replace("    temp : REAL;\n", "    temp : REAL;\n    a : LINT := 9223372036854775808;\n"
+                + "    b : ULINT := 18446744073709551616;\n    c : LINT := -9223372036854775809;\n");
+        assertEquals(List.of("FCL-C030@4", "FCL-C030@5", "FCL-C030@6"), codes(bad));
+        assertEquals("initial value 9223372036854775808 of input 'a' is outside the range of LINT"
+                + " (-9223372036854775808 .. 9223372036854775807) (5.2.1)", check(bad).get(0).message());
+        assertEquals("initial value 18446744073709551616 of input 'b' is outside the range of ULINT"
+                + " (0 .. 18446744073709551615) (5.2.1)", check(bad).get(1).message());
+    }
+
+    @Test
+    void functionBlockNamesDifferingOnlyInCaseAreFclC032() {
+        String two = BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB")
+                + BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK FUZZY_FB");
+        assertEquals(List.of("FCL-C032@25"), codes(two));
+        assertEquals("function block 'FUZZY_FB' has the same name as the function block 'Fuzzy_FB' at line 1"
+                + " (names are not case-sensitive); each function block needs a unique name", check(two).get(0).message());
+        String distinct = BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB")
+                + BASE.replace("FUNCTION_BLOCK t", "FUNCTION_BLOCK Fuzzy_FB2");
+        assertEquals(List.of(), check(distinct));
     }
 
     @Test

@@ -1,6 +1,7 @@
 package org.fclcert.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
@@ -93,7 +94,40 @@ class CertifyCommandTest {
                         + CORPUS + " --case B-FB-002`"));
         assertEquals(5, Files.readAllLines(dir.resolve("results.jsonl")).size(), "a header and four cases");
         assertTrue(out.toString().contains("fake 1.0: 4 cases, 2 passed, 1 failed, 1 errored, 0 skipped"), out::toString);
-        assertTrue(err.toString().contains("ERRORED B-FB-002: step 1 of 2: the implementation crashed"), err::toString);
+        String md = Files.readString(dir.resolve("report.md"));
+        assertTrue(md.contains("\n  - step 1, inputs: a = 2.0, b = 3.0\n"), md);
+        assertTrue(md.contains("\n  - its last stderr line: `fatal: fifth evaluation, giving up`\n"), md);
+        assertTrue(md.contains(" --case B-FB-002` (transcript: `requests/B-FB-002.requests.jsonl`)"), md);
+        String stderr = err.toString();
+        assertTrue(stderr.contains("ERRORED B-FB-002 (Process-path case 2"), stderr);
+        assertTrue(stderr.contains(": step 1 of 2: the implementation crashed"), stderr);
+        assertTrue(stderr.contains("\n  step 1, inputs: a = 2.0, b = 3.0\n"), stderr);
+        assertTrue(stderr.contains("\n  its stderr: fatal: fifth evaluation, giving up\n"), stderr);
+        assertTrue(stderr.contains("\n  reproduce: ./fclcert certify --iut 'process:python3 "
+                + "src/test/resources/iut/crash_on_fifth_eval.py' --corpus " + CORPUS + " --case B-FB-002\n"), stderr);
+        Path transcript = dir.resolve("requests").resolve("B-FB-002.requests.jsonl");
+        assertTrue(stderr.contains("\n  transcript: " + transcript + "\n"), stderr);
+        assertFalse(Files.exists(dir.resolve("requests").resolve("B-FB-001.requests.jsonl")), "only cases not passed");
+        List<String> requests = Files.readAllLines(transcript);
+        assertEquals("{\"op\":\"hello\",\"id\":1}", requests.get(0));
+        assertTrue(requests.get(1).startsWith("{\"op\":\"load\",\"id\":2,\"fcl\":\"") && requests.get(1).contains("FUNCTION_BLOCK adder"), requests.get(1));
+        assertTrue(requests.get(2).startsWith("{\"op\":\"eval\",\"id\":3,"), requests.get(2));
+        assertTrue(requests.get(2).contains("\"inputs\":{\"a\":2.0,\"b\":3.0}"), requests.get(2));
+        assertEquals("{\"op\":\"bye\",\"id\":" + requests.size() + "}", requests.get(requests.size() - 1));
+    }
+
+    @Test
+    void aTranscriptPipedIntoTheImplementationReplaysTheCase() throws Exception {
+        // the fake answers sum = a + b, so the transcript of the failing negative case replays its wrong accept
+        assertEquals(0, certify("process:python3 src/test/resources/iut/well_behaved.py"));
+        Path transcript = dir.resolve("requests").resolve("B-FB-901.requests.jsonl");
+        Process p = new ProcessBuilder("python3", "src/test/resources/iut/well_behaved.py")
+                .redirectInput(transcript.toFile()).start();
+        List<String> replies = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).lines().toList();
+        assertEquals(0, p.waitFor());
+        assertEquals(Files.readAllLines(transcript).size(), replies.size(), "one reply per request: " + replies);
+        assertTrue(replies.get(1).contains("\"ok\": true") || replies.get(1).contains("\"ok\":true"),
+                "the program the standard rejects is accepted again: " + replies.get(1));
     }
 
     @Test

@@ -134,6 +134,34 @@ class CheckCommandTest {
         assertEquals("fclcert: cannot read " + dir + ": it is a directory", r.errLines().get(0));
     }
 
+    /* Issue 18 item 12: /dev/zero used 5.5 GB then exit 3; a FIFO hung forever. */
+    @Test
+    void onlyRegularFilesAreRead() throws Exception {
+        Cli zero = Cli.run("check", "/dev/zero");
+        assertEquals(2, zero.exitCode());
+        assertEquals("fclcert: cannot read /dev/zero: not a regular file (a device, pipe or socket);"
+                + " fclcert reads only files", zero.errLines().get(0));
+        Path fifo = dir.resolve("pipe.fcl");
+        org.junit.jupiter.api.Assumptions.assumeTrue(
+                new ProcessBuilder("mkfifo", fifo.toString()).start().waitFor() == 0, "mkfifo is not available");
+        Cli pipe = Cli.run("check", fifo.toString());   // would block in open() if it were opened
+        assertEquals(2, pipe.exitCode());
+        assertTrue(pipe.errLines().get(0).endsWith(": not a regular file (a device, pipe or socket); fclcert reads only files"),
+                pipe.err());
+    }
+
+    @Test
+    void aFileOverTheSizeLimitIsRefusedUnread() throws Exception {
+        Path big = dir.resolve("big.fcl");
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(big.toFile(), "rw")) {
+            f.setLength(org.fclcert.model.Limits.MAX_SOURCE_BYTES + 1);   // sparse: no disk, no memory
+        }
+        Cli r = Cli.run("check", big.toString());
+        assertEquals(2, r.exitCode());
+        assertEquals("fclcert: cannot read " + big + ": larger than fclcert's limit of 128 MiB"
+                + " (org.fclcert.model.Limits.MAX_SOURCE_BYTES)", r.errLines().get(0));
+    }
+
     @Test
     void aByteOrderMarkIsNotPartOfTheProgram() {
         Path file = Cli.write(dir, "bom.fcl", "\uFEFF" + UNDEFINED_TERM);
@@ -189,5 +217,20 @@ class CheckCommandTest {
         List<String> out = new java.util.ArrayList<>();
         it.forEachRemaining(out::add);
         return out;
+    }
+
+    @Test
+    void aLibraryFileReadStrictlySaysWhichLibraryItLooksLikeAndWhatToTry() {
+        Cli r = Cli.run("check", "examples/jfuzzylogic/fan.fcl");
+        assertEquals(1, r.exitCode());
+        List<String> hints = r.errLines().stream().filter(l -> l.contains("this looks like")).toList();
+        assertEquals(1, hints.size(), r.err());
+        assertTrue(hints.get(0).startsWith("fclcert: examples/jfuzzylogic/fan.fcl: this looks like jFuzzyLogic ("),
+                hints.get(0));
+        assertTrue(hints.get(0).endsWith("): try --dialect auto, or 'fclcert convert examples/jfuzzylogic/fan.fcl'"
+                + " to turn it into standard FCL"), hints.get(0));
+        // a standard program with a syntax error gets no such guess
+        Cli standard = Cli.run("check", "examples/broken.fcl");
+        assertTrue(standard.errLines().stream().noneMatch(l -> l.contains("looks like")), standard.err());
     }
 }

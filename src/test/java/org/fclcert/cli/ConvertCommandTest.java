@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -71,6 +72,11 @@ class ConvertCommandTest {
 
         Cli usage = Cli.run("convert", "--approximate-points", "1", "examples/jfuzzylogic/tipper.fcl");
         assertEquals(2, usage.exitCode());
+        // issue 18 item 12: 1000000 took 117 s, then exhausted the heap
+        Cli huge = Cli.run("convert", "--approximate-points", "1000000", "examples/jfuzzylogic/tipper.fcl");
+        assertEquals(2, huge.exitCode());
+        assertEquals(List.of("fclcert: --approximate-points must be at most 10000 (got 1000000)"), huge.errLines());
+        assertEquals("", huge.out());
         assertTrue(Files.exists(Path.of("examples/jfuzzylogic/tipper.fcl")));
     }
 

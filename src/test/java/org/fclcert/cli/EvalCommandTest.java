@@ -138,7 +138,12 @@ class EvalCommandTest {
         Cli unknown = Cli.run("eval", valve, "--in", "temp=5", "--in", "presure=60");
         assertEquals(1, unknown.exitCode());
         assertEquals(List.of("fclcert: FCL-V001: --in presure=60: function block 'Fuzzy_FB' has no variable "
-                + "'presure'"), unknown.errLines());
+                + "'presure'; did you mean 'pressure'? its inputs: temp, pressure"), unknown.errLines());
+        Cli far = Cli.run("eval", valve, "--in", "temp=5", "--in", "xyz=60");
+        assertEquals(1, far.exitCode());
+        assertEquals(List.of("fclcert: FCL-V001: --in xyz=60: function block 'Fuzzy_FB' has no variable "
+                + "'xyz'; its inputs: temp, pressure"), far.errLines().subList(far.errLines().size() - 1,
+                far.errLines().size()));
         Cli missing = Cli.run("eval", valve, "--in", "temp=5");
         assertEquals(1, missing.exitCode());
         assertTrue(missing.err().contains("input 'pressure' has no value"), missing.err());
@@ -154,7 +159,42 @@ class EvalCommandTest {
         Path rows = Cli.write(dir, "bad.csv", "temp,pressure\n5,60\n5\n");
         Cli csv = Cli.run("eval", valve, "--csv", rows.toString());
         assertEquals(1, csv.exitCode());
-        assertTrue(csv.err().contains("bad.csv:3: 1 cells where the header has 2"), csv.err());
+        assertTrue(csv.err().contains("bad.csv:3: 1 cell where the header has 2"), csv.err());
+        // a header typo is the header's mistake: line 1, before any row is evaluated
+        Path typo = Cli.write(dir, "typo.csv", "temp,presure\n5,60\n");
+        Cli header = Cli.run("eval", valve, "--csv", typo.toString());
+        assertEquals(1, header.exitCode());
+        assertEquals(List.of("fclcert: FCL-V001: " + typo + ":1: column 'presure': function block 'Fuzzy_FB' has no"
+                + " variable 'presure'; did you mean 'pressure'? its inputs: temp, pressure"), header.errLines());
+        Path semi = Cli.write(dir, "semi.csv", "temp;pressure\n5;60\n");
+        Cli semicolons = Cli.run("eval", valve, "--csv", semi.toString());
+        assertEquals(1, semicolons.exitCode());
+        assertEquals(List.of("fclcert: " + semi + ":1: the header is separated by semicolons; eval --csv reads"
+                + " comma-separated values (e.g. temp,pressure)"), semicolons.errLines());
+    }
+
+    /* Issue 18 item 13: Java's number spellings are not numbers to a user (0x1p2 is 4.0 to parseDouble). */
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.ValueSource(strings = {"0x1p2", "5d", "5f", "5D", "0X10", "1_0"})
+    void javaNumberSpellingsAreRejected(String spelling) {
+        Cli in = Cli.run("eval", valve(), "--in", "temp=" + spelling, "--in", "pressure=60");
+        assertEquals(1, in.exitCode());
+        assertEquals(List.of("fclcert: --in temp=" + spelling + ": '" + spelling + "' is not a number: write a decimal"
+                + " number such as 4, -2.5 or 1.5E3"), in.errLines());
+        Path rows = Cli.write(dir, "java.csv", "temp,pressure\n5,60\n" + spelling + ",60\n");
+        Cli csv = Cli.run("eval", valve(), "--csv", rows.toString());
+        assertEquals(1, csv.exitCode());
+        assertTrue(csv.err().contains("'" + spelling + "' is not a number"), csv.err());
+        assertEquals("", csv.out());
+    }
+
+    @Test
+    void decimalSpellingsAreNumbers() {
+        for (String spelling : List.of("5", "+5", "5.", ".5E1", "5.0e0", "50E-1")) {
+            Cli r = Cli.run("eval", valve(), "--in", "temp=" + spelling, "--in", "pressure=60");
+            assertEquals(0, r.exitCode(), spelling + ": " + r.err());
+            assertEquals(Cli.run("eval", valve(), "--in", "temp=5", "--in", "pressure=60").out(), r.out(), spelling);
+        }
     }
 
     /* The valve with an undefined term (line 29, column 54, see CheckCommandTest) is not evaluated. */

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.fclcert.model.Toolkit;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -31,10 +32,20 @@ class MainTest {
     }
 
     @Test
-    void noCommandPrintsUsage() {
+    void noCommandIsAUsageErrorThatPrintsTheUsage() {
         Cli r = Cli.run();
-        assertEquals(0, r.exitCode());
-        assertTrue(r.out().startsWith("Usage: fclcert "), r.out());
+        assertEquals(2, r.exitCode());
+        assertEquals("", r.out());
+        assertTrue(r.err().startsWith("Usage: fclcert "), r.err());
+    }
+
+    @Test
+    void anInvalidOptionValueIsOneLineAndAHintNotTheWholeHelp() {
+        Cli r = Cli.run("check", "--dialect", "foo", "x.fcl");
+        assertEquals(2, r.exitCode());
+        assertEquals(List.of("Invalid value for option '--dialect': expected one of [strict, ffll, jfuzzylogic,"
+                + " fuzzylite, auto] (case-insensitive) but was 'foo'",
+                "Try 'fclcert check --help' for more information."), r.err().lines().toList());
     }
 
     @Test

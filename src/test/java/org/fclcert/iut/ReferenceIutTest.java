@@ -46,9 +46,9 @@ class ReferenceIutTest {
             LoadOutcome.Rejected rejected = assertInstanceOf(LoadOutcome.Rejected.class, outcome);
             assertEquals(OptionalInt.of(30), rejected.line());
             assertTrue(rejected.message().startsWith("FCL-C002"), rejected.message());
-            // a syntax error: the missing ';' after the DEFAULT line (22) shows on the next token, line 23
+            // a syntax error: the missing ';' is reported on the DEFAULT line (22) that lacks it
             LoadOutcome syntax = iut.load(VALVE.replace("DEFAULT     := 0;", "DEFAULT     := 0"));
-            assertEquals(OptionalInt.of(23), assertInstanceOf(LoadOutcome.Rejected.class, syntax).line());
+            assertEquals(OptionalInt.of(22), assertInstanceOf(LoadOutcome.Rejected.class, syntax).line());
         }
     }
 

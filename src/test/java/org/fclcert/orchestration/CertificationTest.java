@@ -30,6 +30,12 @@ class CertificationTest {
         assertEquals("fuzzylite-6.0", Certification.defaultDirectoryName("process:fl.sh", "fuzzylite 6.0"));
         assertEquals("my-iut", Certification.defaultDirectoryName("process:x", "../My IUT!/"));
         assertEquals("iut", Certification.defaultDirectoryName("process:x", "///"));
+        String longName = "a".repeat(63) + " " + "b".repeat(236);   // 300 characters: above NAME_MAX
+        assertEquals("a".repeat(63), Certification.defaultDirectoryName("process:x", longName),
+                "cut to 64 characters, a trailing '-' dropped");
+        assertEquals(Path.of("fclcert-reports", "reference"), Certification.DEFAULT_REPORTS_ROOT
+                .resolve(Certification.defaultDirectoryName("process:x", "Reference")),
+                "an implementation naming itself reference lands outside the committed reports/");
     }
 
     @Test
@@ -40,7 +46,7 @@ class CertificationTest {
         assertEquals("bundled", r.corpusName());
         assertEquals(CaseSelection.all(), r.selection());
         assertNull(r.outDir());
-        assertEquals(Path.of("reports"), r.reportsRoot());
+        assertEquals(Path.of("fclcert-reports"), r.reportsRoot(), "never the committed reports/");
         assertNull(r.probe(), "no Table 11 probes unless asked");
         assertThrows(NullPointerException.class, () -> Certification.Request.builder(null, corpus).build());
         assertThrows(IllegalArgumentException.class,

@@ -40,10 +40,12 @@ class RenderersTest {
         assertTrue(md.contains("- **Claimed but not realised**: E-NOT (not realised)"), md);
         assertTrue(md.contains("| E-COG-INT-001 | interpretation:3 | failed |"), md);
         assertTrue(md.contains("### E-NOT: NOT operator, 1 - argument (also IS NOT)\n"), md);
-        assertTrue(md.contains("- **E-NOT-002** errored: step 1 of 1: y = 1.0 where 2.0 is expected\n"
+        assertTrue(md.contains("- **E-NOT-002** (title of E-NOT-002) errored: step 1 of 1: y = 1.0 where 2.0 is expected\n"
+                + "  - step 1, inputs: x = 0.5\n"
                 + "  - expected: y = 2.0; actual: y = 1.0\n  - also evidence for: E-PARENS\n"
+                + "  - its last stderr line: `Segmentation fault`\n"
                 + "  - reproduce: `./fclcert certify --iut 'process:python3 fake.py' --corpus "
-                + "src/test/resources/corpus-mini --case E-NOT-002`\n"), md);
+                + "src/test/resources/corpus-mini --case E-NOT-002` (transcript: `requests/E-NOT-002.requests.jsonl`)\n"), md);
         assertTrue(md.contains("- **Incomplete run**"), md);
         assertFalse(md.contains("B-COGS-001**"), "passed cases are not listed as failures");
         assertFalse(md.contains("## Notes"), "no case has a note");
@@ -58,7 +60,10 @@ class RenderersTest {
         assertTrue(html.contains("<style>") && html.contains("<script>"));
         assertBalanced(html);
         assertEquals(3, count(html, "<h2>Table "), "the three tables");
-        assertEquals(REPORT.cases().size(), count(html, "<details class=\"case\""));
+        assertEquals(REPORT.cases().size() - 1, count(html, "<details class=\"case\""));
+        assertEquals(1, count(html, "<details open class=\"case\""), "the first failure only is open");
+        assertTrue(html.indexOf("<details open class=\"case\" id=\"case-B-COGS-002\"") > 0, "B-COGS-002 fails first");
+        assertTrue(html.indexOf("<h2>Failures by cause</h2>") < html.indexOf("<h2>Table 8"), "failures lead");
         assertTrue(html.contains("data-status=\"errored\" data-level=\"extension\""));
         assertTrue(html.contains("<span class=\"st partial\">partial</span>"));
         // program text is escaped and numbered
@@ -87,11 +92,20 @@ class RenderersTest {
         NodeList testcases = suite.getElementsByTagName("testcase");
         assertEquals(9, testcases.getLength());
         Element first = (Element) testcases.item(0);
-        assertEquals("fclcert.basic.B-COGS", first.getAttribute("classname"));
+        assertEquals("fclcert.B-COGS", first.getAttribute("classname"));
         assertEquals(0, first.getChildNodes().getLength(), "a passed case has no child element");
-        assertEquals(3, suite.getElementsByTagName("failure").getLength());
+        // B-COGS-002 and E-NOT-001 (E-NOT is claimed) fail; E-COG-INT-001 failed too, but E-COG is not claimed
+        assertEquals(2, suite.getElementsByTagName("failure").getLength());
+        assertEquals("2", suite.getAttribute("failures"));
         assertEquals(2, suite.getElementsByTagName("error").getLength());
-        Element skipped = (Element) suite.getElementsByTagName("skipped").item(0);
+        assertEquals("2", suite.getAttribute("skipped"));
+        assertEquals(new JunitReport.Counts(9, 2, 2, 2), JunitReport.counts(r));
+        assertEquals("Tests run: 9, Failures: 2, Errors: 2, Skipped: 2", JunitReport.counts(r).surefireLine());
+        Element unclaimed = (Element) suite.getElementsByTagName("skipped").item(0);
+        assertEquals("fclcert.E-COG", ((Element) unclaimed.getParentNode()).getAttribute("classname"));
+        assertTrue(unclaimed.getAttribute("message").startsWith("not claimed: Fake <FLC> does not claim E-COG (failed: "),
+                unclaimed.getAttribute("message"));
+        Element skipped = (Element) suite.getElementsByTagName("skipped").item(1);
         assertEquals("not run: the run ended before this case", skipped.getAttribute("message"));
         Element last = (Element) testcases.item(8);
         assertTrue(last.getElementsByTagName("error").item(0).getTextContent().contains("\uFFFD[31mboom"));

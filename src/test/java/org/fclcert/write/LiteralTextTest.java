@@ -31,6 +31,36 @@ class LiteralTextTest {
         assertEquals("100000000000000000000", integer(1e20));
     }
 
+    /*
+     * Issue 18: integer literals beyond 2^53 keep their digits through read and write. As doubles,
+     * 9223372036854775807 is 2^63 = ...808 and 9007199254740993 is 2^53 = ...992.
+     */
+    @Test
+    void wideIntegerLiteralsAreWrittenAsRead() {
+        String text = """
+                FUNCTION_BLOCK w
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                VAR a : LINT := 9223372036854775807; b : LINT := 9007199254740993; c : ULINT := 16#FFFF_FFFF_FFFF_FFFF;
+                  d : LINT := -9007199254740993; END_VAR
+                FUZZIFY x TERM t := (0, 0) (1, 1); END_FUZZIFY
+                DEFUZZIFY y TERM one := 1; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r AND : MIN; ACCU : MAX; RULE 1 : IF x IS t THEN y IS one; END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        org.fclcert.syntax.ReadResult read = new org.fclcert.syntax.StrictReader().read("w.fcl", text);
+        String written = new CanonicalWriter().write(read.program().orElseThrow());
+        assertTrue(written.contains(":= 9223372036854775807;"), written);
+        assertTrue(written.contains(":= 9007199254740993;"), written);
+        assertTrue(written.contains(":= 18446744073709551615;"), written);
+        assertTrue(written.contains(":= -9007199254740993;"), written);
+        String again = new CanonicalWriter().write(new org.fclcert.syntax.StrictReader().read("w2.fcl", written)
+                .program().orElseThrow());
+        assertEquals(written, again);
+        // 2^53 + 2 is a double: nothing extra is kept
+        assertEquals("9007199254740994", integer(9007199254740994.0));
+    }
+
     @Test
     void integralFlagOnAFractionFallsBackToReal() {
         assertEquals("2.5", integer(2.5));

@@ -39,6 +39,7 @@ final class FfllModel {
     private final FfllTokens tokens;
     private final List<FeatureUse> features = new ArrayList<>();
     private final List<Diagnostic> diagnostics = new ArrayList<>();
+    private int errors;
 
     FfllModel(FfllTokens tokens) {
         this.tokens = tokens;
@@ -292,7 +293,15 @@ final class FfllModel {
         diagnostics.add(Diagnostic.warning(at, code, message));
     }
 
+    /** Capped like the other readers' errors: one rule of 10^5 misplaced subconditions gave 10^5 FCL-D101. */
     private void error(SourceLocation at, DialectCode code, String message) {
+        if (++errors > DialectParser.MAX_ERRORS) {
+            if (errors == DialectParser.MAX_ERRORS + 1) {
+                diagnostics.add(Diagnostic.error(at, DialectCode.TOO_MANY_ERRORS,
+                        "more than " + DialectParser.MAX_ERRORS + " errors; the rest are not reported"));
+            }
+            return;
+        }
         diagnostics.add(Diagnostic.error(at, code, message));
     }
 }

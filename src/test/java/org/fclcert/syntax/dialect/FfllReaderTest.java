@@ -148,6 +148,21 @@ class FfllReaderTest {
         assertFalse(a.program().isPresent());
     }
 
+    /* Issue 18 item 12: one rule of 10 000 subconditions beyond the one input gave an FCL-D101 each. */
+    @Test
+    void positionErrorsAreCappedPerFile() {
+        String many = "low" + " AND low".repeat(10_000);
+        String text = FfllSamples.text("broken-position.fcl").replace("IF high AND low THEN", "IF " + many + " THEN");
+        Analysis a = Analysis.analyze(new FfllReader(), "many.fcl", text);
+        List<Diagnostic> errors = a.diagnostics().stream().filter(Diagnostic::isError).toList();
+        assertEquals(26, errors.size(), "25 errors and the one that says the rest are not reported");
+        assertEquals(25, errors.stream().filter(d -> d.code().equals("FCL-D101")).count());
+        assertEquals(1, errors.stream().filter(d -> d.code().equals("FCL-S399")).count());
+        assertTrue(errors.get(errors.size() - 1).message().equals("more than 25 errors; the rest are not reported"),
+                errors.toString());
+        assertFalse(a.program().isPresent());
+    }
+
     @Test
     void malformedRangeCommentAndMisspeltKeywordsAreLocatedErrors() {
         Analysis a = analyze("broken-range.fcl");

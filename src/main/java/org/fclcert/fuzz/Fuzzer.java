@@ -1,0 +1,320 @@
+package org.fclcert.fuzz;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Random;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import org.fclcert.check.Analysis;
+import org.fclcert.check.FeatureDetector;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutInfo;
+import org.fclcert.model.Feature;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.write.CanonicalWriter;
+
+/**
+ * Differential testing of an implementation against the reference on generated programs. Program {@code i}
+ * of a run is generated from {@code (seed, i)} alone, and so are its steps, so a seed reproduces a run: the
+ * same programs in the same order, whatever the number of jobs (with several jobs the budget may end the run
+ * at a slightly different program). Each job drives its own session of the implementation. A disagreement
+ * that switching off the feature of a known finding explains is counted as that finding; any other is shrunk
+ * to a minimal case and deduplicated by its isolated feature and kind of deviation.
+ */
+public final class Fuzzer {
+    /**
+     * @param budget       how long to generate programs (shrinking the last findings may take a little longer)
+     * @param maxPrograms  stop after this many programs (0 = no limit)
+     * @param shrinkTime   the longest one finding is shrunk
+     * @param maxShrinks   the most disagreements shrunk in one run; later unexplained ones are only counted
+     * @param maxFindings  stop generating once this many distinct findings are known (0 = no limit)
+     */
+    public record Options(long seed, Duration budget, long maxPrograms, FuzzSettings settings, int jobs,
+            Duration shrinkTime, int maxShrinks, int maxFindings) {
+        public Options {
+            if (jobs < 1) {
+                throw new IllegalArgumentException("jobs must be at least 1");
+            }
+        }
+
+        public static Options of(long seed, Duration budget, FuzzSettings settings, int jobs) {
+            Duration shrink = Duration.ofSeconds(Math.max(15, Math.min(60, budget.toSeconds() / 3)));
+            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0);
+        }
+
+        public Options withMaxPrograms(long n) {
+            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings);
+        }
+
+        public Options withMaxFindings(int n) {
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n);
+        }
+    }
+
+    /** Counters of a run, as shown while it goes and in the summary. */
+    public record Progress(long programs, long vectors, int findings, long disagreements, long elapsedMillis,
+            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts) {
+        public double programsPerSecond() {
+            return elapsedMillis == 0 ? 0 : programs * 1000.0 / elapsedMillis;
+        }
+
+        public double vectorsPerSecond() {
+            return elapsedMillis == 0 ? 0 : vectors * 1000.0 / elapsedMillis;
+        }
+    }
+
+    /** The whole result. */
+    public record Result(IutInfo iut, Options options, Instant started, Progress progress, List<Finding> findings,
+            long unexplained, List<String> generatorBugs, List<String> infrastructureErrors) {
+    }
+
+    private final CanonicalWriter writer = new CanonicalWriter();
+    private final FairnessJudge fairness;
+    private final AtomicLong nextProgram = new AtomicLong();
+    private final AtomicLong programs = new AtomicLong();
+    private final AtomicLong vectors = new AtomicLong();
+    private final AtomicLong disagreements = new AtomicLong();
+    private final AtomicLong unfair = new AtomicLong();
+    private final AtomicLong noSteps = new AtomicLong();
+    private final AtomicLong unexplained = new AtomicLong();
+    private final AtomicLong shrinks = new AtomicLong();
+    private final List<String> generatorBugs = new ArrayList<>();
+    private final List<String> infrastructure = new ArrayList<>();
+    private final Map<String, Finding> findings = new LinkedHashMap<>();
+    private final List<IutSession> sessions = new ArrayList<>();
+    private volatile Instant start;
+
+    public Fuzzer() {
+        this(new ExactFairness());
+    }
+
+    public Fuzzer(FairnessJudge fairness) {
+        this.fairness = fairness;
+    }
+
+    /** Program {@code index} of the run with this seed. */
+    public static long programSeed(long seed, long index) {
+        long z = seed + (index + 1) * 0x9E3779B97F4A7C15L;
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+
+    /**
+     * Runs until the budget or the program count is used up.
+     *
+     * @param progress called about every {@code interval} from the calling thread
+     * @throws IutException of kind INFRA when not even the first session can be opened
+     */
+    public Result run(IutSession.Factory factory, Options options, Duration interval, Consumer<Progress> progress)
+            throws IutException, InterruptedException {
+        start = Instant.now();
+        IutSession first = new IutSession(factory);
+        IutInfo info;
+        try {
+            info = first.iut().hello();
+        } catch (IutException e) {
+            first.close();
+            throw new IutException(IutException.Kind.INFRA, "the implementation did not answer hello: " + e.getMessage(),
+                    e.stderrTail());
+        }
+        sessions.add(first);
+        Instant end = start.plus(options.budget());
+        ProgramGenerator generator = new ProgramGenerator(options.settings());
+        List<Thread> threads = new ArrayList<>();
+        for (int j = 0; j < options.jobs(); j++) {
+            int job = j;
+            Thread t = new Thread(() -> job(job == 0 ? first : null, factory, options, generator, end), "fuzz-" + j);
+            t.setDaemon(true);
+            threads.add(t);
+            t.start();
+        }
+        for (Thread t : threads) {
+            while (t.isAlive()) {
+                t.join(interval.toMillis());
+                if (t.isAlive()) {
+                    progress.accept(progress());
+                }
+            }
+        }
+        synchronized (sessions) {
+            sessions.forEach(IutSession::close);
+        }
+        List<Finding> list;
+        synchronized (findings) {
+            list = new ArrayList<>(findings.values());
+        }
+        list.sort(Comparator.comparingLong(Finding::programIndex));
+        synchronized (generatorBugs) {
+            return new Result(info, options, start, progress(), List.copyOf(list), unexplained.get(),
+                    List.copyOf(generatorBugs), List.copyOf(infrastructure));
+        }
+    }
+
+    public Progress progress() {
+        int n;
+        synchronized (findings) {
+            n = findings.size();
+        }
+        int restarts;
+        synchronized (sessions) {
+            restarts = sessions.stream().mapToInt(IutSession::restarts).sum();
+        }
+        long elapsed = start == null ? 0 : Duration.between(start, Instant.now()).toMillis();
+        return new Progress(programs.get(), vectors.get(), n, disagreements.get(), elapsed, unfair.get(), noSteps.get(),
+                generatorBugs.size(), restarts);
+    }
+
+    private void job(IutSession given, IutSession.Factory factory, Options options, ProgramGenerator generator,
+            Instant end) {
+        IutSession session = given;
+        try {
+            if (session == null) {
+                session = new IutSession(factory);
+                synchronized (sessions) {
+                    sessions.add(session);
+                }
+            }
+            VectorGenerator vectorGenerator = new VectorGenerator(counting());
+            while (Instant.now().isBefore(end)) {
+                long index = nextProgram.getAndIncrement();
+                if (options.maxPrograms() > 0 && index >= options.maxPrograms() || enoughFindings(options)) {
+                    break;
+                }
+                one(session, options, generator, vectorGenerator, index);
+            }
+        } catch (IutException e) {
+            synchronized (generatorBugs) {
+                infrastructure.add("job " + Thread.currentThread().getName() + ": " + e.getMessage());
+            }
+        } catch (RuntimeException e) {
+            synchronized (generatorBugs) {
+                infrastructure.add("job " + Thread.currentThread().getName() + ": internal error: " + e);
+            }
+        }
+    }
+
+    private boolean enoughFindings(Options options) {
+        synchronized (findings) {
+            return options.maxFindings() > 0 && findings.size() >= options.maxFindings();
+        }
+    }
+
+    private FairnessJudge counting() {
+        return (program, before, step) -> {
+            boolean fair = fairness.fair(program, before, step);
+            if (!fair) {
+                unfair.incrementAndGet();
+            }
+            return fair;
+        };
+    }
+
+    private void one(IutSession session, Options options, ProgramGenerator generator, VectorGenerator vg, long index)
+            throws IutException {
+        long seed = programSeed(options.seed(), index);
+        Program generated = generator.generate(seed);
+        String text = writer.write(generated);
+        Analysis analysis = Analysis.analyze(StrictReader.openLevel(), "fuzz.fcl", text);
+        if (analysis.program().isEmpty()) {
+            synchronized (generatorBugs) {
+                generatorBugs.add("program " + index + " (seed " + seed + "): " + analysis.diagnostics().get(0));
+            }
+            return;
+        }
+        Program program = analysis.program().get();
+        ReferenceProgram ref = new ReferenceProgram(program);
+        List<java.util.Map<String, Double>> steps = vg.steps(ref, new Random(seed ^ 0x5DEECE66DL));
+        if (steps.isEmpty()) {
+            noSteps.incrementAndGet();
+            return;
+        }
+        List<ReferenceProgram.Step> expected;
+        try {
+            expected = ref.run(steps);
+        } catch (EvaluationException e) {
+            noSteps.incrementAndGet();
+            return;
+        }
+        Optional<Deviation> d = Trial.run(session, ref, text, expected);
+        programs.incrementAndGet();
+        vectors.addAndGet(d.isEmpty() ? steps.size() : d.get().step() + 1);     // the vectors the IUT evaluated
+        if (d.isEmpty()) {
+            return;
+        }
+        disagreements.incrementAndGet();
+        Shrinker.Case raw = new Shrinker.Case(program, steps);
+        if (known(session, raw, d.get())) {
+            return;
+        }
+        if (shrinks.incrementAndGet() > options.maxShrinks()) {
+            unexplained.incrementAndGet();
+            return;
+        }
+        long foundAfter = Duration.between(start, Instant.now()).toMillis();
+        Instant deadline = Instant.now().plus(options.shrinkTime());
+        Shrinker.Result shrunk = new Shrinker(session, fairness, 4000, deadline).shrink(raw, d.get());
+        Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation());
+        Finding f = new Finding(feature, d.get().kind(), shrunk.minimal(), shrunk.deviation(), d.get(), index, seed,
+                (int) text.lines().count(), shrunk.tried(), 0, foundAfter,
+                Duration.between(start, Instant.now()).toMillis() - foundAfter);
+        synchronized (findings) {
+            Finding before = findings.get(f.key());
+            if (before == null) {
+                findings.put(f.key(), f);
+            } else if (f.programIndex() < before.programIndex()) {
+                findings.put(f.key(), new Finding(f.feature(), f.kind(), f.minimal(), f.deviation(), f.original(),
+                        f.programIndex(), f.programSeed(), f.originalLines(), f.shrinkTrials(), before.duplicates() + 1,
+                        f.foundAfterMillis(), f.shrinkMillis()));
+            } else {
+                findings.put(f.key(), before.withDuplicate());
+            }
+        }
+    }
+
+    /** True when switching off the feature of a finding of the same kind makes the disagreement go away. */
+    private boolean known(IutSession session, Shrinker.Case raw, Deviation d) throws IutException {
+        List<Finding> same;
+        synchronized (findings) {
+            same = findings.values().stream().filter(f -> f.kind() == d.kind()).toList();
+        }
+        if (!Isolation.valueKind(d.kind())) {
+            String signature = Isolation.signature(d);
+            for (Finding f : same) {
+                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)) {
+                    synchronized (findings) {
+                        findings.put(f.key(), findings.get(f.key()).withDuplicate());
+                    }
+                    return true;
+                }
+            }
+        }
+        java.util.Set<Feature> used = new FeatureDetector().detect(raw.program()).features();
+        Shrinker probe = new Shrinker(session, fairness, Integer.MAX_VALUE, Instant.MAX);
+        for (Finding f : same) {
+            if (!used.contains(f.feature())) {
+                continue;
+            }
+            Optional<Program> ablated = Ablation.without(raw.program(), f.feature());
+            if (ablated.isEmpty()) {
+                continue;
+            }
+            Optional<Shrinker.Case> valid = Shrinker.validate(new Shrinker.Case(ablated.get(), raw.steps()));
+            if (valid.isPresent() && probe.test(valid.get(), d.kind()).isEmpty()) {
+                synchronized (findings) {
+                    findings.put(f.key(), findings.get(f.key()).withDuplicate());
+                }
+                return true;
+            }
+        }
+        return false;
+    }
+}

@@ -1,0 +1,97 @@
+package org.fclcert.plot;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import javax.imageio.ImageIO;
+
+/**
+ * Headless Chromium from Debian's package, as a person's browser: renders a file to a PNG of the given
+ * size. Installed by scripts/ensure-chromium; absent, a test skips with the reason, or fails with CI set.
+ */
+final class Chromium {
+    private Chromium() {
+    }
+
+    static Path executable() {
+        for (String candidate : List.of("/usr/bin/chromium", "/usr/bin/chromium-browser")) {
+            if (Files.isExecutable(Path.of(candidate))) {
+                return Path.of(candidate);
+            }
+        }
+        String why = "no /usr/bin/chromium";
+        if (System.getenv("CI") != null) {
+            fail("CI is set but Chromium is missing (scripts/ensure-chromium should have installed it): " + why);
+        }
+        assumeTrue(false, "Chromium is not installed, so the rendering tests are skipped (apt-get install chromium,"
+                + " or run scripts/ensure-chromium; with CI set they fail instead): " + why);
+        throw new IllegalStateException();
+    }
+
+    /** Renders {@code svg} (written to {@code dir}) at width x height CSS pixels, scale 1, and reads the PNG. */
+    static BufferedImage render(Path dir, String name, String svg, int width, int height)
+            throws IOException, InterruptedException {
+        Path chromium = executable();
+        Path file = dir.resolve(name + ".svg");
+        Files.writeString(file, svg, StandardCharsets.UTF_8);
+        Path png = dir.resolve(name + ".png");
+        Path profile = Files.createTempDirectory(dir, "profile");
+        Process p = new ProcessBuilder(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
+                "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--user-data-dir=" + profile, "--hide-scrollbars", "--force-device-scale-factor=1",
+                "--window-size=" + width + "," + height, "--screenshot=" + png, file.toUri().toString())
+                .redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile()).start();
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            fail("Chromium did not finish rendering " + file + " in 120 s");
+        }
+        assertEquals(0, p.exitValue(), () -> "Chromium failed: " + read(dir.resolve(name + ".log")));
+        assertTrue(Files.size(png) > 0, "no screenshot written");
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(width, image.getWidth());
+        assertEquals(height, image.getHeight());
+        return image;
+    }
+
+    private static String read(Path log) {
+        try {
+            return Files.readString(log);
+        } catch (IOException e) {
+            return e.toString();
+        }
+    }
+
+    /** True when some pixel within {@code r} of (x, y) is within {@code tolerance} per channel of rgb. */
+    static boolean colourNear(BufferedImage image, double x, double y, int r, String rgb, int tolerance) {
+        int want = Integer.parseInt(rgb.substring(1), 16);
+        for (int dx = -r; dx <= r; dx++) {
+            for (int dy = -r; dy <= r; dy++) {
+                int px = (int) Math.round(x) + dx;
+                int py = (int) Math.round(y) + dy;
+                if (px >= 0 && py >= 0 && px < image.getWidth() && py < image.getHeight()
+                        && close(image.getRGB(px, py), want, tolerance)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    static boolean close(int a, int b, int tolerance) {
+        for (int shift = 0; shift <= 16; shift += 8) {
+            if (Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff)) > tolerance) {
+                return false;
+            }
+        }
+        return true;
+    }
+}
