@@ -17,7 +17,7 @@ public final class DefuzzifyOnlyOutputs implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (Defuzzification d : block.defuzzifications()) {
             scope.variable(d.variable()).filter(v -> v.kind() != VariableKind.OUTPUT).ifPresent(v ->
                     sink.report(finding(d.location(), "DEFUZZIFY " + d.variable() + ": " + Describe.variable(v)

@@ -17,7 +17,7 @@ public final class FuzzifyOnlyInputs implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (Fuzzification f : block.fuzzifications()) {
             scope.variable(f.variable()).filter(v -> v.kind() != VariableKind.INPUT).ifPresent(v ->
                     sink.report(finding(f.location(), "FUZZIFY " + f.variable() + ": " + Describe.variable(v)

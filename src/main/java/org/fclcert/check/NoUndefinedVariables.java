@@ -26,7 +26,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (Fuzzification f : block.fuzzifications()) {
             need(scope, f.variable(), f.location(), () -> "FUZZIFY " + f.variable(), "VAR_INPUT", sink);
         }

@@ -1,5 +1,6 @@
 package org.fclcert.check;
 
+import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -23,6 +24,24 @@ final class Scope {
     private final Map<String, Fuzzification> fuzzifications = new HashMap<>();
     private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
     private final FunctionBlock block;
+
+    /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
+    private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
+
+    /**
+     * The scope of this block, built once per check run rather than once per rule (a block is immutable,
+     * and so is a scope after construction, so sharing it is invisible).
+     */
+    static Scope of(FunctionBlock block) {
+        WeakReference<Scope> ref = LAST.get();
+        Scope s = ref == null ? null : ref.get();
+        if (s != null && s.block == block) {
+            return s;
+        }
+        s = new Scope(block);
+        LAST.set(new WeakReference<>(s));
+        return s;
+    }
 
     Scope(FunctionBlock block) {
         this.block = block;

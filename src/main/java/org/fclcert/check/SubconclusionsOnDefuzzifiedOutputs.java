@@ -24,7 +24,7 @@ public final class SubconclusionsOnDefuzzifiedOutputs implements FunctionBlockRu
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Subconclusion s : rule.conclusion()) {

@@ -43,7 +43,7 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
     }
 
     private void check(FunctionBlock block, java.util.function.Predicate<Condition> judged, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
+        Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : Conditions.subconditions(rule.condition())) {
