@@ -7,7 +7,7 @@ import org.fclcert.model.Severity;
  * The codes of what a {@link DialectWriter} reports. {@code FCL-X1nn} (errors): the program says something the
  * library's FCL cannot say, so the written text means something else even as fclcert reads that dialect.
  * {@code FCL-X2nn} (warnings): the text means the same as fclcert reads the dialect, but the library itself is
- * known to compute it otherwise (../shared/notes/peers.md); the round trip cannot see these. Entries of the
+ * known to compute it otherwise (docs/peers.md); the round trip cannot see these. Entries of the
  * catalogue ({@code cli.DiagnosticCatalogue}), listed in docs/diagnostics.md.
  */
 public enum WriterCode implements DiagnosticCode {

@@ -50,7 +50,7 @@ class PeerProgramsTest {
 
     @Test
     void jfuzzyliteReadsTheSamePrograms() throws Exception {
-        // CoGS per rule (../shared/notes/peers.md): 69.343 where the standard gives 74.803 at (5, 60)
+        // CoGS per rule (docs/peers.md): 69.343 where the standard gives 74.803 at (5, 60)
         PeerComparisonBenchmark.Side valve = PeerComparisonBenchmark.jfuzzylite(PeerPrograms.valveFuzzylite(),
                 "temp", "pressure");
         assertEquals(69.343, valve.step(new double[] {5, 60}), 1e-3);

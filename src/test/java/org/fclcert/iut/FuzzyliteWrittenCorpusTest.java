@@ -34,7 +34,7 @@ import org.junit.jupiter.api.io.TempDir;
 class FuzzyliteWrittenCorpusTest {
     /**
      * Cases whose vectors make a rule fire with a degree of at most 1e-6, which fuzzylite ignores
-     * (../shared/notes/peers.md) and no writer can say otherwise; they are loaded and counted, not compared.
+     * (docs/peers.md) and no writer can say otherwise; they are loaded and counted, not compared.
      */
     private static final java.util.Set<String> TINY_ACTIVATION = java.util.Set.of("B-DEFAULT-VALUE-003",
             "E-AND-PROD-001");

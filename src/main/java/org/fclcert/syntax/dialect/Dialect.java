@@ -5,7 +5,7 @@ import java.util.Optional;
 
 /**
  * The FCL dialects fclcert reads: the standard itself and the dialects of three libraries in the wild
- * (../shared/notes/peers.md). Every reader produces the same semantic model; a dialect reader records
+ * (docs/peers.md). Every reader produces the same semantic model; a dialect reader records
  * each construct outside the standard as an Open Level feature of the program.
  */
 public enum Dialect {

@@ -18,7 +18,7 @@ import org.fclcert.syntax.StrictReader;
 
 /**
  * The reader of the Free Fuzzy Logic Library's FCL dialect (FFLL; its grammar notes are
- * ../shared/standard/004, its behaviour ../shared/notes/peers.md; docs/dialects.md lists every construct).
+ * the FFLL grammar notes (docs/dialects.md), its behaviour docs/peers.md; docs/dialects.md lists every construct).
  *
  * <p>It is the strict pipeline with three changes: a token filter ({@link FfllTokens}: ACCUM, declarations
  * without ':', RETAIN, RANGE comments, END_FUZZIFY closing DEFUZZIFY), builder options (MoM accepted,

@@ -23,7 +23,7 @@ import org.fclcert.model.Program;
 import org.fclcert.model.Rule;
 import org.junit.jupiter.api.Test;
 
-/** The FFLL reader on the sample programs: every construct of 004 and peers.md, located, with its meaning. */
+/** The FFLL reader on the sample programs: every construct of the FFLL notes and docs/peers.md, located, with its meaning. */
 class FfllReaderTest {
     private static Analysis analyze(String sample) {
         return Analysis.analyze(new FfllReader(), sample, FfllSamples.text(sample));
