@@ -97,11 +97,11 @@ final class ProgressLine implements RunListener {
     private void details(CaseResult r) {
         CaseResult.Step step = r.evidence().step();
         if (step != null && !step.inputs().isEmpty()) {
-            err.println("  step " + step.number() + ", inputs: " + values(step.inputs()));
+            err.println("  step " + step.number() + ", inputs: " + TerminalText.visible(values(step.inputs())));
         }
         r.mismatch().ifPresent(m -> {
-            err.println("  expected: " + describe(m.expected()));
-            err.println("  actual:   " + describe(m.actual()));
+            err.println("  expected: " + TerminalText.visible(describe(m.expected())));
+            err.println("  actual:   " + TerminalText.visible(describe(m.actual())));
         });
         negativeCase(r);
         String stderr = lastStderrLine(r.evidence().error());
@@ -133,7 +133,7 @@ final class ProgressLine implements RunListener {
             int line = Integer.parseInt(match.group(2));
             List<String> lines = program.lines().toList();
             if (line >= 1 && line <= lines.size()) {
-                err.println("  line " + line + ": " + lines.get(line - 1).strip());
+                err.println("  line " + line + ": " + TerminalText.visible(lines.get(line - 1).strip()));
             }
         }
     }
