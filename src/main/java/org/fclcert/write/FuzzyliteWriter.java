@@ -212,11 +212,7 @@ public final class FuzzyliteWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
-                if (actMin && line.group().value() != 1 && cx.pointTerms(s.variable())) {
-                    cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, "fuzzylite multiplies the"
-                            + " degree of rule " + line.rule().name() + " by its weight before ACT MIN (min(w·d, μ));"
-                            + " fclcert weighs the activated set (w·min(d, μ), semantics.md point 3)");
-                }
+                RuleLines.noteWeightBeforeActivation(cx, actMin, line, s, "fuzzylite");
             }
             line.group().weight().ifPresent(w -> r.append(" with ").append(w));
             out.append(r).append('\n');

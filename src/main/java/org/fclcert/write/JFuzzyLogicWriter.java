@@ -223,11 +223,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : ", ").append(cx.variable(s.variable())).append(" IS ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
-                if (actMin && line.group().value() != 1 && cx.pointTerms(s.variable())) {
-                    cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, "jFuzzyLogic multiplies"
-                            + " the degree of rule " + line.rule().name() + " by its weight before ACT MIN"
-                            + " (min(w·d, μ)); fclcert weighs the activated set (w·min(d, μ), semantics.md point 3)");
-                }
+                RuleLines.noteWeightBeforeActivation(cx, actMin, line, s, "jFuzzyLogic");
             }
             line.group().weight().ifPresent(w -> r.append(" WITH ").append(w));
             out.append(r).append(";\n");

@@ -58,4 +58,16 @@ final class RuleLines {
         }
         return lines;
     }
+
+    /**
+     * Both libraries multiply a rule's degree by its weight before ACT MIN (min(w·d, μ)) where the standard
+     * weighs the activated set; the text is the same, the result differs, so the writer names it.
+     */
+    static void noteWeightBeforeActivation(BlockContext cx, boolean actMin, Line line, Subconclusion s, String library) {
+        if (actMin && line.group().value() != 1 && cx.pointTerms(s.variable())) {
+            cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, library + " multiplies the"
+                    + " degree of rule " + line.rule().name() + " by its weight before ACT MIN (min(w·d, μ));"
+                    + " fclcert weighs the activated set (w·min(d, μ), semantics.md point 3)");
+        }
+    }
 }
