@@ -581,6 +581,25 @@ public final class CompiledEvaluator {
         }
     }
 
+    /**
+     * Sets every input, in declaration order ({@link #inputNames()}): {@code values[i]} as
+     * {@link #setInput(int, double)} sets input i. Stops at the first value refused, with its error.
+     */
+    public void setInputs(double... values) throws EvaluationException {
+        if (values.length != inputSlots.length) {
+            throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
+        }
+        final double[] v = this.values;
+        for (int i = 0; i < values.length; i++) {
+            double x = values[i];
+            if (x >= directMin[i] && x <= directMax[i]) {
+                v[inputSlots[i]] = x;
+            } else {
+                setInputChecked(i, x);
+            }
+        }
+    }
+
     private void setInputChecked(int index, double value) throws EvaluationException {
         if (fallback != null) {
             fallback.set(plan.inputNames.get(index), value);

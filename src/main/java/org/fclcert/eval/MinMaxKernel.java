@@ -169,22 +169,39 @@ interface MinMaxKernel {
             if (cogsSlot[o] < 0) {
                 continue;
             }
-            // num = Σ v·μ, den = Σ μ, summed in accumulator order as CompiledEvaluator.defuzzify does
-            c.op(ClassFile.DCONST_0);
-            c.local(ClassFile.DSTORE, numLocal);
-            c.op(ClassFile.DCONST_0);
-            c.local(ClassFile.DSTORE, minLocal);        // the denominator
+            // num = Σ v·μ, den = Σ μ, summed in accumulator order from 0 as CompiledEvaluator.defuzzify does, with
+            // two exact shortcuts: μ >= +0, so 0 + μ is μ and the sum of the μ needs no 0 to start from; and
+            // v·μ is +0 or positive for v > 0, so with such a v among the terms the sum of the v·μ cannot end
+            // as −0, which is all that starting from 0 changes, and a term with v = 0 adds an exact +0
+            boolean positive = false;
             for (int k = b.cogsFrom()[o]; k < b.cogsTo()[o]; k++) {
-                c.local(ClassFile.DLOAD, numLocal);
-                c.doubleConst(b.singleton()[k]);
-                c.local(ClassFile.DLOAD, accLocal + 2 * k);
-                c.op(ClassFile.DMUL);
-                c.op(ClassFile.DADD);
+                positive |= b.singleton()[k] > 0;
+            }
+            boolean numStarted = !positive;
+            if (!positive) {
+                c.op(ClassFile.DCONST_0);
                 c.local(ClassFile.DSTORE, numLocal);
-                c.local(ClassFile.DLOAD, minLocal);
+            }
+            for (int k = b.cogsFrom()[o]; k < b.cogsTo()[o]; k++) {
+                if (b.singleton()[k] != 0 || !positive) {
+                    if (numStarted) {
+                        c.local(ClassFile.DLOAD, numLocal);
+                    }
+                    c.doubleConst(b.singleton()[k]);
+                    c.local(ClassFile.DLOAD, accLocal + 2 * k);
+                    c.op(ClassFile.DMUL);
+                    if (numStarted) {
+                        c.op(ClassFile.DADD);
+                    }
+                    c.local(ClassFile.DSTORE, numLocal);
+                    numStarted = true;
+                }
                 c.local(ClassFile.DLOAD, accLocal + 2 * k);
-                c.op(ClassFile.DADD);
-                c.local(ClassFile.DSTORE, minLocal);
+                if (k > b.cogsFrom()[o]) {
+                    c.local(ClassFile.DLOAD, minLocal);
+                    c.op(ClassFile.DADD);
+                }
+                c.local(ClassFile.DSTORE, minLocal);    // the denominator
             }
             c.local(ClassFile.DLOAD, numLocal);
             c.local(ClassFile.DLOAD, minLocal);

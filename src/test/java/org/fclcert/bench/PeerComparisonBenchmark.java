@@ -35,7 +35,8 @@ import org.openjdk.jmh.annotations.Warmup;
  * fclcert side by side with jfuzzylite 6.0.1 (and, for reading, jFuzzyLogic) in one JMH run, on the same
  * programs ({@link PeerPrograms}, each in the layout its reader needs) and the same cycle of operating
  * points. An evaluation is: set every input, evaluate, read the output, with names resolved once on both
- * sides (fclcert's {@link CompiledEvaluator} indices, jfuzzylite's variable objects). Reading is the
+ * sides (fclcert's {@link CompiledEvaluator} sets its inputs in declaration order and reads its output by
+ * index, jfuzzylite sets each of its input variable objects). Reading is the
  * whole front end: fclcert's strict reader and all checks (every diagnostic), jfuzzylite's FclImporter
  * building an Engine, jFuzzyLogic's FIS.createFromString.
  *
@@ -81,7 +82,6 @@ public class PeerComparisonBenchmark {
      */
     static final class Reference implements Side {
         private final CompiledEvaluator fb;
-        private final int[] in;
         private final int out;
 
         Reference(String text) throws EvaluationException {
@@ -91,18 +91,13 @@ public class PeerComparisonBenchmark {
             if (!fb.isCompiled()) {
                 throw new IllegalStateException("the benchmark program is not on the flat plan");
             }
-            in = new int[fb.inputNames().size()];
-            for (int k = 0; k < in.length; k++) {
-                in[k] = fb.inputIndex(fb.inputNames().get(k));
-            }
             out = fb.outputIndex(fb.outputNames().get(0));
         }
 
+        /** {@code v} in the inputs' declaration order (as the operating points are; the exactness check tells). */
         @Override
         public double step(double[] v) throws EvaluationException {
-            for (int k = 0; k < in.length; k++) {
-                fb.setInput(in[k], v[k]);
-            }
+            fb.setInputs(v);
             fb.evaluate();
             return fb.output(out);
         }

@@ -153,6 +153,14 @@ class CompiledEvaluatorAgreementTest {
         assertEquals("FCL-V003", assertThrows(EvaluationException.class, () -> fast.inputIndex("y")).code());
         assertEquals("FCL-V002", assertThrows(EvaluationException.class,
                 () -> fast.setInput(x, Double.NaN)).code());
+        // all inputs at once, in declaration order: x = 7.5 gives lo 0.25, hi 0.75, so 75
+        fast.setInputs(7.5);
+        fast.evaluate();
+        assertEquals(75.0, fast.output(y), 0.0);
+        assertEquals(7.5, fast.input(x), 0.0);
+        assertEquals("FCL-V002", assertThrows(EvaluationException.class,
+                () -> fast.setInputs(Double.POSITIVE_INFINITY)).code());
+        assertThrows(IllegalArgumentException.class, () -> fast.setInputs(1, 2));
     }
 
     /**
