@@ -1,6 +1,8 @@
 package org.fclcert.check;
 
+import java.util.Collections;
 import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Set;
 import org.fclcert.model.Condition;
@@ -33,21 +35,20 @@ public final class NoUnusedTerms implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
-        Set<String> inCondition = new HashSet<>();
-        Set<String> inConclusion = new HashSet<>();
+        Scope scope = Scope.of(block);
+        // the (variable, term) pairs meant, as Scope.meant's memoised arrays: each distinct spelling once
+        Set<String[]> inCondition = Collections.newSetFromMap(new IdentityHashMap<>());
+        Set<String[]> inConclusion = Collections.newSetFromMap(new IdentityHashMap<>());
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
-                for (Condition c : Conditions.subconditions(rule.condition())) {
+                for (Condition c : scope.subconditions(rule)) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {
-                        String[] meant = scope.meant(t.variable(), t.term(), true);
-                        inCondition.add(key(meant[0], meant[1]));
+                        inCondition.add(scope.meant(t.variable(), t.term(), true));
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
                     s.term().ifPresent(t -> {
-                        String[] meant = scope.meant(s.variable(), t, false);
-                        inConclusion.add(key(meant[0], meant[1]));
+                        inConclusion.add(scope.meant(s.variable(), t, false));
                     });
                 }
             }
@@ -66,7 +67,11 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         }
     }
 
-    private void report(String variable, List<Term> terms, Set<String> used, String by, DiagnosticSink sink) {
+    private void report(String variable, List<Term> terms, Set<String[]> meant, String by, DiagnosticSink sink) {
+        Set<String> used = new HashSet<>();
+        for (String[] m : meant) {
+            used.add(key(m[0], m[1]));
+        }
         for (Term t : terms) {
             if (!used.contains(key(variable, t.name()))) {
                 sink.report(finding(t.location(), "term '" + t.name() + "' of '" + variable + "' is never used: no "

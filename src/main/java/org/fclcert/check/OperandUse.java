@@ -57,9 +57,8 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
     }
 
     private static void addTerm(List<OperandUse> out, Term term, String variable) {
-        String of = "term '" + term.name() + "' of '" + variable + "'";
         if (term.function() instanceof MembershipFunction.Singleton s) {
-            out.add(new OperandUse(s.value(), Role.SINGLETON, () -> "the value of singleton " + of));
+            out.add(new OperandUse(s.value(), Role.SINGLETON, () -> "the value of singleton " + of(term, variable)));
             return;
         }
         if (!(term.function() instanceof MembershipFunction.Points pts)) {
@@ -69,8 +68,14 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
         for (int i = 0; i < points.size(); i++) {
             Point p = points.get(i);
             int number = i + 1;
-            out.add(new OperandUse(p.x(), Role.POINT_X, () -> "the x of point " + number + " of " + of));
-            out.add(new OperandUse(p.degree(), Role.DEGREE, () -> "the degree of point " + number + " of " + of));
+            out.add(new OperandUse(p.x(), Role.POINT_X, () -> "the x of point " + number + " of " + of(term, variable)));
+            out.add(new OperandUse(p.degree(), Role.DEGREE,
+                    () -> "the degree of point " + number + " of " + of(term, variable)));
         }
+    }
+
+    /** Built only when a diagnostic needs it: most operands are fine. */
+    private static String of(Term term, String variable) {
+        return "term '" + term.name() + "' of '" + variable + "'";
     }
 }

@@ -3,13 +3,16 @@ package org.fclcert.check;
 import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Condition;
 import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Names;
+import org.fclcert.model.Rule;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
@@ -20,10 +23,16 @@ import org.fclcert.model.VariableKind;
  * mistake does not cascade into a diagnostic at every use.
  */
 final class Scope {
-    private final Map<String, Variable> variables = new HashMap<>();
-    private final Map<String, Fuzzification> fuzzifications = new HashMap<>();
-    private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
+    private final NameMap<Variable> variables = new NameMap<>();
+    private final NameMap<Fuzzification> fuzzifications = new NameMap<>();
+    private final NameMap<Defuzzification> defuzzifications = new NameMap<>();
     private final FunctionBlock block;
+    /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
+    private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
+    /** {@link #meant} per spelling of (variable, term) and place: the same few pairs recur in every rule. */
+    private final Map<String, Map<String, String[]>> meantInCondition = new HashMap<>();
+    private final Map<String, Map<String, String[]>> meantInConclusion = new HashMap<>();
+    private List<OperandUse> operandUses;
 
     /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
     private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
@@ -45,9 +54,50 @@ final class Scope {
 
     Scope(FunctionBlock block) {
         this.block = block;
-        block.variables().forEach(v -> variables.putIfAbsent(Names.key(v.name()), v));
-        block.fuzzifications().forEach(f -> fuzzifications.putIfAbsent(Names.key(f.variable()), f));
-        block.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(Names.key(d.variable()), d));
+        block.variables().forEach(v -> variables.putIfAbsent(v.name(), v));
+        block.fuzzifications().forEach(f -> fuzzifications.putIfAbsent(f.variable(), f));
+        block.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(d.variable(), d));
+    }
+
+    /**
+     * A case-insensitive map that looks a name up as it is spelt first, so that the usual use — spelt as
+     * declared — costs no upper-casing; the first of two declarations differing only in case wins.
+     */
+    private static final class NameMap<V> {
+        private final Map<String, V> byKey = new HashMap<>();
+        private final Map<String, V> bySpelling = new HashMap<>();
+
+        void putIfAbsent(String name, V value) {
+            V first = byKey.computeIfAbsent(Names.key(name), k -> value);
+            bySpelling.putIfAbsent(name, first);
+        }
+
+        V get(String name) {
+            V v = bySpelling.get(name);
+            return v != null ? v : byKey.get(Names.key(name));
+        }
+
+        boolean containsKey(String name) {
+            return get(name) != null;
+        }
+    }
+
+    /** {@link OperandUse#all} of this block, built once per check run (five rules walk it). */
+    List<OperandUse> operandUses() {
+        if (operandUses == null) {
+            operandUses = OperandUse.all(block);
+        }
+        return operandUses;
+    }
+
+    /** The subconditions of the rule's condition in source order ({@link Conditions#subconditions}), memoised. */
+    List<Condition> subconditions(Rule rule) {
+        List<Condition> list = subconditions.get(rule);
+        if (list == null) {
+            list = Conditions.subconditions(rule.condition());
+            subconditions.put(rule, list);
+        }
+        return list;
     }
 
     FunctionBlock block() {
@@ -55,23 +105,24 @@ final class Scope {
     }
 
     Optional<Variable> variable(String name) {
-        return Optional.ofNullable(variables.get(Names.key(name)));
+        return Optional.ofNullable(variables.get(name));
     }
 
     boolean declared(String name) {
-        return variables.containsKey(Names.key(name));
+        return variables.containsKey(name);
     }
 
     boolean is(String name, VariableKind kind) {
-        return variable(name).map(v -> v.kind() == kind).orElse(false);
+        Variable v = variables.get(name);
+        return v != null && v.kind() == kind;
     }
 
     Optional<Fuzzification> fuzzification(String variable) {
-        return Optional.ofNullable(fuzzifications.get(Names.key(variable)));
+        return Optional.ofNullable(fuzzifications.get(variable));
     }
 
     Optional<Defuzzification> defuzzification(String variable) {
-        return Optional.ofNullable(defuzzifications.get(Names.key(variable)));
+        return Optional.ofNullable(defuzzifications.get(variable));
     }
 
     /**
@@ -82,7 +133,8 @@ final class Scope {
         if (!is(variable, VariableKind.INPUT)) {
             return Optional.empty();
         }
-        return fuzzification(variable).map(Fuzzification::terms);
+        Fuzzification f = fuzzifications.get(variable);
+        return f == null ? Optional.empty() : Optional.of(f.terms());
     }
 
     /**
@@ -93,7 +145,18 @@ final class Scope {
         if (!is(variable, VariableKind.OUTPUT)) {
             return Optional.empty();
         }
-        return defuzzification(variable).map(Defuzzification::terms);
+        Defuzzification d = defuzzifications.get(variable);
+        return d == null ? Optional.empty() : Optional.of(d.terms());
+    }
+
+    /** Whether one of the terms is named {@code term} (case-insensitive). */
+    static boolean hasTerm(List<Term> terms, String term) {
+        for (Term t : terms) {
+            if (Names.same(t.name(), term)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -139,10 +202,16 @@ final class Scope {
      * term it meant is not also reported as unused).
      */
     String[] meant(String variable, String term, boolean inCondition) {
+        Map<String, Map<String, String[]>> memo = inCondition ? meantInCondition : meantInConclusion;
+        return memo.computeIfAbsent(variable, k -> new HashMap<>())
+                .computeIfAbsent(term, k -> resolveMeant(variable, term, inCondition));
+    }
+
+    private String[] resolveMeant(String variable, String term, boolean inCondition) {
         String v = declared(variable) ? variable : suggestVariable(variable).orElse(variable);
         Optional<List<Term>> terms = inCondition ? conditionTerms(v) : conclusionTerms(v);
         String t = term;
-        if (terms.isPresent() && terms.get().stream().noneMatch(x -> Names.same(x.name(), term))
+        if (terms.isPresent() && !hasTerm(terms.get(), term)
                 && ownersOfTerm(term, v, true).isEmpty() && ownersOfTerm(term, v, false).isEmpty()) {
             t = suggestTerm(term, terms.get()).orElse(term);
         }
