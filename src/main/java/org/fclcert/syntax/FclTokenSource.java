@@ -31,8 +31,11 @@ import org.antlr.v4.runtime.misc.Pair;
 final class FclTokenSource implements TokenSource {
     private static final Map<String, Integer> KEYWORDS = keywords();
 
-    /** The text's characters (scanned far more often than a String's accessors are cheap). */
-    private final char[] text;
+    /**
+     * The text's characters (scanned far more often than a String's accessors are cheap); dropped at the end
+     * of the text, since every token made keeps this source (token texts come from the input stream).
+     */
+    private char[] text;
     private final int length;
     private final CharStream input;
     private final Pair<TokenSource, CharStream> pair;
@@ -47,7 +50,6 @@ final class FclTokenSource implements TokenSource {
     private int index;
     private int line = 1;
     private int column;
-    private boolean eofSent;
 
     FclTokenSource(String text, String sourceName) {
         this.text = text.toCharArray();
@@ -131,11 +133,13 @@ final class FclTokenSource implements TokenSource {
 
     @Override
     public Token nextToken() {
+        if (text == null) {
+            return token(Token.EOF, index, index - 1, line, column);
+        }
         skipWhiteSpace();
         if (pos >= length) {
-            CommonToken eof = token(Token.EOF, index, index - 1, line, column);
-            eofSent = true;
-            return eof;
+            text = null;
+            return token(Token.EOF, index, index - 1, line, column);
         }
         int startPos = pos;
         int startIndex = index;
@@ -426,11 +430,6 @@ final class FclTokenSource implements TokenSource {
             }
         }
         return Map.copyOf(k);
-    }
-
-    /** Whether the end of the text has been handed out. */
-    boolean atEnd() {
-        return eofSent;
     }
 
     @Override

@@ -78,6 +78,7 @@ public final class StrictReader implements FclReader {
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
+        TokenTable table = new TokenTable();
         if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
             List<Token> lexed = new java.util.ArrayList<>();
             Token t;
@@ -86,8 +87,9 @@ public final class StrictReader implements FclReader {
                 lexed.add(t);
             } while (t.getType() != Token.EOF);
             source = new ListTokenSource(options.tokenFilter().filter(lexed, diagnostics.asReport()));
+            table = TokenTable.keepingTokens();   // a dialect's filter may make up tokens: keep them as made
         }
-        TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics);
+        TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics, table);
         if (scan.tooDeep() || diagnostics.tooMany()) {
             return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
@@ -108,14 +110,15 @@ public final class StrictReader implements FclReader {
         }
         if (!parsed.complete()) {
             // the builder needs a tree without gaps: the semantic checks get the repaired text's, if any
-            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, scan.tokens(), options));
+            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, parsed.tokens(), options));
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());
         return new Outcome(diagnostics.hasErrors() ? Optional.empty() : Optional.of(program), Optional.empty());
     }
 
-    private record Parsed(FclParser.ProgramContext tree, boolean complete) {
+    /** The tree, whether it is whole, and after a syntax error every token (which the repair needs). */
+    private record Parsed(FclParser.ProgramContext tree, boolean complete, List<Token> tokens) {
     }
 
     /** Runs the task on a fresh thread with a large stack and returns its result on this thread. */
@@ -153,10 +156,9 @@ public final class StrictReader implements FclReader {
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
-    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
+    private static Parsed parse(TokenTable table, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
             ModelBuilder builder) {
-        CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(tokens));
-        FclParser parser = new FclParser(stream);
+        FclParser parser = new FclParser(new TableTokenStream(table));
         parser.removeErrorListeners();
         parser.addParseListener(reservedNames);
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
@@ -165,21 +167,22 @@ public final class StrictReader implements FclReader {
         parser.ruleParsed = builder::buildEarly;
         ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
-            return new Parsed(parser.program(), true);
+            return new Parsed(parser.program(), true, List.of());
         } catch (ParseCancellationException e) {
             diagnostics.rollback(mark);   // the second pass reports everything again
-            parser.ruleParsed = null;
-            stream.seek(0);
-            parser.reset();
+            List<Token> tokens = table.toList();
+            parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
+            parser.removeErrorListeners();
             reservedNames.reset();
+            parser.addParseListener(reservedNames);
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);
             try {
                 FclParser.ProgramContext tree = parser.program();
-                return new Parsed(tree, !strategy.recovered());
+                return new Parsed(tree, !strategy.recovered(), tokens);
             } catch (FclErrorStrategy.StopReading stop) {
-                return new Parsed(null, false);
+                return new Parsed(null, false, tokens);
             }
         }
     }

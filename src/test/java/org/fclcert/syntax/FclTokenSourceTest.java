@@ -42,6 +42,48 @@ class FclTokenSourceTest {
     }
 
     @Test
+    void theCompactTableGivesBackEveryTokenItWasGiven() throws IOException {
+        List<String> texts = new ArrayList<>();
+        try (Stream<Path> s = Files.walk(Path.of("conformance"))) {
+            for (Path f : s.filter(p -> p.toString().endsWith(".fcl")).toList()) {
+                texts.add(Files.readString(f));
+            }
+        }
+        texts.add("");
+        texts.add("\n\n  x");
+        texts.add("a\uD83D\uDE00b (* \n *) c\n\n\n d");      // code points beyond the BMP shift the indices
+        for (String text : texts) {
+            FclTokenSource lexer = new FclTokenSource(text, "t");
+            TokenTable table = new TokenTable();
+            List<Token> given = new ArrayList<>();
+            Token t;
+            do {
+                t = lexer.nextToken();
+                if (t.getChannel() == Token.DEFAULT_CHANNEL) {
+                    table.add(t);
+                    given.add(t);
+                }
+            } while (t.getType() != Token.EOF);
+            assertEquals(given.size(), table.size());
+            for (int i = 0; i < given.size(); i++) {
+                Token w = given.get(i);
+                Token g = table.token(i);
+                String at = "token " + i + " of " + text.length() + " characters";
+                assertEquals(w.getType(), g.getType(), at);
+                assertEquals(w.getStartIndex(), g.getStartIndex(), at);
+                assertEquals(w.getStopIndex(), g.getStopIndex(), at);
+                assertEquals(w.getLine(), g.getLine(), at);
+                assertEquals(w.getCharPositionInLine(), g.getCharPositionInLine(), at);
+                assertEquals(w.getText(), g.getText(), at);
+                assertEquals(i, g.getTokenIndex(), at);
+                if (w.getType() == FclLexer.IDENT) {
+                    assertTrue(w.getText() == g.getText(), at + ": an identifier keeps its shared spelling");
+                }
+            }
+        }
+    }
+
+    @Test
     void sameTokenForEveryCodePointAloneAndBetweenLetters() {
         StringBuilder all = new StringBuilder();
         for (int cp = 0; cp <= Character.MAX_CODE_POINT; cp++) {
