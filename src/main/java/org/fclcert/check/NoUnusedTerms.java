@@ -1,8 +1,6 @@
 package org.fclcert.check;
 
-import java.util.Collections;
 import java.util.HashSet;
-import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Set;
 import org.fclcert.model.Condition;
@@ -36,20 +34,21 @@ public final class NoUnusedTerms implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
-        // the (variable, term) pairs meant, as Scope.meant's memoised arrays: each distinct spelling once
-        Set<String[]> inCondition = Collections.newSetFromMap(new IdentityHashMap<>());
-        Set<String[]> inConclusion = Collections.newSetFromMap(new IdentityHashMap<>());
+        Set<String> usedInCondition = new HashSet<>();
+        Set<String> usedInConclusion = new HashSet<>();
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : scope.subconditions(rule)) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {
-                        inCondition.add(scope.meant(t.variable(), t.term(), true));
+                        String[] meant = scope.meant(t.variable(), t.term(), true);
+                        usedInCondition.add(key(meant[0], meant[1]));
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
-                    s.term().ifPresent(t -> {
-                        inConclusion.add(scope.meant(s.variable(), t, false));
-                    });
+                    if (s.term().isPresent()) {
+                        String[] meant = scope.meant(s.variable(), s.term().get(), false);
+                        usedInConclusion.add(key(meant[0], meant[1]));
+                    }
                 }
             }
         }
@@ -57,21 +56,17 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         // (the terms of a misplaced or repeated block are already covered by that block's error)
         for (Fuzzification f : block.fuzzifications()) {
             if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
-                report(f.variable(), f.terms(), inCondition, "subcondition", sink);
+                report(f.variable(), f.terms(), usedInCondition, "subcondition", sink);
             }
         }
         for (Defuzzification d : block.defuzzifications()) {
             if (scope.is(d.variable(), VariableKind.OUTPUT) && scope.defuzzification(d.variable()).get() == d) {
-                report(d.variable(), d.terms(), inConclusion, "subconclusion", sink);
+                report(d.variable(), d.terms(), usedInConclusion, "subconclusion", sink);
             }
         }
     }
 
-    private void report(String variable, List<Term> terms, Set<String[]> meant, String by, DiagnosticSink sink) {
-        Set<String> used = new HashSet<>();
-        for (String[] m : meant) {
-            used.add(key(m[0], m[1]));
-        }
+    private void report(String variable, List<Term> terms, Set<String> used, String by, DiagnosticSink sink) {
         for (Term t : terms) {
             if (!used.contains(key(variable, t.name()))) {
                 sink.report(finding(t.location(), "term '" + t.name() + "' of '" + variable + "' is never used: no "

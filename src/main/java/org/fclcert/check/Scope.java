@@ -2,7 +2,6 @@ package org.fclcert.check;
 
 import java.lang.ref.WeakReference;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
@@ -29,10 +28,6 @@ final class Scope {
     private final FunctionBlock block;
     /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
     private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
-    /** {@link #meant} per spelling of (variable, term) and place: the same few pairs recur in every rule. */
-    private final Map<String, Map<String, String[]>> meantInCondition = new HashMap<>();
-    private final Map<String, Map<String, String[]>> meantInConclusion = new HashMap<>();
-    private List<OperandUse> operandUses;
 
     /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
     private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
@@ -60,34 +55,69 @@ final class Scope {
     }
 
     /**
-     * A case-insensitive map that looks a name up as it is spelt first, so that the usual use — spelt as
-     * declared — costs no upper-casing; the first of two declarations differing only in case wins.
+     * A case-insensitive map from names to what they declare ({@link Names#same}), the first of two
+     * declarations differing only in case winning: open addressing on a hash of the case-folded characters,
+     * so that a lookup neither upper-cases nor allocates, and one slot pair per name (a block may declare
+     * 100 000 names).
      */
     private static final class NameMap<V> {
-        private final Map<String, V> byKey = new HashMap<>();
-        private final Map<String, V> bySpelling = new HashMap<>();
+        private String[] names = new String[16];
+        private Object[] values = new Object[16];
+        private int size;
 
         void putIfAbsent(String name, V value) {
-            V first = byKey.computeIfAbsent(Names.key(name), k -> value);
-            bySpelling.putIfAbsent(name, first);
+            if (get(name) != null) {
+                return;
+            }
+            if (2 * (size + 1) > names.length) {
+                String[] oldNames = names;
+                Object[] oldValues = values;
+                names = new String[2 * oldNames.length];
+                values = new Object[2 * oldNames.length];
+                size = 0;
+                for (int i = 0; i < oldNames.length; i++) {
+                    if (oldNames[i] != null) {
+                        insert(oldNames[i], oldValues[i]);
+                    }
+                }
+            }
+            insert(name, value);
         }
 
+        private void insert(String name, Object value) {
+            int mask = names.length - 1;
+            int at = hash(name) & mask;
+            while (names[at] != null) {
+                at = (at + 1) & mask;
+            }
+            names[at] = name;
+            values[at] = value;
+            size++;
+        }
+
+        @SuppressWarnings("unchecked")
         V get(String name) {
-            V v = bySpelling.get(name);
-            return v != null ? v : byKey.get(Names.key(name));
+            int mask = names.length - 1;
+            for (int at = hash(name) & mask; names[at] != null; at = (at + 1) & mask) {
+                if (Names.same(names[at], name)) {
+                    return (V) values[at];
+                }
+            }
+            return null;
         }
 
         boolean containsKey(String name) {
             return get(name) != null;
         }
-    }
 
-    /** {@link OperandUse#all} of this block, built once per check run (five rules walk it). */
-    List<OperandUse> operandUses() {
-        if (operandUses == null) {
-            operandUses = OperandUse.all(block);
+        /** Equal for names equal ignoring case as {@link String#equalsIgnoreCase} compares them. */
+        private static int hash(String name) {
+            int h = 0;
+            for (int i = 0; i < name.length(); i++) {
+                h = 31 * h + Character.toLowerCase(Character.toUpperCase(name.charAt(i)));
+            }
+            return h ^ (h >>> 16);
         }
-        return operandUses;
     }
 
     /** The subconditions of the rule's condition in source order ({@link Conditions#subconditions}), memoised. */
@@ -202,12 +232,6 @@ final class Scope {
      * term it meant is not also reported as unused).
      */
     String[] meant(String variable, String term, boolean inCondition) {
-        Map<String, Map<String, String[]>> memo = inCondition ? meantInCondition : meantInConclusion;
-        return memo.computeIfAbsent(variable, k -> new HashMap<>())
-                .computeIfAbsent(term, k -> resolveMeant(variable, term, inCondition));
-    }
-
-    private String[] resolveMeant(String variable, String term, boolean inCondition) {
         String v = declared(variable) ? variable : suggestVariable(variable).orElse(variable);
         Optional<List<Term>> terms = inCondition ? conditionTerms(v) : conclusionTerms(v);
         String t = term;

@@ -164,15 +164,16 @@ public final class CompiledEvaluator {
             minSlot[s] = plan.types[s].min();
             maxSlot[s] = plan.types[s].max();
         }
+        boolean flat = flat(plan);
         this.directMin = new double[nIn];
         this.directMax = new double[nIn];
         for (int i = 0; i < nIn; i++) {
             // NaN bounds send every value to setInputChecked: integer inputs (rounded) and the wrapped instance
-            boolean direct = !integerSlot[inputSlots[i]] && flat(plan);
+            boolean direct = !integerSlot[inputSlots[i]] && flat;
             directMin[i] = direct ? minSlot[inputSlots[i]] : Double.NaN;
             directMax[i] = direct ? maxSlot[inputSlots[i]] : Double.NaN;
         }
-        if (flat(plan)) {
+        if (flat) {
             this.fallback = null;
             compileTerms();
             compileRules();
