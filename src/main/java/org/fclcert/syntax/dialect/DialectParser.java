@@ -675,8 +675,8 @@ final class DialectParser {
             }
         }
         dialect.finishRuleBlock(this, block);
-        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu, block.rules,
-                block.start));
+        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu,
+                rules.relabelled(block.rules), block.start));
     }
 
     private <E extends Enum<E>> E algorithm(Class<E> type, String allowed) {
