@@ -31,15 +31,26 @@ final class ReportCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        if (!Files.isRegularFile(from)) {
+        if (!Files.exists(from)) {
             err.println("fclcert report: " + from + ": no such file");
             err.flush();
             return CertifyCommand.CANNOT_RUN;
         }
         Path dir = out != null ? out : from.getParent() != null ? from.getParent() : Path.of(".");
+        ResultsFile results;
         try {
-            ResultsFile results = ResultsFile.read(from);
-            results.problems().forEach(p -> err.println("warning: " + p));
+            results = ResultsFile.read(from);
+        } catch (ResultsFile.InvalidResultsException e) {
+            err.println("fclcert report: " + e.getMessage());
+            err.flush();
+            return CertifyCommand.CANNOT_RUN;
+        } catch (IOException e) {
+            err.println("fclcert report: cannot read " + from + ": " + e.getMessage());
+            err.flush();
+            return CertifyCommand.CANNOT_RUN;
+        }
+        try {
+            results.problems().forEach(p -> err.println("warning: " + TerminalText.visible(p)));
             Report report = Certification.rebuildReports(results, dir);
             PrintWriter o = spec.commandLine().getOut();
             o.println(report.summary().cases() + " cases (" + report.summary().passed() + " passed, "
@@ -49,10 +60,8 @@ final class ReportCommand implements Callable<Integer> {
             o.flush();
             err.flush();
             return CertifyCommand.OK;
-        } catch (ResultsFile.InvalidResultsException e) {
-            err.println("fclcert report: " + e.getMessage());
         } catch (IOException e) {
-            err.println("fclcert report: " + e.getMessage());
+            err.println("fclcert report: cannot write the reports in " + dir + ": " + e.getMessage());
         }
         err.flush();
         return CertifyCommand.CANNOT_RUN;

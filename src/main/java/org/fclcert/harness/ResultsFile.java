@@ -5,8 +5,9 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -14,6 +15,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.fclcert.model.Limits;
 
 /**
  * A {@code results.jsonl} read back: its header, the case results it holds, and the lines it could not use
@@ -30,9 +32,30 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
     /** The parts of the run header a report is made from. */
     private static final List<String> HEADER_PARTS = List.of("iut", "toolkit", "corpus", "selection");
 
-    /** Reads a results file; fails with a located message when there is no usable header line. */
+    /**
+     * Reads a results file (a regular file within {@link Limits#MAX_SOURCE_BYTES}); fails with a located message
+     * when there is no usable header line. Bytes that are not UTF-8 (a damaged file) become U+FFFD, with a warning.
+     */
     public static ResultsFile read(Path file) throws IOException, InvalidResultsException {
-        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        byte[] bytes = Limits.readFile(file);
+        List<String> early = new ArrayList<>();
+        String text;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(bytes)).toString();
+        } catch (CharacterCodingException e) {
+            text = new String(bytes, StandardCharsets.UTF_8);
+            early.add(file + ": bytes that are not UTF-8 read as U+FFFD (the file is damaged)");
+        }
+        ResultsFile read = parse(file.toString(), text.lines().toList());
+        early.addAll(read.problems());
+        return new ResultsFile(read.header(), read.results(), read.dataCheckList(), early);
+    }
+
+    /**
+     * The results file {@code name} (as messages locate it) from its lines; fails with a located message when
+     * there is no usable header line.
+     */
+    public static ResultsFile parse(String name, List<String> lines) throws InvalidResultsException {
         RunHeader header = null;
         List<CaseResult> results = new ArrayList<>();
         List<DataCheckEntry> dataCheckList = new ArrayList<>();
@@ -42,7 +65,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
             if (line.isBlank()) {
                 continue;
             }
-            String where = file + ":" + (i + 1);
+            String where = name + ":" + (i + 1);
             try {
                 JsonNode node = Json.mapper().readTree(line);
                 String type = node.path("type").asText("");
@@ -65,7 +88,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                     dataCheckList.clear();
                     dataCheckList.addAll(Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class).entries());
                 } else {
-                    problems.add(where + ": line of unknown type '" + type + "' ignored");
+                    problems.add(where + ": line of unknown type '" + org.fclcert.iut.IutText.kept(type) + "' ignored");
                 }
             } catch (JsonMappingException e) {
                 // its own message names Java types; say which field, in the file's terms
@@ -81,7 +104,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
             }
         }
         if (header == null) {
-            throw new InvalidResultsException(file + ": no run header line ({\"type\":\"run\",...}); "
+            throw new InvalidResultsException(name + ": no run header line ({\"type\":\"run\",...}); "
                     + "is this a results.jsonl written by fclcert certify?");
         }
         return new ResultsFile(header, results, dataCheckList, problems);

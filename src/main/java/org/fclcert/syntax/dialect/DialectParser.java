@@ -42,7 +42,7 @@ import org.fclcert.syntax.dialect.DialectLexer.Token;
  * Every loop consumes a token or stops, so no text makes it hang. Rules are read by {@link DialectRuleParser}.
  */
 final class DialectParser {
-    static final int MAX_ERRORS = 25;   // also FfllModel's cap
+    static final int MAX_ERRORS = org.fclcert.model.Limits.MAX_ERRORS_PER_FILE;   // also FfllModel's cap
     static final int MAX_NESTING = 200;
 
     final LibraryDialect dialect;
