@@ -18,6 +18,7 @@ import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.PresentedStatus;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunHeader;
+import org.fclcert.harness.Runner;
 import org.fclcert.model.Feature;
 
 /** Builds the verdicts of clause 6.1 from case results (complete or not). */
@@ -46,7 +47,7 @@ public final class ReportBuilder {
     static final String NOT_RUN = "not run: the run ended before this case";
 
     private static boolean isUnrun(CaseResult c) {
-        return NOT_RUN.equals(c.message());
+        return NOT_RUN.equals(c.message()) || c.message() != null && c.message().startsWith(Runner.STOPPED);
     }
 
     /** Planned order, the last result per id, and a skipped entry for every planned case with no result. */
