@@ -10,11 +10,14 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.Set;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.fclcert.iut.IutText;
 import org.fclcert.model.Limits;
 
 /**
@@ -76,6 +79,13 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                                 + "' object; the file is damaged (rerun fclcert certify to write it again)");
                     }
                     header = Json.mapper().treeToValue(node, RunHeader.class);
+                    Set<String> planned = new HashSet<>();
+                    for (PlannedCase p : header.selection().planned()) {
+                        if (!planned.add(p.id())) {
+                            problems.add(where + ": the run header plans case '" + IutText.kept(String.valueOf(p.id()))
+                                    + "' more than once; it is reported once");
+                        }
+                    }
                 } else if (type.equals("case")) {
                     Optional<String> missing = Stream.of("id", "status")
                             .filter(f -> !node.path(f).isTextual() || node.path(f).asText().isBlank()).findFirst();
@@ -88,7 +98,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                     dataCheckList.clear();
                     dataCheckList.addAll(Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class).entries());
                 } else {
-                    problems.add(where + ": line of unknown type '" + org.fclcert.iut.IutText.kept(type) + "' ignored");
+                    problems.add(where + ": line of unknown type '" + IutText.kept(type) + "' ignored");
                 }
             } catch (JsonMappingException e) {
                 // its own message names Java types; say which field, in the file's terms

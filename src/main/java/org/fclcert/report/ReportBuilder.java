@@ -55,7 +55,11 @@ public final class ReportBuilder {
         Map<String, CaseResult> byId = new LinkedHashMap<>();
         results.forEach(r -> byId.put(r.id(), r));
         List<CaseResult> ordered = new ArrayList<>();
+        Set<String> placed = new java.util.HashSet<>();
         for (PlannedCase p : header.selection().planned()) {
+            if (!placed.add(p.id())) {
+                continue;   // a damaged or forged header that plans a case twice: each case is reported once
+            }
             CaseResult r = byId.remove(p.id());
             ordered.add(r != null ? r : CaseResult.skipped(p, NOT_RUN));
         }
