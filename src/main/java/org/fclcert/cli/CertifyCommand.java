@@ -138,8 +138,23 @@ final class CertifyCommand implements Callable<Integer> {
             err.println("fclcert certify: " + TerminalText.visibleLines(e.getMessage()));
             err.flush();
             return CANNOT_RUN;
+        } finally {
+            // what the run printed is out: a shutdown hook waiting for it may let the JVM end
+            printed.countDown();
+            if (onSignal != null) {
+                try {
+                    Runtime.getRuntime().removeShutdownHook(onSignal);
+                } catch (IllegalStateException shuttingDown) {
+                    // the hook is running: it waited for 'printed'
+                }
+            }
         }
     }
+
+    /** Counted down once everything the command prints is printed. */
+    private final CountDownLatch printed = new CountDownLatch(1);
+    /** The shutdown hook of a run under way (Ctrl-C, SIGTERM), or null. */
+    private Thread onSignal;
 
     private int certify(PrintWriter stdout, PrintWriter err) throws CannotRun {
         Set<ConformanceLevel> levelSet = levels.isEmpty() ? Set.of() : EnumSet.copyOf(levels);
@@ -165,29 +180,19 @@ final class CertifyCommand implements Callable<Integer> {
         ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
         TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
         RunControl control = new RunControl();
-        CountDownLatch printed = new CountDownLatch(1);
-        Thread onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
+        onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
         Runtime.getRuntime().addShutdownHook(onSignal);
+        Certification.Outcome outcome;
         try {
-            Certification.Outcome outcome;
-            try {
-                outcome = Certification.run(request, progress, hooks, control);
-            } catch (Certification.NothingSelected e) {
-                throw new CannotRun("no case of " + corpusName() + " matches the selection");
-            } catch (Certification.CannotCertify e) {
-                throw new CannotRun(e.getMessage());
-            } finally {
-                progress.stop();
-            }
-            return finish(stdout, err, outcome);
+            outcome = Certification.run(request, progress, hooks, control);
+        } catch (Certification.NothingSelected e) {
+            throw new CannotRun("no case of " + corpusName() + " matches the selection");
+        } catch (Certification.CannotCertify e) {
+            throw new CannotRun(e.getMessage());
         } finally {
-            printed.countDown();
-            try {
-                Runtime.getRuntime().removeShutdownHook(onSignal);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is running: it waits for 'printed'
-            }
+            progress.stop();
         }
+        return finish(stdout, err, outcome);
     }
 
     private int finish(PrintWriter stdout, PrintWriter err, Certification.Outcome outcome) {

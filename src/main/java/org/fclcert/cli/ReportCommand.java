@@ -32,22 +32,16 @@ final class ReportCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         if (!Files.exists(from)) {
-            err.println("fclcert report: " + from + ": no such file");
-            err.flush();
-            return CertifyCommand.CANNOT_RUN;
+            return cannot(err, from + ": no such file");
         }
         Path dir = out != null ? out : from.getParent() != null ? from.getParent() : Path.of(".");
         ResultsFile results;
         try {
             results = ResultsFile.read(from);
         } catch (ResultsFile.InvalidResultsException e) {
-            err.println("fclcert report: " + e.getMessage());
-            err.flush();
-            return CertifyCommand.CANNOT_RUN;
+            return cannot(err, e.getMessage());
         } catch (IOException e) {
-            err.println("fclcert report: cannot read " + from + ": " + e.getMessage());
-            err.flush();
-            return CertifyCommand.CANNOT_RUN;
+            return cannot(err, "cannot read " + from + ": " + e.getMessage());
         }
         try {
             results.problems().forEach(p -> err.println("warning: " + TerminalText.visible(p)));
@@ -61,8 +55,12 @@ final class ReportCommand implements Callable<Integer> {
             err.flush();
             return CertifyCommand.OK;
         } catch (IOException e) {
-            err.println("fclcert report: cannot write the reports in " + dir + ": " + e.getMessage());
+            return cannot(err, "cannot write the reports in " + dir + ": " + e.getMessage());
         }
+    }
+
+    private static int cannot(PrintWriter err, String message) {
+        err.println("fclcert report: " + message);
         err.flush();
         return CertifyCommand.CANNOT_RUN;
     }

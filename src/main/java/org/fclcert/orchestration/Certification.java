@@ -309,15 +309,14 @@ public final class Certification {
                         .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
                 Path dir = request.outDir() != null ? request.outDir()
                         : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
-                Report report = runAndReport(request, iut, header, selected, dir, listener, hooks, control, deadline);
-                return new Outcome(report, dir, stop.reason());
+                return runAndReport(request, iut, header, selected, dir, listener, hooks, control, deadline);
             }
         } finally {
             control.ended();
         }
     }
 
-    private static Report runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
+    private static Outcome runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
             List<RunCase> selected, Path dir, RunListener listener, Hooks hooks, RunControl control, long deadline)
             throws CannotCertify {
         Path resultsFile = dir.resolve(RESULTS);
@@ -344,10 +343,12 @@ public final class Certification {
                         : dataCheckList(request, hooks::probing, stop, Duration.ofNanos(left));
                 sink.dataCheckList(dataCheckList);
             }
+            // a stop from here on finds every case run: it waits for the reports, and the run is complete
+            String stopped = stop.reason();
             hooks.resultsComplete();
             Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
             control.write(() -> ReportFiles.writeAll(report, dir));
-            return report;
+            return new Outcome(report, dir, stopped);
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
         }

@@ -166,14 +166,15 @@ public final class Prober {
                     long rowsLeft = Arrays.stream(rows, i, rows.length).filter(options.rows()::contains).count();
                     long rowDeadline = now + Math.max(0, (p.deadline - now) / rowsLeft);
                     int cuts = stop.cuts();
+                    p.limitStopped = null;
                     entry = p.measure(row, rowDeadline);
-                    if (stop.cuts() != cuts && !(LIMIT_ROWS.contains(row) && p.stoppedLimit)) {
+                    boolean cut = stop.cuts() != cuts || p.limitStopped != null;
+                    if (cut && !(LIMIT_ROWS.contains(row) && Boolean.TRUE.equals(p.limitStopped))) {
                         // a stop cut this row short: what it recorded since is fclcert's doing, not the IUT's
                         entry = p.entry(row, "", DataCheckEntry.NOT_MEASURED, entry.method(), stopped(stop)
                                 + " during this row");
                     }
                 }
-                p.stoppedLimit = false;
                 p.done.add(entry);
                 listener.measured(entry);
             }
@@ -196,8 +197,11 @@ public final class Prober {
     private static final Set<Table11> LIMIT_ROWS = EnumSet.complementOf(EnumSet.of(Table11.DATA_TYPES,
             Table11.LINE_COMMENTS, Table11.EXECUTION_TIME, Table11.MEMORY, Table11.DEGREE_RESOLUTION,
             Table11.IDENTIFIER_LENGTH));
-    /** Set by {@link #limit} when a stop ended it: its entry says so and keeps the last size that worked. */
-    private boolean stoppedLimit;
+    /**
+     * Set by {@link #limit} when a stop ended it: true when a size had worked (its entry then says "at least" that
+     * size, and why it stopped), false when none had; null when no stop ended it.
+     */
+    private Boolean limitStopped;
 
     /** Every row "not measured", with the reason (the implementation could not be probed at all). */
     public static List<DataCheckEntry> notMeasured(String why) {
@@ -443,7 +447,7 @@ public final class Prober {
             }
         }
         if (stopped) {
-            stoppedLimit = lastOk > 0;
+            limitStopped = lastOk > 0;
             return limitEntry(row, min, cap, lastOk, firstFail, failure, "the probe was stopped: " + stop.reason()
                     + ", during this row", fullMethod);
         }

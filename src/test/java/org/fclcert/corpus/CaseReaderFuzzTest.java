@@ -32,6 +32,16 @@ import org.fclcert.iut.Iuts;
 class CaseReaderFuzzTest {
     private static final int MAX_TEXT = 20_000;
     private static final Path FILE = Path.of("fuzz", "case.fcl");
+    /** The runner returns the results; nothing is written. */
+    private static final ResultSink NOWHERE = new ResultSink() {
+        @Override
+        public void header(RunHeader header) {
+        }
+
+        @Override
+        public void accept(CaseResult result) {
+        }
+    };
 
     @FuzzTest(maxDuration = "10m")
     void caseReader(byte[] bytes) throws Exception {
@@ -55,21 +65,11 @@ class CaseReaderFuzzTest {
         assertEquals(text.chars().filter(ch -> ch == '\n').count(), c.programText().chars().filter(ch -> ch == '\n').count(),
                 "the program keeps its line numbers");
         RunCase run = RunCases.from(c);
-        List<CaseResult> results = new ArrayList<>();
-        ResultSink sink = new ResultSink() {
-            @Override
-            public void header(RunHeader header) {
-            }
-
-            @Override
-            public void accept(CaseResult result) {
-                results.add(result);
-            }
-        };
+        List<CaseResult> results;
         try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
             RunHeader header = RunHeaders.of(reference.hello(), "reference", null, "fuzz", "", List.of(run),
                     List.of(run), List.of(List.of(), List.of(), List.of()));
-            new Runner(org.fclcert.harness.RunListener.NONE).run(reference, header, List.of(run), sink);
+            results = new Runner(org.fclcert.harness.RunListener.NONE).run(reference, header, List.of(run), NOWHERE);
         }
         assertEquals(1, results.size());
         assertEquals(c.id(), results.get(0).id());
