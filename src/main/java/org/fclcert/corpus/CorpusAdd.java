@@ -91,7 +91,8 @@ public final class CorpusAdd {
         }
         Path retired = corpus.resolve(CorpusLint.RETIRED_FILE);
         if (Files.isRegularFile(retired)) {
-            for (String line : Files.readAllLines(retired)) {
+            for (String line : new String(org.fclcert.model.Limits.readFile(retired), StandardCharsets.UTF_8).lines()
+                    .toList()) {
                 String word = line.replaceFirst("#.*", "").strip().split("\\s+")[0];
                 max = Math.max(max, number(word, prefix));
             }
