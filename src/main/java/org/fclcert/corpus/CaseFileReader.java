@@ -27,9 +27,9 @@ final class CaseFileReader {
 
     private static final Set<String> KEYS = Set.of("id", "title", "level", "features", "tests", "tolerance",
             "flags", "derivation", "block", "vectors", "expect", "error");
-    private static final Pattern ID = Pattern.compile("[BEON]-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]{3}");
+    private static final Pattern ID = CorpusCase.ID_FORM;
     private static final Pattern CODE = Pattern.compile("FCL-[SCWV][0-9]{3}");
-    private static final Pattern FLAG = Pattern.compile("stateful|interpretation:[0-9A-Za-z.]+|knife-edge:[1-9][0-9]*");
+    private static final Pattern FLAG = CorpusCase.FLAG_FORM;
     private static final Pattern DECIMAL = Pattern.compile("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
     private static final YAMLMapper YAML = YAMLMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)

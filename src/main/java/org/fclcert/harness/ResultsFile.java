@@ -10,14 +10,18 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.Set;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.stream.Collectors;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.fclcert.corpus.CorpusCase;
 import org.fclcert.iut.IutText;
+import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Limits;
 
 /**
@@ -79,6 +83,14 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                                 + "' object; the file is damaged (rerun fclcert certify to write it again)");
                     }
                     header = Json.mapper().treeToValue(node, RunHeader.class);
+                    for (PlannedCase p : header.selection().planned()) {
+                        Optional<String> foreign = foreign(p);
+                        if (foreign.isPresent()) {
+                            throw new InvalidResultsException(where + ": the run header plans a case whose "
+                                    + foreign.get() + " is not in the form fclcert writes; the file is damaged"
+                                    + " (rerun fclcert certify to write it again)");
+                        }
+                    }
                     Set<String> planned = new HashSet<>();
                     for (PlannedCase p : header.selection().planned()) {
                         if (!planned.add(p.id())) {
@@ -93,12 +105,20 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                         problems.add(where + ": case line without '" + missing.get() + "' ignored");
                         continue;
                     }
-                    results.add(Json.mapper().treeToValue(node, CaseResult.class));
+                    CaseResult result = Json.mapper().treeToValue(node, CaseResult.class);
+                    Optional<String> foreign = foreign(result.plan());
+                    if (foreign.isPresent()) {
+                        problems.add(where + ": case line ignored: its " + foreign.get()
+                                + " is not in the form fclcert writes");
+                        continue;
+                    }
+                    results.add(result);
                 } else if (type.equals("dataCheckList")) {
                     dataCheckList.clear();
                     dataCheckList.addAll(Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class).entries());
                 } else {
-                    problems.add(where + ": line of unknown type '" + IutText.kept(type) + "' ignored");
+                    problems.add(where + ": line of unknown type '" + type.replaceAll("[^A-Za-z0-9_-]", "?")
+                            .substring(0, Math.min(type.length(), 40)) + "' ignored");
                 }
             } catch (JsonMappingException e) {
                 // its own message names Java types; say which field, in the file's terms
@@ -119,6 +139,30 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
         }
         return new ResultsFile(header, results, dataCheckList, problems);
     }
+
+    /**
+     * The first part of a planned case that is not in the form fclcert writes — its id, level, a tested feature or a
+     * flag — or empty. The reports show these parts as they are (they come from the corpus), so a damaged or forged
+     * file must not bring other text into them.
+     */
+    private static Optional<String> foreign(PlannedCase p) {
+        if (p.id() == null || !CorpusCase.ID_FORM.matcher(p.id()).matches()) {
+            return Optional.of("id");
+        }
+        if (p.level() != null && Arrays.stream(ConformanceLevel.values()).noneMatch(l -> l.word().equals(p.level()))) {
+            return Optional.of("level");
+        }
+        if (p.tests().stream().anyMatch(t -> t == null || !FEATURE_FORM.matcher(t).matches())) {
+            return Optional.of("tested feature");
+        }
+        if (p.flags().stream().anyMatch(f -> f == null || !CorpusCase.FLAG_FORM.matcher(f).matches())) {
+            return Optional.of("flag");
+        }
+        return Optional.empty();
+    }
+
+    /** The form of a feature id of the catalogue ({@code E-ACCU-NSUM}). */
+    private static final Pattern FEATURE_FORM = Pattern.compile("[BEO]-[A-Z0-9]+(-[A-Z0-9]+)*");
 
     /** The file cannot be made into a report. */
     public static final class InvalidResultsException extends Exception {
