@@ -83,6 +83,11 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                                 + "' object; the file is damaged (rerun fclcert certify to write it again)");
                     }
                     header = Json.mapper().treeToValue(node, RunHeader.class);
+                    Optional<String> untold = untold(header);
+                    if (untold.isPresent()) {
+                        throw new InvalidResultsException(where + ": the run header has no '" + untold.get()
+                                + "' text; the file is damaged (rerun fclcert certify to write it again)");
+                    }
                     for (PlannedCase p : header.selection().planned()) {
                         Optional<String> foreign = foreign(p);
                         if (foreign.isPresent()) {
@@ -159,6 +164,19 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
             return Optional.of("flag");
         }
         return Optional.empty();
+    }
+
+    /** The first text of the header the reports cannot do without (they name and rerun the implementation), or empty. */
+    private static Optional<String> untold(RunHeader h) {
+        java.util.Map<String, String> texts = new java.util.LinkedHashMap<>();
+        texts.put("iut.name", h.iut().name());
+        texts.put("iut.version", h.iut().version());
+        texts.put("iut.spec", h.iut().spec());
+        texts.put("toolkit.version", h.toolkit().version());
+        texts.put("corpus.sha256", h.corpus().sha256());
+        texts.put("startedAt", h.startedAt());
+        return texts.entrySet().stream().filter(e -> e.getValue() == null).map(java.util.Map.Entry::getKey)
+                .findFirst();
     }
 
     /** The form of a feature id of the catalogue ({@code E-ACCU-NSUM}). */
