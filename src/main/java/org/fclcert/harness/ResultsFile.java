@@ -85,7 +85,7 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                     header = Json.mapper().treeToValue(node, RunHeader.class);
                     Optional<String> untold = untold(header);
                     if (untold.isPresent()) {
-                        throw new InvalidResultsException(where + ": the run header has no '" + untold.get()
+                        throw new InvalidResultsException(where + ": the run header has no usable '" + untold.get()
                                 + "' text; the file is damaged (rerun fclcert certify to write it again)");
                     }
                     for (PlannedCase p : header.selection().planned()) {
@@ -119,8 +119,15 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                     }
                     results.add(result);
                 } else if (type.equals("dataCheckList")) {
+                    List<DataCheckEntry> entries = Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class)
+                            .entries();
+                    if (entries == null || entries.stream().anyMatch(ResultsFile::damaged)) {
+                        problems.add(where + ": data check list line ignored: an entry lacks a part or has a bound"
+                                + " fclcert does not write");
+                        continue;
+                    }
                     dataCheckList.clear();
-                    dataCheckList.addAll(Json.mapper().treeToValue(node, ResultsWriter.DataCheckLine.class).entries());
+                    dataCheckList.addAll(entries);
                 } else {
                     problems.add(where + ": line of unknown type '" + type.replaceAll("[^A-Za-z0-9_-]", "?")
                             .substring(0, Math.min(type.length(), 40)) + "' ignored");
@@ -166,7 +173,10 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
         return Optional.empty();
     }
 
-    /** The first text of the header the reports cannot do without (they name and rerun the implementation), or empty. */
+    /**
+     * The first text of the header the reports cannot do without (they name and rerun the implementation), or a
+     * {@code presentAs} that is no layout of fclcert's; empty when there is none.
+     */
     private static Optional<String> untold(RunHeader h) {
         java.util.Map<String, String> texts = new java.util.LinkedHashMap<>();
         texts.put("iut.name", h.iut().name());
@@ -175,8 +185,20 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
         texts.put("toolkit.version", h.toolkit().version());
         texts.put("corpus.sha256", h.corpus().sha256());
         texts.put("startedAt", h.startedAt());
-        return texts.entrySet().stream().filter(e -> e.getValue() == null).map(java.util.Map.Entry::getKey)
-                .findFirst();
+        Optional<String> missing = texts.entrySet().stream().filter(e -> e.getValue() == null)
+                .map(java.util.Map.Entry::getKey).findFirst();
+        if (missing.isEmpty() && h.presentAs() != null && Arrays.stream(org.fclcert.syntax.dialect.Dialect.values())
+                .noneMatch(d -> d.cliName().equals(h.presentAs()))) {
+            return Optional.of("presentAs");   // a layout fclcert does not write: the reports name it as it is
+        }
+        return missing;
+    }
+
+    /** True when a Table 11 entry read back lacks one of its texts or has a bound fclcert does not write. */
+    private static boolean damaged(DataCheckEntry e) {
+        return e == null || Stream.of(e.id(), e.item(), e.value(), e.bound(), e.unit(), e.method(), e.note(),
+                e.declared()).anyMatch(Objects::isNull) || !List.of(DataCheckEntry.EXACT, DataCheckEntry.AT_LEAST,
+                DataCheckEntry.NOT_MEASURED).contains(e.bound());
     }
 
     /** The form of a feature id of the catalogue ({@code E-ACCU-NSUM}). */
