@@ -50,7 +50,7 @@ public final class MarkdownReport {
     private void header() {
         line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
-        line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
+        line("IEC 61131-7 (clause 6.1), measured by fclcert " + Texts.cell(r.toolkit().version()) + " on " + r.generatedAt()
                 + ".");
         line("");
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
