@@ -103,6 +103,9 @@ final class ProgressLine implements RunListener {
             err.println("  expected: " + TerminalText.visible(describe(m.expected())));
             err.println("  actual:   " + TerminalText.visible(describe(m.actual())));
         });
+        if (r.evidence().reference() != null) {
+            r.evidence().reference().lines().forEach(l -> err.println("  reference: " + TerminalText.visible(l)));
+        }
         negativeCase(r);
         String stderr = lastStderrLine(r.evidence().error());
         if (stderr != null) {

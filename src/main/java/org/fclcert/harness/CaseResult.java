@@ -81,10 +81,16 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
      * or the step at which the implementation broke down; {@code mismatch}: what was expected and what came;
      * {@code error}: the implementation's own error text (with the end of its stderr); {@code maxError}: the
      * largest absolute error over every compared output of the case, whatever its status (+&infin; once an
-     * output was not finite, see {@link org.fclcert.corpus.OutputComparison}).
+     * output was not finite, see {@link org.fclcert.corpus.OutputComparison}); {@code reference}: what the
+     * reference evaluator did at that step of a positive case that did not pass.
      */
-    public record Evidence(Step step, Mismatch mismatch, String error, Double maxError) {
+    public record Evidence(Step step, Mismatch mismatch, String error, Double maxError, ReferenceTrace reference) {
         public static final Evidence NONE = new Evidence(null, null, null, null);
+
+        /** Evidence without the reference's trace. */
+        public Evidence(Step step, Mismatch mismatch, String error, Double maxError) {
+            this(step, mismatch, error, maxError, null);
+        }
     }
 
     /** A step of a positive case: its 1-based number and its inputs. */

@@ -8,6 +8,7 @@ import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ExportStatus;
 import org.fclcert.harness.PresentedStatus;
+import org.fclcert.harness.ReferenceTrace;
 
 /**
  * {@code report.md}: the compliance statement in the shape clause 6.1 asks for — the Basic Level verdict
@@ -351,6 +352,11 @@ public final class MarkdownReport {
         }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
+        ReferenceTrace reference = c.evidence().reference();
+        if (reference != null) {
+            line("  - fclcert's reference evaluator at step " + reference.step() + ":");
+            reference.lines().forEach(l -> line("    - " + Texts.cell(l)));
+        }
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }
