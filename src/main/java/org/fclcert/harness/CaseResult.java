@@ -185,6 +185,29 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
         return plan.interpretation();
     }
 
+    private static final java.util.regex.Pattern EXPECTED_REJECTION =
+            java.util.regex.Pattern.compile("reject: (FCL-[A-Z]+[0-9]+) at line ([0-9]+).*");
+
+    /** The error a negative case expects, as its expected side says it ({@code reject: FCL-C002 at line 14}). */
+    public record ExpectedRejection(String code, int line) {
+    }
+
+    /** For a negative case: the code and line of the error it expects. */
+    public Optional<ExpectedRejection> expectedRejection() {
+        if (!(evidence.mismatch() instanceof Mismatch.Sentences m) || m.expected() == null) {
+            return Optional.empty();
+        }
+        java.util.regex.Matcher match = EXPECTED_REJECTION.matcher(m.expected());
+        return match.matches() ? Optional.of(new ExpectedRejection(match.group(1), Integer.parseInt(match.group(2))))
+                : Optional.empty();
+    }
+
+    /** A line (1-based) of the program as sent, stripped, when the result kept the program (cases that did not pass). */
+    public Optional<String> programLine(int line) {
+        List<String> lines = setup.program() == null ? List.of() : setup.program().lines().toList();
+        return line >= 1 && line <= lines.size() ? Optional.of(lines.get(line - 1).strip()) : Optional.empty();
+    }
+
     /** The mismatch, if the case recorded one. */
     public Optional<Mismatch> mismatch() {
         return Optional.ofNullable(evidence.mismatch());

@@ -349,6 +349,9 @@ public final class HtmlReport {
         } else if (mismatch != null) {
             out.append("<table>").append(row("expected", mismatch.expected())).append(row("actual", mismatch.actual()))
                     .append("</table>\n");
+            c.expectedRejection().ifPresent(want -> c.programLine(want.line()).ifPresent(text -> out.append(
+                    "<p>Line ").append(want.line()).append(", where the error is: <code>").append(Texts.html(text))
+                    .append("</code></p>\n")));
         }
     }
 

@@ -352,6 +352,8 @@ public final class MarkdownReport {
         }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
+        c.expectedRejection().ifPresent(want -> c.programLine(want.line()).ifPresent(text ->
+                line("  - line " + want.line() + ", where the error is: `" + text.replace("`", "'") + "`")));
         ReferenceTrace reference = c.evidence().reference();
         if (reference != null) {
             line("  - fclcert's reference evaluator at step " + reference.step() + ":");

@@ -115,6 +115,25 @@ class ReferenceTraceTest {
         assertNull(ReferenceTraces.at(TestCases.negative("B-FB-901", "FCL-S001", 1), 1));
     }
 
+    /**
+     * docs/images/e-or-max-001-jfuzzylogic-set.svg is the picture report.html drew for jFuzzyLogic on E-OR-MAX-001
+     * (it computed 9.09090909090909 at step 1, 'a OR b AND c' read left to right); it stays what the reference
+     * evaluator and SetPicture draw for that step.
+     */
+    @Test
+    void theReadmePictureOfAnAccumulatedSetIsWhatTheReportDraws() throws Exception {
+        RunCase c = RunCases.from(org.fclcert.corpus.Corpus.load(java.nio.file.Path.of("conformance"))
+                .byId("E-OR-MAX-001").orElseThrow());
+        ReferenceTrace t = ReferenceTraces.at(c, 1);
+        ReferenceTrace.OutputValue y = t.output("y");
+        // by hand (the case's derivation): RULE 1 at 0.8 concludes hi (100), RULE 2 at 1 lo (0): CoGS 80/1.8
+        assertEquals(List.of(List.of(0.0, 1.0), List.of(100.0, 0.8)), y.set());
+        String svg = org.fclcert.plot.SetPicture.svg("E-OR-MAX-001, step 1: accumulated set of y", "y", y.singletons(),
+                y.set(), c.vectors().get(0).out().get("y"), 9.09090909090909);
+        assertEquals(java.nio.file.Files.readString(java.nio.file.Path.of("docs/images/e-or-max-001-jfuzzylogic-set.svg")),
+                svg);
+    }
+
     @Test
     void numbersAreShortButExact() {
         assertEquals("85.7143", ReferenceTrace.number(600 / 7.0));

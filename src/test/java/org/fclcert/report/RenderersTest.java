@@ -125,6 +125,18 @@ class RenderersTest {
         assertTrue(json.contains("\"dataCheckList\" : [ ]"), "present and empty until the probes fill it");
     }
 
+    @Test
+    void anAcceptedInvalidProgramShowsTheLineWhereItsErrorIs() {
+        CaseResult accepted = MadeResults.made("B-FB-901", "basic", List.of(), List.of(), CaseStatus.FAILED,
+                "accepted a program the standard rejects: FCL-S001 at line 3", "reject: FCL-S001 at line 3", "accepted",
+                org.fclcert.harness.ExportStatus.NOT_RUN, "FUNCTION_BLOCK fb\nVAR_INPUT\n    x : REAL; `END_VAR\n");
+        Report r = ReportBuilder.build(Results.header(1, List.of(accepted), List.of()), List.of(accepted), List.of(),
+                List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(r).contains("  - line 3, where the error is: `x : REAL; 'END_VAR`\n"),
+                MarkdownReport.render(r));
+        assertTrue(HtmlReport.render(r).contains("<p>Line 3, where the error is: <code>x : REAL; `END_VAR</code></p>"));
+    }
+
     private static int count(String text, String what) {
         int n = 0;
         for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + 1)) {
