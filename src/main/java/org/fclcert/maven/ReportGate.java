@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.report.FeatureStatus;
 import org.fclcert.report.Report;
@@ -40,8 +39,8 @@ final class ReportGate {
         }
         List<String> problems = new ArrayList<>();
         if (failOn != FailOn.NONE && failOn != FailOn.ANY && !report.basicLevel().conformant()) {
-            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + failingCases(report, "basic")
-                    + table8Rows(report));
+            // the reason names the cases (the first ten): listing them again would print the list twice
+            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + table8Rows(report));
         }
         if (failOn == FailOn.CLAIMED) {
             List<String> claimed = claims.isEmpty() ? report.iut().claims() : claims;
@@ -88,12 +87,5 @@ final class ReportGate {
                 .filter(f -> f.table() == 8 && f.status() != FeatureStatus.REALISED)
                 .map(f -> f.id() + " (" + f.description() + ": " + f.status().label() + ")").toList();
         return rows.isEmpty() ? "" : "; Table 8 rows not realised: " + String.join(", ", rows);
-    }
-
-    private static String failingCases(Report report, String level) {
-        List<String> ids = report.cases().stream()
-                .filter(c -> level.equals(c.level()) && !c.interpretation() && c.status() != CaseStatus.PASSED)
-                .map(CaseResult::id).toList();
-        return ids.isEmpty() ? "" : "; cases not passed: " + String.join(", ", ids);
     }
 }
