@@ -104,6 +104,10 @@ final class Texts {
 
     /** The command that reruns one case against the same implementation and corpus. */
     static String repro(Report report, String caseId) {
+        String rerun = report.toolkit().rerun();
+        if (rerun != null) {
+            return rerun.replace(org.fclcert.harness.RunHeader.Toolkit.CASE, caseId);
+        }
         StringBuilder b = new StringBuilder("./fclcert certify --iut ").append(shellQuote(report.iut().spec()));
         if (report.iut().classpath() != null) {
             b.append(" --classpath ").append(shellQuote(report.iut().classpath()));

@@ -137,6 +137,24 @@ class RenderersTest {
         assertTrue(HtmlReport.render(r).contains("<p>Line 3, where the error is: <code>x : REAL; `END_VAR</code></p>"));
     }
 
+    @Test
+    void aRunFromMavenIsReproducedWithMaven(@TempDir Path dir) throws Exception {
+        CaseResult failed = Results.result("B-COGS-002", "basic", CaseStatus.FAILED, List.of("B-COGS"));
+        org.fclcert.harness.RunHeader cli = Results.header(1, List.of(failed), List.of());
+        org.fclcert.harness.RunHeader maven = new org.fclcert.harness.RunHeader(cli.iut(),
+                new org.fclcert.harness.RunHeader.Toolkit("0.1.0-test", "mvn verify -Dfclcert.cases={case}"),
+                cli.corpus(), cli.selection(), cli.startedAt());
+        Report r = ReportBuilder.build(maven, List.of(failed), List.of(), List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(r).contains("  - reproduce: `mvn verify -Dfclcert.cases=B-COGS-002`"));
+        assertTrue(HtmlReport.render(r).contains("<code class=\"cmd\">mvn verify -Dfclcert.cases=B-COGS-002</code>"));
+        Report back = JsonReport.read(ReportFiles.writeAll(r, dir).get(0));
+        assertEquals("mvn verify -Dfclcert.cases={case}", back.toolkit().rerun());
+        // the command line's own runs keep theirs, and their JSON has no rerun
+        Report plain = ReportBuilder.build(cli, List.of(failed), List.of(), List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(plain).contains("reproduce: `./fclcert certify --iut 'process:python3 fake.py'"));
+        assertFalse(Files.readString(ReportFiles.writeAll(plain, dir.resolve("cli")).get(0)).contains("rerun"));
+    }
+
     private static int count(String text, String what) {
         int n = 0;
         for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + 1)) {
