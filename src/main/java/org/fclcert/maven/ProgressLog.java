@@ -9,10 +9,16 @@ import org.fclcert.harness.RunListener;
 /**
  * Progress of a certification run in the Maven log, as Surefire writes it: a failed case at WARNING, an
  * errored one at ERROR, each with its step's inputs, expected and actual, the reference evaluator's trace and
- * the Maven command that reruns just that case; a skipped case at INFO.
+ * the Maven command that reruns just that case; a skipped case at INFO; while cases pass, a progress line at
+ * most every ten seconds.
  */
 final class ProgressLog implements RunListener {
+    /** A CI log shows the run is alive at least this often while cases pass (Surefire says nothing until the end). */
+    static final long PROGRESS_EVERY_NANOS = 10_000_000_000L;
+
     private final Log log;
+    private long lastLine = System.nanoTime();
+    private int passed;
 
     ProgressLog(Log log) {
         this.log = log;
@@ -21,8 +27,14 @@ final class ProgressLog implements RunListener {
     @Override
     public void caseFinished(CaseResult result, int index, int total) {
         if (result.status() == CaseStatus.PASSED) {
+            passed++;
+            if (System.nanoTime() - lastLine >= PROGRESS_EVERY_NANOS) {
+                log.info("progress: " + (index + 1) + " of " + total + " cases run, " + passed + " passed");
+                lastLine = System.nanoTime();
+            }
             return;
         }
+        lastLine = System.nanoTime();
         String line = "[" + (index + 1) + "/" + total + "] " + result.id() + " "
                 + result.status().name().toLowerCase(Locale.ROOT) + (result.message() == null ? "" : ": " + result.message());
         switch (result.status()) {
