@@ -43,7 +43,7 @@ record CaseResultJson(
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record PresentedJson(String dialect, PresentedStatus status, String message, Integer step,
             Map<String, Double> inputs, Object expected, Object actual, String error, Double maxError,
-            List<String> notes, String program) {
+            ReferenceTrace reference, List<String> notes, String program) {
 
         static PresentedJson of(CaseResult.Presented p) {
             if (p == null) {
@@ -54,14 +54,14 @@ record CaseResultJson(
             CaseResult.Mismatch m = e.mismatch();
             return new PresentedJson(p.dialect(), p.status(), p.message(), step == null ? null : step.number(),
                     step == null ? null : step.inputs(), m == null ? null : m.expected(),
-                    m == null ? null : m.actual(), e.error(), e.maxError(), p.notes().isEmpty() ? null : p.notes(),
-                    p.program());
+                    m == null ? null : m.actual(), e.error(), e.maxError(), e.reference(),
+                    p.notes().isEmpty() ? null : p.notes(), p.program());
         }
 
         CaseResult.Presented toPresented() {
             CaseResult.Step s = step == null ? null : new CaseResult.Step(step, inputs);
             return new CaseResult.Presented(dialect, status == null ? PresentedStatus.SKIPPED : status, message,
-                    notes, new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError), program);
+                    notes, new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError, reference), program);
         }
     }
 

@@ -59,7 +59,7 @@ final class CaseRunner {
             r.errored("the implementation overflowed the stack", "java.lang.StackOverflowError");
         }
         if (!c.expectReject()) {
-            r.traceReference();
+            r.traceReference(c);
         }
         CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
         if (presenter != null && !c.expectReject()) {

@@ -87,10 +87,13 @@ final class ResultBuilder {
         return this;
     }
 
-    /** The reference evaluator's trace at the step that went wrong (positive cases that did not pass). */
-    ResultBuilder traceReference() {
+    /**
+     * The reference evaluator's trace at the step that went wrong (positive cases that did not pass), on
+     * {@code original}: the case as the corpus writes it, also when a library's layout of it was sent.
+     */
+    ResultBuilder traceReference(RunCase original) {
         if (status != CaseStatus.PASSED && step != null) {
-            reference = ReferenceTraces.at(c, step.number());
+            reference = ReferenceTraces.at(original, step.number());
         }
         return this;
     }

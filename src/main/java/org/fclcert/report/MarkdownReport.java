@@ -197,6 +197,10 @@ public final class MarkdownReport {
             java.util.Optional.ofNullable(p.evidence().mismatch()).ifPresentOrElse(m -> b.append(" — expected ").append(Texts.cell(Texts.describe(
                     m.expected()))).append(", got ").append(Texts.cell(Texts.describe(m.actual()))), () -> { });
             line(b.toString());
+            if (p.evidence().reference() != null) {
+                line("  - fclcert's reference evaluator at step " + p.evidence().reference().step() + ":");
+                p.evidence().reference().lines().forEach(l -> line("    - " + Texts.cell(l)));
+            }
             p.notes().forEach(n -> line("  - " + Texts.cell(n)));
         }
         line("");
