@@ -311,6 +311,7 @@ public final class HtmlReport {
                 .append(Texts.html(c.message())).append("</p>\n");
         comparison(c);
         reference(c);
+        presented(c);
         Double maxError = c.evidence().maxError();
         c.verdict().notes().forEach(n -> out.append("<p class=\"small\">Note: ").append(Texts.html(n)).append("</p>\n"));
         out.append("<p class=\"small\">Tolerance: ").append(Texts.html(c.setup().tolerance())).append(" · max measured error: ")
@@ -332,12 +333,17 @@ public final class HtmlReport {
     }
 
     private void comparison(CaseResult c) {
-        CaseResult.Step step = c.evidence().step();
+        comparison(c, c.evidence());
+    }
+
+    /** The step's inputs and expected against actual, of the language axis or of the semantic one. */
+    private void comparison(CaseResult c, CaseResult.Evidence evidence) {
+        CaseResult.Step step = evidence.step();
         if (step != null) {
             out.append("<p>Step ").append(step.number()).append(", inputs: <code>")
                     .append(Texts.html(Texts.describe(step.inputs()))).append("</code></p>\n");
         }
-        CaseResult.Mismatch mismatch = c.evidence().mismatch();
+        CaseResult.Mismatch mismatch = evidence.mismatch();
         if (mismatch instanceof CaseResult.Mismatch.Outputs outputs) {
             Map<String, Double> expected = outputs.expected();
             Map<?, ?> actual = outputs.actual();
@@ -355,6 +361,22 @@ public final class HtmlReport {
         }
     }
 
+    /** The semantic axis of a presented case: how the case fared written in the library's layout, and why not. */
+    private void presented(CaseResult c) {
+        CaseResult.Presented p = c.presented();
+        if (p == null) {
+            return;
+        }
+        out.append("<p><b>Semantic axis</b> (written in ").append(Texts.html(p.dialect()))
+                .append("'s layout): <span class=\"st ").append(p.status().word()).append("\">").append(p.status().word())
+                .append("</span> ").append(Texts.html(p.message())).append("</p>\n");
+        if (p.status() == org.fclcert.harness.PresentedStatus.FAILED
+                || p.status() == org.fclcert.harness.PresentedStatus.ERRORED) {
+            comparison(c, p.evidence());
+            reference(c.id() + " (" + p.dialect() + " layout)", p.evidence());
+        }
+    }
+
     /** How many outputs of one case get a picture of their accumulated set. */
     static final int PICTURES_PER_CASE = 3;
 
@@ -363,14 +385,18 @@ public final class HtmlReport {
      * set with the standard's value and the implementation's marked (inline SVG, nothing fetched).
      */
     private void reference(CaseResult c) {
-        ReferenceTrace t = c.evidence().reference();
+        reference(c.id(), c.evidence());
+    }
+
+    private void reference(String caseId, CaseResult.Evidence evidence) {
+        ReferenceTrace t = evidence.reference();
         if (t == null) {
             return;
         }
         out.append("<p>fclcert's reference evaluator at step ").append(t.step()).append(":</p><ul class=\"trace\">");
         t.lines().forEach(l -> out.append("<li>").append(Texts.html(l)).append("</li>"));
         out.append("</ul>\n");
-        if (!(c.evidence().mismatch() instanceof CaseResult.Mismatch.Outputs outputs)) {
+        if (!(evidence.mismatch() instanceof CaseResult.Mismatch.Outputs outputs)) {
             return;
         }
         int drawn = 0;
@@ -381,7 +407,7 @@ public final class HtmlReport {
                     || drawn++ >= PICTURES_PER_CASE) {
                 continue;
             }
-            String svg = SetPicture.svg(c.id() + ", step " + t.step() + ": accumulated set of " + o.variable(),
+            String svg = SetPicture.svg(caseId + ", step " + t.step() + ": accumulated set of " + o.variable(),
                     o.variable(), o.singletons(), o.set(), want.getValue(), got instanceof Double d ? d : null);
             out.append("<figure class=\"set\">").append(svg.substring(svg.indexOf("<svg")))
                     .append("</figure>\n");

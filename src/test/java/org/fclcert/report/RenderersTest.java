@@ -155,6 +155,30 @@ class RenderersTest {
         assertFalse(Files.readString(ReportFiles.writeAll(plain, dir.resolve("cli")).get(0)).contains("rerun"));
     }
 
+    @Test
+    void aCaseShowsItsSemanticAxisWithTheReferencesTraceAndPicture() {
+        org.fclcert.harness.ReferenceTrace trace = new org.fclcert.harness.ReferenceTrace(1,
+                List.of(new org.fclcert.harness.ReferenceTrace.RuleDegree("r", "1", 0.5, List.of("y IS hi"))),
+                List.of(new org.fclcert.harness.ReferenceTrace.OutputValue("y", 100, "defuzzified", true,
+                        List.of(List.of(0.0, 0.0), List.of(100.0, 0.5)))));
+        CaseResult rejected = MadeResults.made("B-COGS-001", "basic", List.of("B-COGS"), List.of(), CaseStatus.FAILED,
+                "rejected a program the standard accepts", "load and evaluate", "rejected",
+                org.fclcert.harness.ExportStatus.NOT_RUN, "FUNCTION_BLOCK fb\nEND_FUNCTION_BLOCK\n")
+                .withPresented(new CaseResult.Presented("fuzzylite", org.fclcert.harness.PresentedStatus.FAILED,
+                        "step 1 of 1: y = 60.0 where 100.0 is expected", List.of(), new CaseResult.Evidence(
+                        new CaseResult.Step(1, java.util.Map.of("x", 0.5)), new CaseResult.Mismatch.Outputs(
+                        java.util.Map.of("y", 100.0), java.util.Map.of("y", 60.0)), null, 40.0, trace), "text"));
+        Report r = ReportBuilder.build(Results.header(1, List.of(rejected), List.of()).presentedAs("fuzzylite"),
+                List.of(rejected), List.of(), List.of(), java.time.Instant.EPOCH);
+        String html = HtmlReport.render(r);
+        assertTrue(html.contains("<p><b>Semantic axis</b> (written in fuzzylite's layout): <span class=\"st failed\">"
+                + "failed</span> step 1 of 1: y = 60.0 where 100.0 is expected</p>"), html);
+        assertTrue(html.contains("<li>rules fired: RULE 1 at 0.5 → y IS hi</li>"));
+        assertTrue(html.contains("<title>B-COGS-001 (fuzzylite layout), step 1: accumulated set of y</title>"), html);
+        assertTrue(MarkdownReport.render(r).contains("    - y = 100, defuzzified from the singletons 100 (degree 0.5)"),
+                MarkdownReport.render(r));
+    }
+
     private static int count(String text, String what) {
         int n = 0;
         for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + 1)) {
