@@ -141,8 +141,7 @@ public final class HtmlReport {
                     .presentAs())).append(" layout).</p>\n");
         }
         // a partial run tests a few rows: those lead, the untested ones are folded away
-        List<Report.FeatureRow> untested = r.run().selection().whole() ? List.of()
-                : rows.stream().filter(HtmlReport::untested).toList();
+        List<Report.FeatureRow> untested = rows.stream().filter(f -> Texts.folded(r, f)).toList();
         List<Report.FeatureRow> shown = rows.stream().filter(f -> !untested.contains(f)).toList();
         if (!shown.isEmpty()) {
             featureRows(shown, semantic);
@@ -153,11 +152,6 @@ public final class HtmlReport {
             featureRows(untested, semantic);
             out.append("</details>\n");
         }
-    }
-
-    private static boolean untested(Report.FeatureRow f) {
-        return f.status() == FeatureStatus.NOT_TESTED
-                && (f.semantic() == null || f.semantic().status() == FeatureStatus.NOT_TESTED);
     }
 
     private void featureRows(List<Report.FeatureRow> rows, boolean semantic) {

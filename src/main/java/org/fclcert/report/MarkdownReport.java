@@ -141,13 +141,26 @@ public final class MarkdownReport {
     }
 
     private void featureTable(int table) {
-        if (r.semantic() != null) {
-            semanticFeatureTable(table);
-            return;
+        List<Report.FeatureRow> folded = rows(table).stream().filter(f -> Texts.folded(r, f)).toList();
+        List<Report.FeatureRow> shown = rows(table).stream().filter(f -> !folded.contains(f)).toList();
+        if (!shown.isEmpty()) {
+            if (r.semantic() != null) {
+                semanticFeatureTable(shown);
+            } else {
+                languageFeatureTable(shown);
+            }
         }
+        if (!folded.isEmpty()) {
+            line("Not tested in this run (partial selection): " + folded.stream().map(Report.FeatureRow::id)
+                    .collect(java.util.stream.Collectors.joining(", ")) + ".");
+            line("");
+        }
+    }
+
+    private void languageFeatureTable(List<Report.FeatureRow> rows) {
         line("| Language element | Feature | Verdict | Passed | Not passed |");
         line("| --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
                     + String.join(", ", f.notPassed()) + " |");
@@ -161,12 +174,12 @@ public final class MarkdownReport {
     }
 
     /** Both axes side by side: the language verdict (the standard's text) and the semantic one (the layout). */
-    private void semanticFeatureTable(int table) {
+    private void semanticFeatureTable(List<Report.FeatureRow> rows) {
         String layout = r.semantic().presentAs();
         line("| Language element | Feature | Language verdict | Passed | Not passed | Semantic verdict (" + layout
                 + " layout) | Passed | Not passed | Not presentable |");
         line("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             Report.Semantic sem = f.semantic();
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "

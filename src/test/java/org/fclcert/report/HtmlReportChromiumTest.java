@@ -70,6 +70,17 @@ class HtmlReportChromiumTest {
         assertTrue(count(page.getSubimage(0, 0, 1200, 700), "#fadddd") > 200, "a red 'failed' badge near the top");
     }
 
+    @Test
+    void reportMdOfAPartialRunListsTheRowsItTestedAndNamesTheOthersInOneLine() {
+        String md = MarkdownReport.render(failingContinuousCase());
+        assertTrue(md.contains("Not tested in this run (partial selection): B-FB, B-IN-TERM, B-OUT-SINGLETON, B-AND-MIN,"),
+                md);
+        assertTrue(md.contains("| defuzzification method | E-COG: METHOD CoG, centre of gravity | **not realised** | 0/1 "
+                + "| E-COG-001 |"), md);
+        assertTrue(!md.contains("| not tested |"), "no untested row is tabled");
+        assertTrue(md.contains("    - rules fired: RULE 1 at 0.6 → y IS mid\n"), md);
+    }
+
     private static int count(BufferedImage image, String rgb) {
         int want = Integer.parseInt(rgb.substring(1), 16);
         int n = 0;
