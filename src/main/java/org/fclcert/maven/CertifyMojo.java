@@ -19,6 +19,7 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.RunHeader;
 import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
@@ -133,7 +134,7 @@ public class CertifyMojo extends AbstractMojo {
                 .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
-                .presentAs(layout).build();
+                .presentAs(layout).rerun(ProgressLog.reproduce(RunHeader.Toolkit.CASE)).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));

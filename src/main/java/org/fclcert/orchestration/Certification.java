@@ -66,10 +66,12 @@ public final class Certification {
      * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
      *                    null to describe {@code selection}
      * @param presentAs   the semantic axis: in which library's layout positive cases are also sent (null: auto)
+     * @param rerun       the front end's command that reruns one case, {@code {case}} for its id (null: the
+     *                    command line's); the reports print it for every case that did not pass
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters, PresentAs presentAs) {
+            List<List<String>> filters, PresentAs presentAs, String rerun) {
 
         public Request {
             Objects.requireNonNull(iutSpec, "iutSpec");
@@ -115,6 +117,7 @@ public final class Certification {
         private Prober.Options probe;
         private List<List<String>> filters;
         private PresentAs presentAs = PresentAs.AUTO;
+        private String rerun;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -174,9 +177,15 @@ public final class Certification {
             return this;
         }
 
+        /** The front end's command that reruns one case, {@code {case}} standing for its id (default: the CLI's). */
+        public Builder rerun(String value) {
+            rerun = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters, presentAs);
+                    probe, filters, presentAs, rerun);
         }
     }
 
@@ -269,7 +278,7 @@ public final class Certification {
         try (ImplementationUnderTest iut = open(request)) {
             IutInfo info = hello(iut, request.iutSpec());
             RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
-                    request.corpus().sha256(), all, selected, request.filtersForReport());
+                    request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun());
             RunHeader header = request.presentAs().resolve(request.iutSpec())
                     .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
             Path dir = request.outDir() != null ? request.outDir()
