@@ -93,7 +93,7 @@ public final class Fuzzer {
     private volatile Instant start;
 
     public Fuzzer() {
-        this(new ExactFairness());
+        this(new ScreenedFairness());
     }
 
     public Fuzzer(FairnessJudge fairness) {
