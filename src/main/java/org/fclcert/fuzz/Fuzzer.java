@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Random;
+import java.util.TreeMap;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import org.fclcert.check.Analysis;
@@ -19,6 +20,7 @@ import org.fclcert.iut.IutInfo;
 import org.fclcert.model.Feature;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.write.CanonicalWriter;
 
 /**
@@ -36,32 +38,41 @@ public final class Fuzzer {
      * @param shrinkTime   the longest one finding is shrunk
      * @param maxShrinks   the most disagreements shrunk in one run; later unexplained ones are only counted
      * @param maxFindings  stop generating once this many distinct findings are known (0 = no limit)
+     * @param layout       the library layout programs are sent in ({@code --present-as}); empty: standard FCL
      */
     public record Options(long seed, Duration budget, long maxPrograms, FuzzSettings settings, int jobs,
-            Duration shrinkTime, int maxShrinks, int maxFindings) {
+            Duration shrinkTime, int maxShrinks, int maxFindings, Optional<Dialect> layout) {
         public Options {
             if (jobs < 1) {
                 throw new IllegalArgumentException("jobs must be at least 1");
+            }
+            if (layout.isPresent() && layout.get() == Dialect.STRICT) {
+                throw new IllegalArgumentException("standard FCL is sent without a layout");
             }
         }
 
         public static Options of(long seed, Duration budget, FuzzSettings settings, int jobs) {
             Duration shrink = Duration.ofSeconds(Math.max(15, Math.min(60, budget.toSeconds() / 3)));
-            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0);
+            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0, Optional.empty());
         }
 
         public Options withMaxPrograms(long n) {
-            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings);
+            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings, layout);
         }
 
         public Options withMaxFindings(int n) {
-            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n);
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n, layout);
+        }
+
+        /** Programs sent in this library's layout ({@code --present-as}); empty: as standard FCL. */
+        public Options withLayout(Optional<Dialect> l) {
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, maxFindings, l);
         }
     }
 
     /** Counters of a run, as shown while it goes and in the summary. */
     public record Progress(long programs, long vectors, int findings, long disagreements, long elapsedMillis,
-            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts) {
+            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts, long notPresentable) {
         public double programsPerSecond() {
             return elapsedMillis == 0 ? 0 : programs * 1000.0 / elapsedMillis;
         }
@@ -71,9 +82,17 @@ public final class Fuzzer {
         }
     }
 
-    /** The whole result. */
+    /**
+     * The whole result.
+     *
+     * @param notPresentable     per reason (the writer's {@code FCL-X1nn} code, or a fault of fclcert's: see {@link
+     *                           Presentation}), how many generated programs were not sent because the layout of
+     *                           {@code --present-as} could not say them
+     * @param presentationFaults the first programs a writer and fclcert's reader of its dialect disagreed on
+     */
     public record Result(IutInfo iut, Options options, Instant started, Progress progress, List<Finding> findings,
-            long unexplained, List<String> generatorBugs, List<String> infrastructureErrors) {
+            long unexplained, List<String> generatorBugs, List<String> infrastructureErrors,
+            Map<String, Long> notPresentable, List<String> presentationFaults) {
     }
 
     private final CanonicalWriter writer = new CanonicalWriter();
@@ -86,6 +105,10 @@ public final class Fuzzer {
     private final AtomicLong noSteps = new AtomicLong();
     private final AtomicLong unexplained = new AtomicLong();
     private final AtomicLong shrinks = new AtomicLong();
+    private final AtomicLong notPresentable = new AtomicLong();
+    private final Map<String, Long> notPresentableBy = new TreeMap<>();
+    private final List<String> presentationFaults = new ArrayList<>();
+    private Presentation presentation = Presentation.standard();
     private final List<String> generatorBugs = new ArrayList<>();
     private final List<String> infrastructure = new ArrayList<>();
     private final Map<String, Finding> findings = new LinkedHashMap<>();
@@ -117,6 +140,7 @@ public final class Fuzzer {
     public Result run(IutSession.Factory factory, Options options, Duration interval, Consumer<Progress> progress)
             throws IutException, InterruptedException {
         start = Instant.now();
+        presentation = new Presentation(options.layout());
         IutSession first = new IutSession(factory);
         IutInfo info;
         try {
@@ -155,7 +179,8 @@ public final class Fuzzer {
         list.sort(Comparator.comparingLong(Finding::programIndex));
         synchronized (generatorBugs) {
             return new Result(info, options, start, progress(), List.copyOf(list), unexplained.get(),
-                    List.copyOf(generatorBugs), List.copyOf(infrastructure));
+                    List.copyOf(generatorBugs), List.copyOf(infrastructure), java.util.Collections.unmodifiableMap(new TreeMap<>(notPresentableBy)),
+                    List.copyOf(presentationFaults));
         }
     }
 
@@ -170,7 +195,7 @@ public final class Fuzzer {
         }
         long elapsed = start == null ? 0 : Duration.between(start, Instant.now()).toMillis();
         return new Progress(programs.get(), vectors.get(), n, disagreements.get(), elapsed, unfair.get(), noSteps.get(),
-                generatorBugs.size(), restarts);
+                generatorBugs.size(), restarts, notPresentable.get());
     }
 
     private void job(IutSession given, IutSession.Factory factory, Options options, ProgramGenerator generator,
@@ -231,6 +256,11 @@ public final class Fuzzer {
             return;
         }
         Program program = analysis.program().get();
+        Optional<Presentation.Outcome> unwritable = presentation.unwritable(program);
+        if (unwritable.isPresent()) {
+            notPresented(index, unwritable.get());
+            return;
+        }
         ReferenceProgram ref = new ReferenceProgram(program);
         List<java.util.Map<String, Double>> steps = vg.steps(ref, new Random(seed ^ 0x5DEECE66DL));
         if (steps.isEmpty()) {
@@ -244,7 +274,12 @@ public final class Fuzzer {
             noSteps.incrementAndGet();
             return;
         }
-        Optional<Deviation> d = Trial.run(session, ref, text, expected);
+        Presentation.Outcome presented = presentation.present(program, expected);
+        if (presented.sent().isEmpty()) {
+            notPresented(index, presented);
+            return;
+        }
+        Optional<Deviation> d = Trial.run(session, ref, presented.sent().get(), expected);
         programs.incrementAndGet();
         vectors.addAndGet(d.isEmpty() ? steps.size() : d.get().step() + 1);     // the vectors the IUT evaluated
         if (d.isEmpty()) {
@@ -261,8 +296,8 @@ public final class Fuzzer {
         }
         long foundAfter = Duration.between(start, Instant.now()).toMillis();
         Instant deadline = Instant.now().plus(options.shrinkTime());
-        Shrinker.Result shrunk = new Shrinker(session, fairness, 4000, deadline).shrink(raw, d.get());
-        Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation());
+        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline).shrink(raw, d.get());
+        Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation(), presentation);
         Finding f = new Finding(feature, d.get().kind(), shrunk.minimal(), shrunk.deviation(), d.get(), index, seed,
                 (int) text.lines().count(), shrunk.tried(), 0, foundAfter,
                 Duration.between(start, Instant.now()).toMillis() - foundAfter);
@@ -280,7 +315,21 @@ public final class Fuzzer {
         }
     }
 
-    /** True when switching off the feature of a finding of the same kind makes the disagreement go away. */
+    private void notPresented(long index, Presentation.Outcome o) {
+        notPresentable.incrementAndGet();
+        synchronized (notPresentableBy) {
+            notPresentableBy.merge(o.reason(), 1L, Long::sum);
+            if (Presentation.FAULTS.contains(o.reason()) && presentationFaults.size() < 5) {
+                presentationFaults.add("program " + index + ": " + o.reason() + ": " + o.detail());
+            }
+        }
+    }
+
+    /**
+     * True when the disagreement is a known finding of the same kind again: a refusal that says the same (numbers
+     * aside), a small error on an output whose METHOD is a finding, or one that goes away when the feature of a
+     * finding is switched off.
+     */
     private boolean known(IutSession session, Shrinker.Case raw, Deviation d) throws IutException {
         List<Finding> same;
         synchronized (findings) {
@@ -297,8 +346,18 @@ public final class Fuzzer {
                 }
             }
         }
+        // a small error on an output whose METHOD is already a finding (a sampling library errs so on every such output)
+        Optional<Feature> method = Isolation.smallErrorOfMethod(raw, d);
+        for (Finding f : same) {
+            if (method.isPresent() && f.feature() == method.get()) {
+                synchronized (findings) {
+                    findings.put(f.key(), findings.get(f.key()).withDuplicate());
+                }
+                return true;
+            }
+        }
         java.util.Set<Feature> used = new FeatureDetector().detect(raw.program()).features();
-        Shrinker probe = new Shrinker(session, fairness, Integer.MAX_VALUE, Instant.MAX);
+        Shrinker probe = new Shrinker(session, fairness, presentation, Integer.MAX_VALUE, Instant.MAX);
         for (Finding f : same) {
             if (!used.contains(f.feature())) {
                 continue;
