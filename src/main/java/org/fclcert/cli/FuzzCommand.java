@@ -145,6 +145,8 @@ final class FuzzCommand implements Callable<Integer> {
         stdout.printf(Locale.ROOT, "%s %s: %d programs, %d vectors in %.1f s (%.1f programs/s, %.1f vectors/s), %d finding(s)%n",
                 result.iut().name(), result.iut().version(), p.programs(), p.vectors(), p.elapsedMillis() / 1000.0,
                 p.programsPerSecond(), p.vectorsPerSecond(), written.size());
+        stdout.printf(Locale.ROOT, "  time of the jobs: %.1f s reference side, %.1f s implementation, %.1f s on disagreements%n",
+                p.referenceMillis() / 1000.0, p.implementationMillis() / 1000.0, p.shrinkMillis() / 1000.0);
         run.layout().ifPresent(l -> stdout.println("  sent in " + l.displayName() + "'s layout; " + p.notPresentable()
                 + " generated program(s) not presentable" + (result.notPresentable().isEmpty() ? ""
                         : " (" + FuzzReport.reasons(result.notPresentable()) + ")")));

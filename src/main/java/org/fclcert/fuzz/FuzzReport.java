@@ -105,6 +105,10 @@ public final class FuzzReport {
         counts.put("restarts", p.restarts());
         counts.put("generatorBugs", p.generatorBugs());
         counts.put("notPresentable", p.notPresentable());
+        ObjectNode time = root.putObject("time");
+        time.put("referenceSeconds", p.referenceMillis() / 1000.0);
+        time.put("implementationSeconds", p.implementationMillis() / 1000.0);
+        time.put("shrinkSeconds", p.shrinkMillis() / 1000.0);
         ObjectNode why = root.putObject("notPresentable");
         r.notPresentable().forEach(why::put);
         ArrayNode list = root.putArray("findings");
@@ -152,6 +156,10 @@ public final class FuzzReport {
                         .map(Feature::id).sorted().toList(),
                 r.options().jobs(), p.elapsedMillis() / 1000.0, p.programs(), p.vectors(), p.programsPerSecond(),
                 p.vectorsPerSecond(), p.disagreements(), written.size()));
+        md.append(String.format(Locale.ROOT, "Time of the jobs (summed): %.1f s on the reference side (generating, "
+                + "checking, judging and evaluating steps), %.1f s waiting for the implementation, %.1f s on "
+                + "disagreements (deduplicating, shrinking).%n%n", p.referenceMillis() / 1000.0,
+                p.implementationMillis() / 1000.0, p.shrinkMillis() / 1000.0));
         r.options().layout().ifPresent(l -> md.append("Programs were sent in ").append(l.displayName())
                 .append("'s layout (`--present-as ").append(l.cliName()).append("`); ").append(p.notPresentable())
                 .append(" generated program(s) were not presentable").append(r.notPresentable().isEmpty() ? ""

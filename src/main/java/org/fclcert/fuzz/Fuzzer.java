@@ -71,8 +71,15 @@ public final class Fuzzer {
     }
 
     /** Counters of a run, as shown while it goes and in the summary. */
+    /**
+     * @param referenceMillis      time the jobs spent on the reference side (generating, checking, judging and
+     *                             evaluating steps, presenting), summed over jobs
+     * @param implementationMillis time the jobs spent waiting for the implementation (load and every step)
+     * @param shrinkMillis         time spent deciding whether a disagreement is known, and shrinking it
+     */
     public record Progress(long programs, long vectors, int findings, long disagreements, long elapsedMillis,
-            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts, long notPresentable) {
+            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts, long notPresentable,
+            long referenceMillis, long implementationMillis, long shrinkMillis) {
         public double programsPerSecond() {
             return elapsedMillis == 0 ? 0 : programs * 1000.0 / elapsedMillis;
         }
@@ -106,6 +113,9 @@ public final class Fuzzer {
     private final AtomicLong unexplained = new AtomicLong();
     private final AtomicLong shrinks = new AtomicLong();
     private final AtomicLong notPresentable = new AtomicLong();
+    private final AtomicLong referenceNanos = new AtomicLong();
+    private final AtomicLong implementationNanos = new AtomicLong();
+    private final AtomicLong shrinkNanos = new AtomicLong();
     private final Map<String, Long> notPresentableBy = new TreeMap<>();
     private final List<String> presentationFaults = new ArrayList<>();
     private Presentation presentation = Presentation.standard();
@@ -195,7 +205,8 @@ public final class Fuzzer {
         }
         long elapsed = start == null ? 0 : Duration.between(start, Instant.now()).toMillis();
         return new Progress(programs.get(), vectors.get(), n, disagreements.get(), elapsed, unfair.get(), noSteps.get(),
-                generatorBugs.size(), restarts, notPresentable.get());
+                generatorBugs.size(), restarts, notPresentable.get(), referenceNanos.get() / 1_000_000,
+                implementationNanos.get() / 1_000_000, shrinkNanos.get() / 1_000_000);
     }
 
     private void job(IutSession given, IutSession.Factory factory, Options options, ProgramGenerator generator,
@@ -243,8 +254,36 @@ public final class Fuzzer {
         };
     }
 
+    /** A generated program ready to be sent: its text, model, reference, fair steps, expected values, text as sent. */
+    private record Prepared(long seed, String text, Program program, ReferenceProgram ref,
+            List<java.util.Map<String, Double>> steps, List<ReferenceProgram.Step> expected, Presentation.Sent sent) {
+    }
+
     private void one(IutSession session, Options options, ProgramGenerator generator, VectorGenerator vg, long index)
             throws IutException {
+        long t0 = System.nanoTime();
+        Prepared p = prepare(options, generator, vg, index);
+        long t1 = System.nanoTime();
+        referenceNanos.addAndGet(t1 - t0);
+        if (p == null) {
+            return;
+        }
+        Optional<Deviation> d = Trial.run(session, p.ref(), p.sent(), p.expected());
+        long t2 = System.nanoTime();
+        implementationNanos.addAndGet(t2 - t1);
+        programs.incrementAndGet();
+        vectors.addAndGet(d.isEmpty() ? p.steps().size() : d.get().step() + 1);     // the vectors the IUT evaluated
+        if (d.isPresent()) {
+            try {
+                disagreement(session, options, index, p, d.get());
+            } finally {
+                shrinkNanos.addAndGet(System.nanoTime() - t2);
+            }
+        }
+    }
+
+    /** The reference side of one program; null when there is nothing to send (counted why). */
+    private Prepared prepare(Options options, ProgramGenerator generator, VectorGenerator vg, long index) {
         long seed = programSeed(options.seed(), index);
         Program generated = generator.generate(seed);
         String text = writer.write(generated);
@@ -253,41 +292,41 @@ public final class Fuzzer {
             synchronized (generatorBugs) {
                 generatorBugs.add("program " + index + " (seed " + seed + "): " + analysis.diagnostics().get(0));
             }
-            return;
+            return null;
         }
         Program program = analysis.program().get();
         Optional<Presentation.Outcome> unwritable = presentation.unwritable(program);
         if (unwritable.isPresent()) {
             notPresented(index, unwritable.get());
-            return;
+            return null;
         }
         ReferenceProgram ref = new ReferenceProgram(program);
         List<java.util.Map<String, Double>> steps = vg.steps(ref, new Random(seed ^ 0x5DEECE66DL));
         if (steps.isEmpty()) {
             noSteps.incrementAndGet();
-            return;
+            return null;
         }
         List<ReferenceProgram.Step> expected;
         try {
             expected = ref.run(steps);
         } catch (EvaluationException e) {
             noSteps.incrementAndGet();
-            return;
+            return null;
         }
         Presentation.Outcome presented = presentation.present(program, expected);
         if (presented.sent().isEmpty()) {
             notPresented(index, presented);
-            return;
+            return null;
         }
-        Optional<Deviation> d = Trial.run(session, ref, presented.sent().get(), expected);
-        programs.incrementAndGet();
-        vectors.addAndGet(d.isEmpty() ? steps.size() : d.get().step() + 1);     // the vectors the IUT evaluated
-        if (d.isEmpty()) {
-            return;
-        }
+        return new Prepared(seed, text, program, ref, steps, expected, presented.sent().get());
+    }
+
+    /** A new disagreement: a known finding again, or shrunk into a finding of its own. */
+    private void disagreement(IutSession session, Options options, long index, Prepared p, Deviation deviation)
+            throws IutException {
         disagreements.incrementAndGet();
-        Shrinker.Case raw = new Shrinker.Case(program, steps);
-        if (known(session, raw, d.get())) {
+        Shrinker.Case raw = new Shrinker.Case(p.program(), p.steps());
+        if (known(session, raw, deviation)) {
             return;
         }
         if (shrinks.incrementAndGet() > options.maxShrinks()) {
@@ -296,10 +335,10 @@ public final class Fuzzer {
         }
         long foundAfter = Duration.between(start, Instant.now()).toMillis();
         Instant deadline = Instant.now().plus(options.shrinkTime());
-        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline).shrink(raw, d.get());
+        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline).shrink(raw, deviation);
         Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation(), presentation);
-        Finding f = new Finding(feature, d.get().kind(), shrunk.minimal(), shrunk.deviation(), d.get(), index, seed,
-                (int) text.lines().count(), shrunk.tried(), 0, foundAfter,
+        Finding f = new Finding(feature, deviation.kind(), shrunk.minimal(), shrunk.deviation(), deviation, index, p.seed(),
+                (int) p.text().lines().count(), shrunk.tried(), 0, foundAfter,
                 Duration.between(start, Instant.now()).toMillis() - foundAfter);
         synchronized (findings) {
             Finding before = findings.get(f.key());

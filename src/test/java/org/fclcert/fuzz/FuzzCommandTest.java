@@ -33,6 +33,9 @@ class FuzzCommandTest {
         assertEquals(0, j.at("/counts/findings").asLong());
         assertEquals(0, j.at("/counts/generatorBugs").asLong());
         assertTrue(j.at("/counts/vectors").asLong() >= 60, j.toString());
+        // where the time went: the reference side is most of a run against the reference in process
+        assertTrue(j.at("/time/referenceSeconds").asDouble() > j.at("/time/implementationSeconds").asDouble(), j.toString());
+        assertEquals(0.0, j.at("/time/shrinkSeconds").asDouble(), j.toString());
         assertTrue(Files.readString(dir.resolve("fuzz.md")).contains("**60 programs"), Files.readString(dir.resolve("fuzz.md")));
         // not a terminal: a progress line every few seconds at most, and the summary on stdout
         assertTrue(out.toString().contains("60 programs"), out.toString());
