@@ -58,7 +58,14 @@ public final class CaseFiles {
                 .append("]\n");
         out.append("tests: [").append(f.feature().id()).append("]\n");
         out.append("tolerance: ").append(continuous ? "continuous" : "exact").append('\n');
-        out.append("flags: [").append(stateful ? "stateful" : "").append("]\n");
+        List<String> flags = new ArrayList<>();
+        if (stateful) {
+            flags.add("stateful");
+        }
+        if (Isolation.verticalEdgeUnderAnInput(c).isPresent()) {
+            flags.add("\"interpretation:1\"");      // the degree at a vertical edge is fclcert's reading (semantics.md 1)
+        }
+        out.append("flags: [").append(String.join(", ", flags)).append("]\n");
         out.append("derivation: |\n");
         for (String line : derivation(f, steps, iutName, sent, sentAs)) {
             out.append("  ").append(line).append('\n');

@@ -200,7 +200,7 @@ final class Isolation {
      * differ on the degree at the edge (docs/semantics.md point 1 takes the largest); the shrinker never makes an
      * edge, so one left in a minimal case under an input was there from the start, and is needed.
      */
-    private static Optional<Feature> verticalEdgeUnderAnInput(Shrinker.Case c) {
+    static Optional<Feature> verticalEdgeUnderAnInput(Shrinker.Case c) {
         for (Fuzzification f : c.block().fuzzifications()) {
             for (Term t : f.terms()) {
                 if (!(t.function() instanceof MembershipFunction.Points p)) {
