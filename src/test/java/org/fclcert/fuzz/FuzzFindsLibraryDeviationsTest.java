@@ -64,8 +64,9 @@ class FuzzFindsLibraryDeviationsTest {
 
     private static void assertKnown(String spec, IutOptions iut, FuzzSettings settings, Path dir) throws Exception {
         Optional<Dialect> layout = org.fclcert.orchestration.PresentAs.AUTO.resolve(spec);
-        Fuzzer.Options options = Fuzzer.Options.of(3, Duration.ofSeconds(60), settings, 1).withMaxFindings(1)
-                .withLayout(layout);
+        // a minute to find it; shrinking is given up to 90 s, so that a loaded CI machine still gets a small case
+        Fuzzer.Options options = new Fuzzer.Options(3, Duration.ofSeconds(60), 0, settings, 1, Duration.ofSeconds(90), 40,
+                1, layout);
         Fuzzer.Result result = new Fuzzer().run(() -> Iuts.open(spec, iut), options, Duration.ofSeconds(10), p -> { });
         assertFalse(result.findings().isEmpty(), spec + ": nothing found in " + result.progress());
         List<FuzzReport.Written> written = FuzzReport.write(result, dir);
