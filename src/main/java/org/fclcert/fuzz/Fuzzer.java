@@ -295,9 +295,9 @@ public final class Fuzzer {
             return null;
         }
         Program program = analysis.program().get();
-        Optional<Presentation.Outcome> unwritable = presentation.unwritable(program);
-        if (unwritable.isPresent()) {
-            notPresented(index, unwritable.get());
+        Presentation.Outcome written = presentation.write(program);
+        if (written.sent().isEmpty()) {
+            notPresented(index, written);
             return null;
         }
         ReferenceProgram ref = new ReferenceProgram(program);
@@ -313,7 +313,7 @@ public final class Fuzzer {
             noSteps.incrementAndGet();
             return null;
         }
-        Presentation.Outcome presented = presentation.present(program, expected);
+        Presentation.Outcome presented = presentation.vouch(written, expected);
         if (presented.sent().isEmpty()) {
             notPresented(index, presented);
             return null;
@@ -366,7 +366,7 @@ public final class Fuzzer {
 
     /**
      * True when the disagreement is a known finding of the same kind again: a refusal that says the same (numbers
-     * aside), a small error on an output whose METHOD is a finding, or one that goes away when the feature of a
+     * aside) or quotes the same token of the language (not a name of the program), a small error on an output whose METHOD is a finding, or one that goes away when the feature of a
      * finding is switched off.
      */
     private boolean known(IutSession session, Shrinker.Case raw, Deviation d) throws IutException {
@@ -376,8 +376,10 @@ public final class Fuzzer {
         }
         if (!Isolation.valueKind(d.kind())) {
             String signature = Isolation.signature(d);
+            Optional<String> token = Isolation.quotedToken(d, raw.program());
             for (Finding f : same) {
-                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)) {
+                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)
+                        || token.isPresent() && token.equals(Isolation.quotedToken(f.deviation(), f.minimal().program()))) {
                     synchronized (findings) {
                         findings.put(f.key(), findings.get(f.key()).withDuplicate());
                     }

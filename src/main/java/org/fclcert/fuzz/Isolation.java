@@ -157,6 +157,32 @@ final class Isolation {
         return d.kind().word() + ":" + text.replaceAll("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?", "#");
     }
 
+    private static final Pattern QUOTED = Pattern.compile("'([^']{1,40})'|<([^<>]{1,40})>");
+
+    /**
+     * The first token a refusal quotes ({@code 'LREAL'}, {@code <CoGS>}) that is not a name of the program: two
+     * refusals quoting the same keyword, type or symbol are one finding however the library words them (a printed
+     * parse error, or the same error followed by an internal failure).
+     */
+    static Optional<String> quotedToken(Deviation d, org.fclcert.model.Program program) {
+        Set<String> names = new java.util.HashSet<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            names.add(Names.key(fb.name()));
+            fb.variables().forEach(v -> names.add(Names.key(v.name())));
+            fb.fuzzifications().forEach(f -> f.terms().forEach(t -> names.add(Names.key(t.name()))));
+            fb.defuzzifications().forEach(x -> x.terms().forEach(t -> names.add(Names.key(t.name()))));
+            fb.ruleBlocks().forEach(rb -> names.add(Names.key(rb.name())));
+        }
+        Matcher m = QUOTED.matcher(d.message());
+        while (m.find()) {
+            String token = m.group(1) != null ? m.group(1) : m.group(2);
+            if (!names.contains(Names.key(token)) && !token.matches("[-+0-9.eE]+")) {
+                return Optional.of(d.kind().word() + ":" + token);
+            }
+        }
+        return Optional.empty();
+    }
+
     /**
      * A small error (at most a tenth of the output's width) on an output defuzzified over point terms, in a
      * case with nothing more specific to blame (no accumulation, activation, weight or NC): the integration

@@ -27,8 +27,11 @@ import org.fclcert.write.Written;
 final class Presentation {
     private static final CanonicalWriter CANONICAL = new CanonicalWriter();
 
-    /** The text the implementation gets, its layout (empty: standard FCL) and the writer's known differences. */
-    record Sent(String text, Optional<Dialect> layout, List<Diagnostic> differences) {
+    /**
+     * The text the implementation gets, its layout (empty: standard FCL), the writer's known differences, and the
+     * program fclcert reads in that text (the program itself for standard FCL).
+     */
+    record Sent(String text, Optional<Dialect> layout, List<Diagnostic> differences, Program seen) {
         Sent {
             differences = List.copyOf(differences);
         }
@@ -71,31 +74,42 @@ final class Presentation {
     }
 
     /**
-     * Why {@code program} cannot be presented whatever its steps (the writer loses something, or fclcert's reader
-     * of the dialect does not read the text back); empty when it may be.
+     * The text for {@code program} (checked, standard) whatever its steps: standard FCL, or the library's layout
+     * when the writer loses nothing and fclcert reads the text back; else why not.
      */
-    Optional<Outcome> unwritable(Program program) {
+    Outcome write(Program program) {
         if (layout.isEmpty()) {
-            return Optional.empty();
+            return Outcome.of(new Sent(CANONICAL.write(program), Optional.empty(), List.of(), program));
         }
-        Outcome o = written(program);
-        return o.sent().isPresent() ? Optional.empty() : Optional.of(o);
+        Dialect dialect = layout.get();
+        Written w;
+        try {
+            w = DialectWriters.writer(dialect).write(program);
+        } catch (RuntimeException e) {
+            return Outcome.not("writer-failed", String.valueOf(e));
+        }
+        if (!w.exact()) {
+            Diagnostic first = w.notExpressible().get(0);
+            return Outcome.not(first.code(), first.message());
+        }
+        Optional<Program> back = readBack(w.text(), dialect);
+        if (back.isEmpty()) {
+            return Outcome.not("read-back", "fclcert's " + dialect.cliName() + " reader does not read the written text:\n"
+                    + w.text());
+        }
+        return Outcome.of(new Sent(w.text(), layout, w.differences(), back.get()));
     }
 
     /**
-     * The text for {@code program} (checked, standard) with the reference's {@code expected} values on its steps.
+     * {@code written} (of {@link #write}) when the program fclcert reads in it gives the reference's {@code expected}
+     * values on their steps; else why not.
      */
-    Outcome present(Program program, List<ReferenceProgram.Step> expected) {
-        if (layout.isEmpty()) {
-            return Outcome.of(new Sent(CANONICAL.write(program), Optional.empty(), List.of()));
-        }
-        Outcome written = written(program);
-        if (written.sent().isEmpty()) {
+    Outcome vouch(Outcome written, List<ReferenceProgram.Step> expected) {
+        if (written.sent().isEmpty() || written.sent().get().layout().isEmpty()) {
             return written;
         }
-        Optional<Program> back = readBack(written.sent().get().text(), layout.get());
         try {
-            List<ReferenceProgram.Step> again = new ReferenceProgram(back.orElseThrow()).run(
+            List<ReferenceProgram.Step> again = new ReferenceProgram(written.sent().get().seen()).run(
                     expected.stream().map(ReferenceProgram.Step::inputs).toList());
             for (int i = 0; i < expected.size(); i++) {
                 Optional<String> differs = differs(expected.get(i).outputs(), again.get(i).outputs());
@@ -109,32 +123,14 @@ final class Presentation {
         return written;
     }
 
-    /** The written text when the writer loses nothing and fclcert reads it back; else why not. */
-    private Outcome written(Program program) {
-        Dialect dialect = layout.orElseThrow();
-        Written w;
-        try {
-            w = DialectWriters.writer(dialect).write(program);
-        } catch (RuntimeException e) {
-            return Outcome.not("writer-failed", String.valueOf(e));
-        }
-        if (!w.exact()) {
-            Diagnostic first = w.notExpressible().get(0);
-            return Outcome.not(first.code(), first.message());
-        }
-        if (readBack(w.text(), dialect).isEmpty()) {
-            return Outcome.not("read-back", "fclcert's " + dialect.cliName() + " reader does not read the written text:\n"
-                    + w.text());
-        }
-        return Outcome.of(new Sent(w.text(), layout, w.differences()));
+    /** {@link #write}, then {@link #vouch} on the reference's {@code expected} values of the program's steps. */
+    Outcome present(Program program, List<ReferenceProgram.Step> expected) {
+        return vouch(write(program), expected);
     }
 
     /** The program the implementation is meant to see: fclcert's reading of the text sent for {@code program}. */
     Optional<Program> seen(Program program) {
-        if (layout.isEmpty()) {
-            return Optional.of(program);
-        }
-        return written(program).sent().flatMap(s -> readBack(s.text(), layout.get()));
+        return write(program).sent().map(Sent::seen);
     }
 
     /** fclcert's reading of a written text in its dialect (the program the implementation is meant to see). */
