@@ -384,11 +384,9 @@ public final class ProgramGenerator {
                     // every output is concluded in the last block at least once
                     int first = index == count - 1 && i < outs.size() ? i : r.nextInt(outs.size());
                     List<Integer> targets = new ArrayList<>(List.of(first));
-                    if (multiConclusion && outs.size() > 1 && chance(0.5)) {
-                        int other = r.nextInt(outs.size());
-                        if (other != first) {
-                            targets.add(other);
-                        }
+                    if (multiConclusion && chance(0.5)) {
+                        // another output, or the same one again with another term (both are accumulated)
+                        targets.add(r.nextInt(outs.size()));
                     }
                     for (int o : targets) {
                         Out out = outs.get(o);
@@ -412,10 +410,12 @@ public final class ProgramGenerator {
                     Optional.of(new Located<>(accu, AT)), rules, AT);
         }
 
+        /** One subconclusion per variable and term (a bare variable is assigned once). */
         private List<Subconclusion> dedupe(List<Subconclusion> parts) {
             List<Subconclusion> out = new ArrayList<>();
             for (Subconclusion s : parts) {
-                if (out.stream().noneMatch(o -> o.variable().equals(s.variable()))) {
+                if (out.stream().noneMatch(o -> o.variable().equals(s.variable())
+                        && (o.term().isEmpty() || s.term().isEmpty() || o.term().equals(s.term())))) {
                     out.add(s);
                 }
             }
