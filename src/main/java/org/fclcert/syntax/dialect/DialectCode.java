@@ -71,7 +71,7 @@ public enum DialectCode implements DiagnosticCode {
     NAMES_DIFFER_IN_CASE("FCL-W303", Severity.WARNING, "IEC 61131-3 B.1.1",
             "two spellings of one name that differ only in case: one name in FCL, two in jFuzzyLogic"),
     SUPPLIED_SETTING("FCL-W304", Severity.WARNING, "5.2.3, 5.2.4",
-            "a setting left out that the library supplies (jFuzzyLogic: ACCU SUM, METHOD CoG, DEFAULT NC)"),
+            "a setting left out that the library supplies (jFuzzyLogic: ACCU SUM, METHOD CoG, DEFAULT NC, AND MIN)"),
     LOCK_PREVIOUS("FCL-W305", Severity.WARNING, "5.2.3",
             "LOCK : PREVIOUS read as DEFAULT NC: before the first result fclcert gives the initial value"),
     COGS_PER_RULE("FCL-W306", Severity.WARNING, "Table 5",
@@ -80,7 +80,8 @@ public enum DialectCode implements DiagnosticCode {
             "the library computes NSUM as BSUM; fclcert normalises (Table 5)"),
     TOLERATED("FCL-W308", Severity.WARNING, "5.4",
             "a construct the library tolerates and the standard does not (text after END_FUNCTION_BLOCK, a block"
-                    + " name that is no identifier, AND/OR outside the pairs of Table 3); read as the library reads it"),
+                    + " name that is no identifier, a repeated rule name, AND/OR outside the pairs of Table 3); read as"
+                    + " the library reads it"),
     IMPLIED_RANGE("FCL-W309", Severity.WARNING, "5.2.3",
             "an output without RANGE that needs one: the library defuzzifies over the span of its terms, read as that"
                     + " RANGE"),

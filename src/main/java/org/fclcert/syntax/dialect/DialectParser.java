@@ -675,9 +675,11 @@ final class DialectParser {
             }
         }
         dialect.finishRuleBlock(this, block);
-        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu, block.rules,
+        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu,
+                RepeatedRuleNames.renamed(this, block.rules),
                 block.start));
     }
+
 
     private <E extends Enum<E>> E algorithm(Class<E> type, String allowed) {
         Token kw = next();

@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.AndAlgorithm;
+import org.fclcert.model.Condition;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.Feature;
@@ -275,6 +277,12 @@ final class JFuzzyLogicDialect extends LibraryDialect {
                     + " makes it evaluate " + effective + "; fclcert reads AND " + b.and.get().value() + " and OR "
                     + b.or.get().value() + " as written");
         }
+        if (b.and.isEmpty() && b.or.isEmpty() && b.rules.stream().anyMatch(r -> andOr(r.condition()))) {
+            p.warn(b.start, DialectCode.SUPPLIED_SETTING, "no AND or OR: jFuzzyLogic connects subconditions by MIN"
+                    + " and MAX; read as AND : MIN (and its pair OR : MAX)");
+            p.feature(Feature.O_IMPLICIT_SETTING, b.start);
+            b.and = Optional.of(new Located<>(AndAlgorithm.MIN, b.start));
+        }
         if (b.accu.isEmpty()) {
             p.warn(b.start, DialectCode.SUPPLIED_SETTING, "no ACCU: jFuzzyLogic accumulates by a plain sum; read as ACCU SUM");
             p.feature(Feature.O_IMPLICIT_SETTING, b.start);
@@ -291,12 +299,15 @@ final class JFuzzyLogicDialect extends LibraryDialect {
     /**
      * jFuzzyLogic's giveaways: its shape names after ':=' (any case, weight 3), {@code /* *\/} comments (2),
      * ACCU PROBOR and METHOD COGF (3), METHOD MM (1: fuzzylite writes it too), a RANGE after a declaration (3),
-     * upper-case rule keywords with a RULEBLOCK ACCU (weak, 1).
+     * {@code //} comments (1, once: fuzzylite's exporter writes one too, beside its many own giveaways; a text in
+     * standard FCL but for its {@code //} comments is what jFuzzyLogic's users write), a FUNCTION_BLOCK without a
+     * name (1: FFLL's API sample has one too).
      */
     @Override
     List<Giveaway> giveaways(Giveaways.Scan scan) {
         List<Giveaway> out = new ArrayList<>();
         scan.comments("/* */").forEach(line -> out.add(new Giveaway("'/* */' comment", line, 2)));
+        scan.comments("//").stream().findFirst().ifPresent(line -> out.add(new Giveaway("'//' comment", line, 1)));
         List<Token> t = scan.tokens();
         for (int i = 0; i < t.size(); i++) {
             Token tok = t.get(i);
@@ -307,7 +318,9 @@ final class JFuzzyLogicDialect extends LibraryDialect {
             String w = tok.text();
             boolean afterAssign = prev != null && prev.kind() == Kind.ASSIGN;
             boolean afterColon = prev != null && prev.kind() == Kind.COLON;
-            if (afterAssign && shapes().kind(w).isPresent() || afterAssign && w.equalsIgnoreCase("singletons")) {
+            if (w.equalsIgnoreCase("FUNCTION_BLOCK") && i + 1 < t.size() && unnamedBlockFollows(t.get(i + 1))) {
+                out.add(new Giveaway("FUNCTION_BLOCK without a name", tok.line(), 1));
+            } else if (afterAssign && shapes().kind(w).isPresent() || afterAssign && w.equalsIgnoreCase("singletons")) {
                 out.add(new Giveaway("shape '" + w + "'", tok.line(), 3));
             } else if (afterColon && (w.equalsIgnoreCase("PROBOR") || w.equalsIgnoreCase("COGF"))) {
                 out.add(new Giveaway("'" + w + "'", tok.line(), 3));
@@ -318,5 +331,22 @@ final class JFuzzyLogicDialect extends LibraryDialect {
             }
         }
         return out;
+    }
+
+    /** Whether a condition joins subconditions by AND or OR anywhere. */
+    private static boolean andOr(Condition c) {
+        if (c instanceof Condition.Not n) {
+            return andOr(n.operand());
+        }
+        if (c instanceof Condition.Parenthesized q) {
+            return andOr(q.inner());
+        }
+        return c instanceof Condition.And || c instanceof Condition.Or;
+    }
+
+    /** The token after FUNCTION_BLOCK starts its body: the block has no name. */
+    static boolean unnamedBlockFollows(Token next) {
+        return next.is("VAR_INPUT") || next.is("VAR_OUTPUT") || next.is("VAR") || next.is("FUZZIFY")
+                || next.is("DEFUZZIFY") || next.is("RULEBLOCK") || next.is("END_FUNCTION_BLOCK");
     }
 }

@@ -332,6 +332,76 @@ class DialectsInTheWildTest {
         assertTrue(has(a, "FCL-W308", 26), a.diagnostics()::toString);
     }
 
+    private static final String REPEATED = """
+            FUNCTION_BLOCK dup    // two inputs, one output of singletons
+            VAR_INPUT
+              x : REAL;
+              y : REAL;
+            END_VAR
+            VAR_OUTPUT
+              z : REAL;
+            END_VAR
+            FUZZIFY x
+              TERM lo := (0, 1) (10, 0);
+              TERM hi := (0, 0) (10, 1);
+            END_FUZZIFY
+            FUZZIFY y
+              TERM lo := (0, 1) (10, 0);
+              TERM hi := (0, 0) (10, 1);
+            END_FUZZIFY
+            DEFUZZIFY z
+              TERM a := 0;
+              TERM b := 10;
+              METHOD : COGS;
+              DEFAULT := 0;
+            END_DEFUZZIFY
+            RULEBLOCK No1
+              ACCU : MAX;
+              RULE 1 : IF x IS lo AND y IS lo THEN z IS a;
+              RULE 1 : IF x IS hi OR y IS hi THEN z IS b;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /**
+     * A rule number written twice, and AND/OR without their declaration: jFuzzyLogic keeps both rules (a list) and
+     * connects by MIN and MAX when nothing is declared; read so, with FCL-W308 and FCL-W304. The standard rejects
+     * both (FCL-C007, FCL-C015).
+     */
+    @Test
+    void jfuzzylogicRepeatedRuleNumbersAndItsDefaultAndOr() throws Exception {
+        DialectReaders.Choice c = DialectReaders.auto(REPEATED);       // nothing but its '//' comment gives it away
+        assertEquals(Dialect.JFUZZYLOGIC, c.dialect(), c.explanation());
+        Analysis a = analyze(c.reader(), REPEATED);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertTrue(has(a, "FCL-W308", 26), a.diagnostics()::toString);
+        assertTrue(has(a, "FCL-W304", 23), a.diagnostics()::toString);
+        assertEquals(List.of("1", "r1_2"), p.functionBlocks().get(0).ruleBlocks().get(0).rules().stream()
+                .map(org.fclcert.model.Rule::name).toList());
+        // x = 2, y = 4: lo 0.8 and 0.6, MIN 0.6 for a (0); hi 0.2 and 0.4, MAX 0.4 for b (10): CoGS 4/1 = 4
+        assertEquals(4.0, eval(p, Map.of("x", 2.0, "y", 4.0), "z"), 1e-12);
+        // x = 8, y = 6: MIN(0.2, 0.4) = 0.2 for a; MAX(0.8, 0.6) = 0.8 for b: 8
+        assertEquals(8.0, eval(p, Map.of("x", 8.0, "y", 6.0), "z"), 1e-12);
+        Analysis strict = analyze(new StrictReader(), REPEATED.replace("    // two inputs, one output of singletons", ""));
+        assertTrue(has(strict, "FCL-C007", 26) && has(strict, "FCL-C015", 25), strict.diagnostics()::toString);
+    }
+
+    /** FUNCTION_BLOCK without a name: jFuzzyLogic's grammar allows it; read as 'function_block'. */
+    @Test
+    void jfuzzylogicUnnamedFunctionBlock() throws Exception {
+        String text = REPEATED.replace("FUNCTION_BLOCK dup    // two inputs, one output of singletons", "FUNCTION_BLOCK")
+                .replace("RULE 1 : IF x IS hi", "RULE 2 : IF x IS hi").replace("  ACCU : MAX;", "  AND : MIN;\n  ACCU : MAX;");
+        DialectReaders.Choice c = DialectReaders.auto(text);
+        assertEquals(Dialect.JFUZZYLOGIC, c.dialect(), c.explanation());
+        assertEquals("read as jFuzzyLogic: FUNCTION_BLOCK without a name at line 1", c.explanation());
+        Analysis a = analyze(c.reader(), text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertEquals("function_block", p.functionBlocks().get(0).name());
+        assertTrue(p.dialectFeatures().stream().anyMatch(u -> u.feature() == Feature.O_UNNAMED_BLOCK && u.location().line() == 1));
+        assertEquals(8.0, eval(p, Map.of("x", 8.0, "y", 6.0), "z"), 1e-12);
+        assertTrue(has(analyze(new StrictReader(), text), "FCL-S034", 2));
+    }
+
     // ---------------------------------------------------------------- auto-detection
 
     @Test
@@ -341,7 +411,8 @@ class DialectsInTheWildTest {
         DialectReaders.Choice c = DialectReaders.auto(jfl);
         assertEquals(Dialect.JFUZZYLOGIC, c.dialect(), c.explanation());
         assertFalse(c.unsure());
-        // a standard program with '//' comments naming FFLL and fuzzylite constructs stays strict
+        // a standard program but for '//' comments naming FFLL and fuzzylite constructs: only the comment style
+        // counts (jFuzzyLogic's users write '//'; the strict reader rejects it), once, never the words in it
         String standard = """
                 FUNCTION_BLOCK f // ACCUM: Triangle nan
                 VAR_INPUT // Define input variables
@@ -349,7 +420,11 @@ class DialectsInTheWildTest {
                 END_VAR
                 END_FUNCTION_BLOCK
                 """;
-        assertEquals(Dialect.STRICT, DialectReaders.auto(standard).dialect(), DialectReaders.auto(standard).explanation());
+        DialectReaders.Choice s = DialectReaders.auto(standard);
+        assertEquals(Dialect.JFUZZYLOGIC, s.dialect(), s.explanation());
+        assertEquals("read as jFuzzyLogic: '//' comment at line 1", s.explanation());
+        assertTrue(DialectReaders.evidence(standard).stream().filter(e -> e.dialect() != Dialect.JFUZZYLOGIC)
+                .allMatch(e -> e.weight() == 0), () -> DialectReaders.evidence(standard).toString());
     }
 
     @Test
