@@ -75,11 +75,14 @@ final class BlockCompiler {
         b.smoothOutputs = new boolean[b.outputs.length];
         for (int i = 0; i < b.outputs.length; i++) {
             OutputPlan o = b.outputs[i];
-            boolean smooth = !o.singletons() && o.accumulation() == AccumulationMethod.PROBOR;
+            boolean smooth = !o.singletons() && (o.accumulation() == AccumulationMethod.PROBOR
+                    || o.accumulation().otherNorm().isPresent()
+                    || java.util.Arrays.stream(o.contributionActivation()).anyMatch(a -> !a.standard()));
             for (int s : o.termShapes()) {
                 smooth |= shapes.get(s).kind != null;
             }
-            b.smoothOutputs[i] = smooth;
+            // Tsukamoto's method inverts each term at its degree: no accumulated set to integrate
+            b.smoothOutputs[i] = smooth && o.method() != DefuzzificationMethod.TSUKAMOTO;
         }
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
@@ -262,7 +265,7 @@ final class BlockCompiler {
             hedges.put(id, s.hedges().toArray(org.fclcert.model.Hedge[]::new));
         }
         contributions.computeIfAbsent(key, k -> new ArrayList<>())
-                .add(new int[] {id, termInOutput, act == ActivationMethod.PROD ? 1 : 0});
+                .add(new int[] {id, termInOutput, act.ordinal()});
         outputAccumulation.putIfAbsent(key, accu);
         return new SubconclusionPlan(variable, d.terms().get(termInOutput).name(), id, -1, wConst, wSlot);
     }
@@ -284,12 +287,17 @@ final class BlockCompiler {
         if (!singletons && (method == DefuzzificationMethod.COGS || method == DefuzzificationMethod.COGSS)) {
             throw new IllegalArgumentException("CoGS needs singleton terms on " + d.variable());
         }
+        if (method == DefuzzificationMethod.TSUKAMOTO && !d.terms().stream().allMatch(BlockCompiler::monotonic)) {
+            throw new IllegalArgumentException("Tsukamoto's method needs monotonic terms on " + d.variable());
+        }
         int[] termShapes = d.terms().stream().mapToInt(this::addShape).toArray();
         int maxPoints = d.terms().stream().mapToInt(BlockCompiler::pointCount).sum();
         List<int[]> cs = contributions.getOrDefault(key, List.of());
         boolean[] prod = new boolean[cs.size()];
+        ActivationMethod[] activation = new ActivationMethod[cs.size()];
         for (int i = 0; i < prod.length; i++) {
-            prod[i] = cs.get(i)[2] == 1;
+            activation[i] = ActivationMethod.values()[cs.get(i)[2]];
+            prod[i] = activation[i] == ActivationMethod.PROD;
         }
         boolean nc = d.defaultValue().map(v -> v instanceof DefaultValue.NoChange).orElse(false);
         double def = d.defaultValue().filter(v -> v instanceof DefaultValue.Constant)
@@ -300,7 +308,27 @@ final class BlockCompiler {
                 d.terms().stream().map(Term::name).toArray(String[]::new), nc, def,
                 outputAccumulation.getOrDefault(key, AccumulationMethod.MAX),
                 cs.stream().mapToInt(c -> c[0]).toArray(), cs.stream().mapToInt(c -> c[1]).toArray(), prod,
-                maxPoints);
+                maxPoints, activation);
+    }
+
+    /** A term Tsukamoto's method can invert: a monotonic named shape, or points rising or falling throughout. */
+    private static boolean monotonic(Term t) {
+        MembershipFunction f = t.function();
+        if (f instanceof MembershipFunction.NamedShape named) {
+            return named.kind().monotonic() && named.parameters().size() == named.kind().arity();
+        }
+        if (f instanceof MembershipFunction.Points p && p.points().stream().allMatch(x -> x.degree() instanceof Literal)) {
+            boolean up = true;
+            boolean down = true;
+            for (int i = 0; i + 1 < p.points().size(); i++) {
+                double a = ((Literal) p.points().get(i).degree()).value();
+                double b = ((Literal) p.points().get(i + 1).degree()).value();
+                up &= a <= b;
+                down &= a >= b;
+            }
+            return up || down;
+        }
+        return false;
     }
 
     /** Singletons and Takagi–Sugeno terms (a singleton at a computed value). */

@@ -35,7 +35,10 @@ final class BlockPlan {
 
     final RuleBlockPlan[] ruleBlocks;
     final OutputPlan[] outputs;
-    /** Per output: true when its accumulated set is not piece-wise linear (smooth shapes, PROBOR): SmoothSet. */
+    /**
+     * Per output: true when its accumulated set is not piece-wise linear (smooth shapes, PROBOR and the dialects'
+     * other accumulations and activations): SmoothSet.
+     */
     final boolean[] smoothOutputs;
     /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
     final int contributionCount;
@@ -153,6 +156,7 @@ final class BlockPlan {
             int[] contributions,
             int[] contributionTerm,
             boolean[] contributionProd,
-            int maxPoints) {
+            int maxPoints,
+            ActivationMethod[] contributionActivation) {
     }
 }

@@ -194,6 +194,13 @@ public enum Feature {
             "ACCU probabilistic OR, a + b - ab (PROBOR, fuzzylite ASUM)", true),
     O_ACCU_SUM("O-ACCU-SUM", ConformanceLevel.OPEN, "accumulation",
             "ACCU unbounded sum (SUM)", true),
+    O_ACT_OTHER_NORM("O-ACT-OTHER-NORM", ConformanceLevel.OPEN, "activation",
+            "ACT by a t-norm outside Table 4: bounded difference, Einstein, Hamacher, drastic, nilpotent (fuzzylite)", true),
+    O_ACCU_OTHER_NORM("O-ACCU-OTHER-NORM", ConformanceLevel.OPEN, "accumulation",
+            "ACCU by an s-norm outside Table 5: Einstein, Hamacher, drastic sum, nilpotent maximum (fuzzylite)", true),
+    O_TSUKAMOTO("O-TSUKAMOTO", ConformanceLevel.OPEN, "defuzzification method",
+            "Tsukamoto's method: each monotonic term inverted at its degree, the weighted average of those points"
+                    + " (fuzzylite's COGS on monotonic terms)", true),
     O_COGSS("O-COGSS", ConformanceLevel.OPEN, "defuzzification method",
             "METHOD COGSS, weighted sum of singletons (not divided)", true),
     O_METHOD_MM("O-METHOD-MM", ConformanceLevel.OPEN, "defuzzification method",

@@ -171,6 +171,10 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             cx.findings.lost(d.method().get().location(), WriterCode.METHOD, "jFuzzyLogic has no COGSS; '" + name
                     + "' is written with COGS");
             m = DefuzzificationMethod.COGS;
+        } else if (m == DefuzzificationMethod.TSUKAMOTO) {
+            cx.findings.lost(d.method().get().location(), WriterCode.METHOD, "jFuzzyLogic has no Tsukamoto method; '"
+                    + name + "' is written with COG");
+            m = DefuzzificationMethod.COG;
         }
         out.append(IN).append("METHOD : ").append(LibraryText.method(m)).append(";\n");
         if (cx.pointTerms(d.variable()) && LibraryText.sampled(m)) {
@@ -208,14 +212,26 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             rb.and().ifPresent(a -> out.append(IN).append("AND : ").append(a.value().name()).append(";\n"));
             rb.or().ifPresent(o -> out.append(IN).append("OR : ").append(o.value().name()).append(";\n"));
         }
-        rb.activation().ifPresent(a -> out.append(IN).append("ACT : ").append(a.value().name()).append(";\n"));
+        rb.activation().ifPresent(a -> {
+            if (!a.value().standard()) {
+                cx.findings.lost(a.location(), WriterCode.OPERATOR, "jFuzzyLogic has no ACT " + a.value()
+                        + "; rule block '" + rb.name() + "' is written with MIN");
+            }
+            out.append(IN).append("ACT : ").append(a.value().standard() ? a.value().name() : "MIN").append(";\n");
+        });
         AccumulationMethod a = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
+        if (a.otherNorm().isPresent()) {
+            cx.findings.lost(rb.accumulation().get().location(), WriterCode.ACCUMULATION, "jFuzzyLogic has no ACCU "
+                    + a + "; rule block '" + rb.name() + "' is written with MAX");
+            a = AccumulationMethod.MAX;
+        }
         out.append(IN).append("ACCU : ").append(a.name()).append(";\n");
         if (a == AccumulationMethod.NSUM) {
             cx.findings.differs(rb.accumulation().get().location(), WriterCode.NSUM, "jFuzzyLogic computes ACCU NSUM"
                     + " of rule block '" + rb.name() + "' as BSUM");
         }
-        boolean actMin = rb.activation().map(x -> x.value() == org.fclcert.model.ActivationMethod.MIN).orElse(true);
+        org.fclcert.model.ActivationMethod act = rb.activation().map(Located::value)
+                .filter(org.fclcert.model.ActivationMethod::standard).orElse(org.fclcert.model.ActivationMethod.MIN);
         for (RuleLines.Line line : RuleLines.of(cx, rb, false)) {
             StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : IF ")
                     .append(LibraryConditions.jfuzzylogic(line.condition(), cx, line.rule().name())).append(" THEN ");
@@ -223,7 +239,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : ", ").append(cx.variable(s.variable())).append(" IS ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, actMin, line, s, "jFuzzyLogic");
+                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "jFuzzyLogic");
             }
             line.group().weight().ifPresent(w -> r.append(" WITH ").append(w));
             out.append(r).append(";\n");

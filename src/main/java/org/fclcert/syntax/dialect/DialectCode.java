@@ -87,9 +87,11 @@ public enum DialectCode implements DiagnosticCode {
                     + " RANGE"),
     WEIGHT_BEFORE_ACTIVATION("FCL-W310", Severity.WARNING, "5.2.4",
             "fuzzylite multiplies a rule's degree by its WITH weight before activation (and hedges); fclcert weighs"
-                    + " the activated set, which differs under ACT MIN on fuzzy-set outputs"),
+                    + " the activated set, which differs under any ACT but PROD on fuzzy-set outputs"),
     FIRST_PLATEAU("FCL-W311", Severity.WARNING, "Table 10",
-            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point");
+            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point"),
+    TSUKAMOTO_INVERSE("FCL-W312", Severity.WARNING, "Table 10",
+            "fuzzylite 6.0 inverts SShape, ZShape and Concave terms wrongly in Tsukamoto's method; fclcert exactly");
 
     private final String code;
     private final Severity severity;

@@ -656,7 +656,13 @@ final class DialectParser {
                     block.or = Optional.of(new Located<>(algorithm(OrAlgorithm.class, dialect.orNames()), at(t)));
                     block.lastOperator = "OR";
                 } else if (isKeyword(t, "ACT")) {
-                    block.act = Optional.of(new Located<>(algorithm(ActivationMethod.class, "MIN, PROD"), at(t)));
+                    Token w = peek(2);
+                    ActivationMethod act = algorithm(ActivationMethod.class, dialect.activationNames());
+                    if (!act.standard() && !dialect.otherActivations()) {
+                        error(w, DialectCode.UNSUPPORTED, "'" + w.text() + "' is not an algorithm " + library
+                                + " reads for ACT (" + dialect.activationNames() + ")");
+                    }
+                    block.act = Optional.of(new Located<>(act, at(t)));
                 } else if (isKeyword(t, "ACCU")) {
                     block.accu = accumulation();
                 } else if (isKeyword(t, "RULE")) {

@@ -88,6 +88,16 @@ abstract class LibraryDialect {
         return upper;
     }
 
+    /** Whether ACT takes t-norms outside Table 4 (fuzzylite: BDIF, EPROD, HPROD, DPROD, NMIN). */
+    boolean otherActivations() {
+        return false;
+    }
+
+    /** The ACT algorithms the dialect names, for messages. */
+    String activationNames() {
+        return "MIN, PROD";
+    }
+
     /** The AND and OR algorithms the dialect names, for messages. */
     abstract String andNames();
 
