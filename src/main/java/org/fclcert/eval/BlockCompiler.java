@@ -55,14 +55,22 @@ final class BlockCompiler {
     private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
     private final Map<String, Map<String, Integer>> termPositions = new HashMap<>();
 
-    private BlockCompiler(FunctionBlock fb) {
+    /** jFuzzyLogic's reading of 'output IS term' in a condition (O-OUTPUT-VALUE-CONDITION), else fuzzylite's. */
+    private final boolean valueConditions;
+
+    private BlockCompiler(FunctionBlock fb, boolean valueConditions) {
         this.fb = fb;
+        this.valueConditions = valueConditions;
         // a map, not a search per subconclusion: programs with 10^5 outputs would compile in quadratic time
         fb.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(Names.key(d.variable()), d));
     }
 
     static BlockPlan compile(FunctionBlock fb) {
-        return new BlockCompiler(fb).build();
+        return compile(fb, false);
+    }
+
+    static BlockPlan compile(FunctionBlock fb, boolean valueConditions) {
+        return new BlockCompiler(fb, valueConditions).build();
     }
 
     private BlockPlan build() {
@@ -147,17 +155,35 @@ final class BlockCompiler {
         inputTermCount = varSlot.size();
     }
 
-    /** Which contribution feeds which chained degree, and with which accumulation. */
+    /**
+     * Which contribution feeds which chained degree, and with which accumulation; or, in jFuzzyLogic's reading, which
+     * output term is taken at the output's value when the evaluation begins.
+     */
     private void chainedDegrees(BlockPlan.Builder b) {
         b.chainedTerms = chained.size();
         b.chainedDegree = new int[contributionCount];
         b.chainedAccumulation = new AccumulationMethod[contributionCount];
         java.util.Arrays.fill(b.chainedDegree, -1);
+        if (valueConditions) {
+            b.valueTermShape = new int[chained.size()];
+            b.valueTermSlot = new int[chained.size()];
+            b.valueTermStart = new double[chained.size()];
+        }
         for (Map.Entry<String, Integer> e : chained.entrySet()) {
             String output = e.getKey().substring(0, e.getKey().indexOf('\0'));
             String term = e.getKey().substring(e.getKey().indexOf('\0') + 1);
             Defuzzification d = fb.defuzzification(output).orElseThrow();
             int position = positions(d).getOrDefault(term, -1);
+            if (valueConditions) {
+                int k = e.getValue() - inputTermCount;
+                OutputPlan o = java.util.Arrays.stream(b.outputs).filter(x -> Names.same(x.variable(), d.variable()))
+                        .findFirst().orElseThrow();
+                b.valueTermShape[k] = o.termShapes()[position];
+                b.valueTermSlot[k] = o.slot();
+                // jFuzzyLogic sets an output to its numeric DEFAULT before the rules run; with NC it keeps its value
+                b.valueTermStart[k] = o.noChange() ? Double.NaN : o.defaultValue();
+                continue;
+            }
             for (int[] c : contributions.getOrDefault(output, List.of())) {
                 if (c[1] == position) {
                     b.chainedDegree[c[0]] = e.getValue();

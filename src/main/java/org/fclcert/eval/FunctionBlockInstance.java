@@ -145,6 +145,9 @@ public final class FunctionBlockInstance {
         for (int t = plan.termShape.length; t < termDegrees.length; t++) {
             termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
         }
+        if (plan.valueTermShape != null) {
+            valueConditions();
+        }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
@@ -195,6 +198,21 @@ public final class FunctionBlockInstance {
             if (trace != null) {
                 trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
             }
+        }
+    }
+
+    /**
+     * jFuzzyLogic's 'output IS term' in a condition: the term's degree at the output's value when the evaluation
+     * begins, which is its numeric DEFAULT (jFuzzyLogic resets it so before the rules) or, with DEFAULT NC, the value
+     * of the last evaluation.
+     */
+    private void valueConditions() {
+        for (int k = 0; k < plan.valueTermShape.length; k++) {
+            double u = Double.isNaN(plan.valueTermStart[k]) ? values[plan.valueTermSlot[k]] : plan.valueTermStart[k];
+            int s = plan.valueTermShape[k];
+            Shape shape = plan.shapes[s];
+            termDegrees[plan.termShape.length + k] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0)
+                    : shape.kind == null ? Pwl.degree(curX[s], curY[s], shape.n, u) : shape.kind.degree(shape.params, u);
         }
     }
 

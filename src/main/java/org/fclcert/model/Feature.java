@@ -165,10 +165,14 @@ public enum Feature {
     O_TRAILING_TEXT("O-TRAILING-TEXT", ConformanceLevel.OPEN, "function block declaration",
             "text after the last END_FUNCTION_BLOCK, which the library ignores", true),
     O_UNPAIRED_OPERATORS("O-UNPAIRED-OPERATORS", ConformanceLevel.OPEN, "conditional aggregation",
-            "AND and OR algorithms that are not a pair of Table 3, each evaluated as written (fuzzylite)", true),
+            "AND and OR algorithms that are not a pair of Table 3, each evaluated as written (fuzzylite; jFuzzyLogic's"
+                    + " HAMACHER with EINSTEIN)", true),
     O_OUTPUT_CONDITION("O-OUTPUT-CONDITION", ConformanceLevel.OPEN, "condition",
             "'output IS term' in a condition: the degree the term has reached so far in this evaluation (fuzzylite)",
             true),
+    O_OUTPUT_VALUE_CONDITION("O-OUTPUT-VALUE-CONDITION", ConformanceLevel.OPEN, "condition",
+            "'output IS term' in a condition: the term's degree at the output's value when the evaluation begins, its"
+                    + " DEFAULT or (DEFAULT NC) its last value (jFuzzyLogic)", true),
     O_HEDGE_IN_CONCLUSION("O-HEDGE-IN-CONCLUSION", ConformanceLevel.OPEN, "conclusion",
             "hedges before a conclusion's term, applied to the rule's degree (fuzzylite: for every later"
                     + " subconclusion of the rule too)", true),

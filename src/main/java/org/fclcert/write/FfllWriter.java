@@ -53,6 +53,7 @@ public final class FfllWriter implements DialectWriter {
             if (i > 0) {
                 out.append('\n');
             }
+            OutputConditions.check(program, program.functionBlocks().get(i), findings, null);
             new Block(new BlockContext(program.functionBlocks().get(i), findings)).write(out);
         }
         return new Written(Dialect.FFLL, out.toString(), findings.losses(), findings.differences());

@@ -57,6 +57,7 @@ public final class FuzzyliteWriter implements DialectWriter {
                 findings.differs(fb.location(), WriterCode.FIRST_BLOCK_ONLY, "fuzzylite builds only the first function"
                         + " block of a program; '" + fb.name() + "' is written but fuzzylite does not build it");
             }
+            OutputConditions.check(program, fb, findings, Boolean.FALSE);
             functionBlock(new BlockContext(fb, findings), out);
         }
         return new Written(Dialect.FUZZYLITE, out.toString(), findings.losses(), findings.differences());

@@ -174,10 +174,11 @@ public final class StandardConversion {
                         "a hedge in a conclusion (applied to the rule's degree): standard conclusions have none"));
                 continue;
             }
-            if (u.feature() == Feature.O_OUTPUT_CONDITION) {
+            if (u.feature() == Feature.O_OUTPUT_CONDITION || u.feature() == Feature.O_OUTPUT_VALUE_CONDITION) {
                 findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("kept as read"),
-                        "a condition on an output's term (the degree it has reached so far): standard conditions"
-                                + " read inputs only (5.2.4)"));
+                        "a condition on an output's term (" + (u.feature() == Feature.O_OUTPUT_CONDITION ? "the degree"
+                        + " it has reached so far" : "its degree at the output's value when the evaluation begins")
+                        + "): standard conditions read inputs only (5.2.4)"));
                 continue;
             }
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
@@ -192,7 +193,7 @@ public final class StandardConversion {
      */
     private static Program unpairedOperators(Program program, List<Finding> findings) {
         program = otherNorms(program, findings);
-        Set<SourceLocation> at = new java.util.HashSet<>();
+        Set<SourceLocation> at = new java.util.TreeSet<>();     // by place: SourceLocation.equals ignores it
         program.dialectFeatures().stream().filter(u -> u.feature() == Feature.O_UNPAIRED_OPERATORS)
                 .forEach(u -> at.add(u.location()));
         if (at.isEmpty()) {

@@ -185,7 +185,7 @@ class FuzzyliteExamplesTest {
         for (Defuzzification d : program.functionBlocks().get(0).defuzzifications()) {
             DefuzzificationMethod m = d.method().map(Located::value).orElse(DefuzzificationMethod.COG);
             boolean otherwise = diagnostics.stream().anyMatch(x -> (x.code().equals("FCL-W306") || x.code().equals("FCL-W312"))
-                    && d.method().isPresent() && at(x, d.method().get().location()));
+                    && d.method().isPresent() && x.location().sameAs(d.method().get().location()));
             if ((m == DefuzzificationMethod.COGS || m == DefuzzificationMethod.COGSS
                     || m == DefuzzificationMethod.TSUKAMOTO) && !otherwise) {
                 out.add(d.variable());
@@ -198,13 +198,9 @@ class FuzzyliteExamplesTest {
     private static List<String> invertedOtherwise(Program program, List<Diagnostic> diagnostics) {
         return program.functionBlocks().get(0).defuzzifications().stream().filter(d -> diagnostics.stream().anyMatch(
                 x -> x.code().equals("FCL-W312") && d.method().isPresent()
-                        && at(x, d.method().get().location()))).map(Defuzzification::variable).toList();
+                        && x.location().sameAs(d.method().get().location()))).map(Defuzzification::variable).toList();
     }
 
-    /** Whether a diagnostic is at a place (SourceLocation.equals ignores places, so that models compare by content). */
-    private static boolean at(Diagnostic d, org.fclcert.model.SourceLocation where) {
-        return d.location().line() == where.line() && d.location().column() == where.column();
-    }
 
     /**
      * The outputs fuzzylite computes otherwise at these inputs for its tolerance 1e-6 (fl::fuzzylite::macheps): a

@@ -91,7 +91,10 @@ public enum DialectCode implements DiagnosticCode {
     FIRST_PLATEAU("FCL-W311", Severity.WARNING, "Table 10",
             "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point"),
     TSUKAMOTO_INVERSE("FCL-W312", Severity.WARNING, "Table 10",
-            "fuzzylite 6.0 inverts SShape, ZShape and Concave terms wrongly in Tsukamoto's method; fclcert exactly");
+            "fuzzylite 6.0 inverts SShape, ZShape and Concave terms wrongly in Tsukamoto's method; fclcert exactly"),
+    OUTPUT_AT_START("FCL-W313", Severity.WARNING, "5.2.4",
+            "jFuzzyLogic reads an output in a condition at its value when the evaluation begins (its DEFAULT), so rule"
+                    + " blocks do not chain; read so");
 
     private final String code;
     private final Severity severity;

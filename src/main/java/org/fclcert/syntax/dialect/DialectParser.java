@@ -20,6 +20,8 @@ import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
+import org.fclcert.model.Names;
+import org.fclcert.model.Operand;
 import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
@@ -30,6 +32,7 @@ import org.fclcert.model.SourceLocation;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
+import org.fclcert.model.VariableRef;
 import org.fclcert.syntax.ReadResult;
 import org.fclcert.syntax.dialect.DialectLexer.Kind;
 import org.fclcert.syntax.dialect.DialectLexer.Token;
@@ -110,6 +113,8 @@ final class DialectParser {
     final List<RuleBlock> ruleBlocks = new ArrayList<>();
     /** The DEFUZZIFY blocks as read, with what the model does not hold (fuzzylite ACCU, COGS places). */
     final List<Output> outputs = new ArrayList<>();
+    /** The variable of the FUZZIFY or DEFUZZIFY block being read. */
+    private String openBlock = "";
     /** jFuzzyLogic: ranges written after a declaration, by variable key. */
     final java.util.Map<String, Range> declaredRanges = new java.util.HashMap<>();
 
@@ -262,6 +267,23 @@ final class DialectParser {
         }
         dialect.checkName(this, t);
         return next().text();
+    }
+
+    /** A number, or where the dialect allows it a variable's name (a point given by a variable, 5.2.2). */
+    Operand operand() {
+        Token t = peek();
+        if (t.kind() == Kind.WORD && dialect.variablesAsPoints() && !t.text().equals("nan") && !t.text().equals("inf")) {
+            next();
+            dialect.pointVariable(this, t);
+            return new VariableRef(t.text(), at(t));
+        }
+        return number(false);
+    }
+
+    /** Whether a FUZZIFY or DEFUZZIFY block of the variable has been read, or is being read. */
+    boolean blockRead(String variable) {
+        return Names.same(variable, openBlock) || fuzzifications.stream().anyMatch(f -> Names.same(f.variable(), variable))
+                || outputs.stream().anyMatch(o -> Names.same(o.variable, variable));
     }
 
     Literal number(boolean infinityAllowed) {
@@ -463,6 +485,7 @@ final class DialectParser {
     private void fuzzify() {
         Token start = expectKeyword("FUZZIFY");
         String variable = name();
+        openBlock = variable;
         List<Term> terms = new ArrayList<>();
         Optional<Range> declaredRange = Optional.empty();
         while (!stopped) {
@@ -533,6 +556,7 @@ final class DialectParser {
     private void defuzzify() {
         Token start = expectKeyword("DEFUZZIFY");
         Output out = new Output(name(), at(start));
+        openBlock = out.variable;
         while (!stopped) {
             Token t = peek();
             int from = p;

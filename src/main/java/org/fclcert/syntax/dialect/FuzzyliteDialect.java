@@ -457,7 +457,8 @@ class FuzzyliteDialect extends LibraryDialect {
             for (Rule r : rb.rules()) {
                 walk(r.condition(), c -> {
                     if (c instanceof org.fclcert.model.Condition.TermSubcondition t && !t.any()
-                            && outputs.contains(Names.key(t.variable()))) {
+                            && outputs.contains(Names.key(t.variable())) && fb.defuzzification(t.variable())
+                            .map(d -> d.terms().stream().anyMatch(x -> Names.same(x.name(), t.term()))).orElse(false)) {
                         p.feature(Feature.O_OUTPUT_CONDITION, t.location());
                     }
                 });

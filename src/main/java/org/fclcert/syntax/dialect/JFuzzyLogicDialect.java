@@ -15,6 +15,7 @@ import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Names;
+import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Range;
 import org.fclcert.model.ShapeKind;
@@ -53,6 +54,25 @@ final class JFuzzyLogicDialect extends LibraryDialect {
     void checkName(DialectParser p, Token t) {
         if (t.text().startsWith("_")) {
             p.error(t, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic rejects names starting with '_'");
+        }
+    }
+
+    @Override
+    boolean variablesAsPoints() {
+        return true;
+    }
+
+    /**
+     * jFuzzyLogic finds a variable named in a point only once a FUZZIFY or DEFUZZIFY block of it has been read:
+     * its VAR sections create no variables (a defect of the build, a dangling else), so it fails to load such a
+     * program ("Cannot find variable"). A located error, with the fix.
+     */
+    @Override
+    void pointVariable(DialectParser p, Token name) {
+        if (!p.blockRead(name.text())) {
+            p.error(name, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic cannot load this: it finds '" + name.text() + "' in a"
+                    + " point only once a FUZZIFY or DEFUZZIFY block of it has been read (its VAR sections create no"
+                    + " variables); add 'FUZZIFY " + name.text() + " ... END_FUZZIFY' before this block");
         }
     }
 
@@ -120,44 +140,43 @@ final class JFuzzyLogicDialect extends LibraryDialect {
 
     @Override
     String orAlgorithm(String upper) {
+        // its grammar's OR: MAX, ASUM, BSUM, DMAX, NIPMAX, EINSTEIN (PROBOR is an ACCU, HAMACHER an AND there)
         return switch (upper) {
-            case "PROBOR" -> "ASUM";
             case "DMAX" -> "DSUM";
             case "NIPMAX" -> "NMAX";
             case "EINSTEIN" -> "ESUM";
-            case "HAMACHER" -> "HSUM";
-            case "ESUM", "HSUM", "DSUM", "NMAX" -> "not " + upper;    // fuzzylite's names, not jFuzzyLogic's
+            case "PROBOR", "HAMACHER", "ESUM", "HSUM", "DSUM", "NMAX" -> "not " + upper;
             default -> upper;
         };
     }
 
     @Override
     String andAlgorithm(String upper) {
+        // its grammar's AND: MIN, PROD, BDIF, DMIN, NIPMIN, HAMACHER (EINSTEIN is an OR there)
         return switch (upper) {
             case "DMIN" -> "DPROD";
             case "NIPMIN" -> "NMIN";
-            case "EINSTEIN" -> "EPROD";
             case "HAMACHER" -> "HPROD";
-            case "EPROD", "HPROD", "DPROD", "NMIN" -> "not " + upper;
+            case "EINSTEIN", "EPROD", "HPROD", "DPROD", "NMIN" -> "not " + upper;
             default -> upper;
         };
     }
 
     @Override
     String andNames() {
-        return "MIN, PROD, BDIF, DMIN, NIPMIN, HAMACHER, EINSTEIN";
+        return "MIN, PROD, BDIF, DMIN, NIPMIN, HAMACHER";
     }
 
     @Override
     String orNames() {
-        return "MAX, ASUM, PROBOR, BSUM, DMAX, NIPMAX, HAMACHER, EINSTEIN";
+        return "MAX, ASUM, BSUM, DMAX, NIPMAX, EINSTEIN";
     }
 
     @Override
     Optional<MembershipFunction> specialTerm(DialectParser p, Token t, DialectParser.TermContext where) {
         if (t.is("singletons")) {
             List<Point> pts = p.points();
-            if (pts.size() != 1 || ((Literal) pts.get(0).degree()).value() != 1) {
+            if (pts.size() != 1 || !(pts.get(0).degree() instanceof Literal d) || d.value() != 1) {
                 p.error(t, DialectCode.UNSUPPORTED, "fclcert reads 'singletons' only as one singleton (x, 1);"
                         + " jFuzzyLogic's several (x, y) pairs are a discrete set fclcert does not evaluate");
                 throw new DialectParser.Skip();
@@ -267,12 +286,33 @@ final class JFuzzyLogicDialect extends LibraryDialect {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.valueOf((long) v) : String.valueOf(v);
     }
 
+    /** jFuzzyLogic's De Morgan partner of an AND or OR: its HAMACHER goes with EINSTEIN, else Table 3's pairs. */
+    private static OrAlgorithm partner(AndAlgorithm and) {
+        return and == AndAlgorithm.HPROD ? OrAlgorithm.ESUM : and.pair();
+    }
+
+    private static AndAlgorithm partner(OrAlgorithm or) {
+        return or == OrAlgorithm.ESUM ? AndAlgorithm.HPROD : or.pair();
+    }
+
     @Override
     void finishRuleBlock(DialectParser p, DialectParser.Block b) {
-        if (b.and.isPresent() && b.or.isPresent() && b.and.get().value().pair() != b.or.get().value()) {
+        // jFuzzyLogic couples HAMACHER (AND) with EINSTEIN (OR), not with the Hamacher sum: say the partner
+        if (b.and.isPresent() != b.or.isPresent()) {
+            if (b.and.isPresent() && b.and.get().value() == AndAlgorithm.HPROD) {
+                b.or = Optional.of(new Located<>(OrAlgorithm.ESUM, b.and.get().location()));
+                p.feature(Feature.O_UNPAIRED_OPERATORS, b.start);
+            } else if (b.or.isPresent() && b.or.get().value() == OrAlgorithm.ESUM) {
+                b.and = Optional.of(new Located<>(AndAlgorithm.HPROD, b.or.get().location()));
+                p.feature(Feature.O_UNPAIRED_OPERATORS, b.start);
+            }
+        } else if (b.and.isPresent() && b.and.get().value() == AndAlgorithm.HPROD && b.or.get().value() == OrAlgorithm.ESUM) {
+            p.feature(Feature.O_UNPAIRED_OPERATORS, b.start);
+        }
+        if (b.and.isPresent() && b.or.isPresent() && partner(b.and.get().value()) != b.or.get().value()) {
             boolean orLast = "OR".equals(b.lastOperator);
             var later = orLast ? b.or.get().location() : b.and.get().location();
-            String effective = orLast ? "AND as " + b.or.get().value().pair() : "OR as " + b.and.get().value().pair();
+            String effective = orLast ? "AND as " + partner(b.or.get().value()) : "OR as " + partner(b.and.get().value());
             p.warn(later, DialectCode.COUPLED_AND_OR, "jFuzzyLogic couples AND and OR: the later declaration"
                     + " makes it evaluate " + effective + "; fclcert reads AND " + b.and.get().value() + " and OR "
                     + b.or.get().value() + " as written");
@@ -293,7 +333,46 @@ final class JFuzzyLogicDialect extends LibraryDialect {
     @Override
     FunctionBlock finishFunctionBlock(DialectParser p, FunctionBlock fb) {
         CaseSensitivity.warn(fb, p::warn);
+        outputConditions(p, fb);
         return fb;
+    }
+
+    /**
+     * 'output IS term' in a condition: jFuzzyLogic sets every output to its DEFAULT before its rule blocks run
+     * (with DEFAULT NC it keeps its last value), so the condition reads that value, never what other rules conclude
+     * in this evaluation: rule blocks do not chain. Read so (O-OUTPUT-VALUE-CONDITION), with FCL-W313.
+     */
+    private static void outputConditions(DialectParser p, FunctionBlock fb) {
+        for (org.fclcert.model.RuleBlock rb : fb.ruleBlocks()) {
+            for (org.fclcert.model.Rule r : rb.rules()) {
+                outputConditions(p, fb, r.condition());
+            }
+        }
+    }
+
+    private static void outputConditions(DialectParser p, FunctionBlock fb, Condition c) {
+        if (c instanceof Condition.TermSubcondition t) {
+            // a term the output does not have is left to the checks (FCL-C027)
+            fb.defuzzification(t.variable()).filter(d -> d.terms().stream().anyMatch(x -> Names.same(x.name(), t.term())))
+                    .ifPresent(d -> {
+                p.feature(Feature.O_OUTPUT_VALUE_CONDITION, t.location());
+                String start = d.defaultValue().filter(v -> v instanceof DefaultValue.Constant)
+                        .map(v -> "its DEFAULT " + num(((DefaultValue.Constant) v).value().value()))
+                        .orElse("the value of the last evaluation (DEFAULT NC)");
+                p.warn(t.location(), DialectCode.OUTPUT_AT_START, "'" + t.variable() + " IS " + t.term() + "':"
+                        + " jFuzzyLogic reads output '" + t.variable() + "' at its value when the evaluation begins, "
+                        + start + ", not at what its rules conclude in this evaluation; read so (the standard reads"
+                        + " only inputs in conditions, 5.2.4)");
+            });
+        } else if (c instanceof Condition.And a) {
+            a.operands().forEach(x -> outputConditions(p, fb, x));
+        } else if (c instanceof Condition.Or o) {
+            o.operands().forEach(x -> outputConditions(p, fb, x));
+        } else if (c instanceof Condition.Not n) {
+            outputConditions(p, fb, n.operand());
+        } else if (c instanceof Condition.Parenthesized q) {
+            outputConditions(p, fb, q.inner());
+        }
     }
 
     /**

@@ -88,6 +88,15 @@ abstract class LibraryDialect {
         return upper;
     }
 
+    /** Whether a point or a linear shape's parameter may be a variable's name (jFuzzyLogic, as the standard: 5.2.2). */
+    boolean variablesAsPoints() {
+        return false;
+    }
+
+    /** A variable's name written as a point or parameter ({@link #variablesAsPoints()}). */
+    void pointVariable(DialectParser p, Token name) {
+    }
+
     /** Whether ACT takes t-norms outside Table 4 (fuzzylite: BDIF, EPROD, HPROD, DPROD, NMIN). */
     boolean otherActivations() {
         return false;

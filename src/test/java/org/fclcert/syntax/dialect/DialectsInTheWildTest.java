@@ -402,6 +402,147 @@ class DialectsInTheWildTest {
         assertTrue(has(analyze(new StrictReader(), text), "FCL-S034", 2));
     }
 
+    /**
+     * Points given by variables (standard FCL, 5.2.2), as jFuzzyLogic writes them: read as variable points; a variable
+     * without a FUZZIFY block before the term is an error for jFuzzyLogic itself (its VAR sections create none).
+     */
+    @Test
+    void jfuzzylogicVariablePointsNeedTheVariablesBlockFirst() throws Exception {
+        String text = """
+                FUNCTION_BLOCK moving
+                VAR_INPUT
+                  level : REAL;
+                  mid : REAL;
+                END_VAR
+                VAR_OUTPUT
+                  pump : REAL;
+                END_VAR
+                FUZZIFY mid
+                  TERM any := (0, 1) (20, 1);
+                END_FUZZIFY
+                FUZZIFY level
+                  TERM low := (0, 1) (mid, 0);
+                  TERM high := TRIAN 0 mid 20;
+                END_FUZZIFY
+                DEFUZZIFY pump
+                  TERM stop := 0;
+                  TERM full := 100;
+                  METHOD : COGS;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK No1
+                  AND : MIN;
+                  ACCU : MAX;
+                  RULE 1 : IF level IS low THEN pump IS stop;
+                  RULE 2 : IF level IS high THEN pump IS full;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Program p = read(new JFuzzyLogicReader(), text);
+        // mid = 8, level = 6: low (0,1)(8,0) = 0.25, high (0,0)(8,1)(20,0) = 0.75: 100·0.75 / 1 = 75
+        assertEquals(75.0, eval(p, Map.of("mid", 8.0, "level", 6.0), "pump"), 1e-12);
+        // mid = 4, level = 6: low 0, high (20 − 6)/16 = 0.875: 100
+        assertEquals(100.0, eval(p, Map.of("mid", 4.0, "level", 6.0), "pump"), 1e-12);
+        Analysis late = analyze(new JFuzzyLogicReader(), text.replace("FUZZIFY mid\n  TERM any := (0, 1) (20, 1);\n"
+                + "END_FUZZIFY\n", ""));
+        assertTrue(late.program().isEmpty());
+        assertTrue(has(late, "FCL-S306", 10) && has(late, "FCL-S306", 11), late.diagnostics()::toString);
+        assertTrue(late.diagnostics().get(0).message().contains("FUZZIFY mid"), late.diagnostics()::toString);
+    }
+
+    /**
+     * An output in a condition read as jFuzzyLogic reads it: at the output's value when the evaluation begins (its
+     * DEFAULT), with FCL-W313; fuzzylite reads the same text as the degree reached so far (O-OUTPUT-CONDITION).
+     */
+    @Test
+    void anOutputInAConditionIsReadAsEachLibraryReadsIt() throws Exception {
+        String jfl = """
+                FUNCTION_BLOCK chain
+                VAR_INPUT
+                  x : REAL;
+                END_VAR
+                VAR_OUTPUT
+                  a : REAL;
+                  b : REAL;
+                END_VAR
+                FUZZIFY x
+                  TERM up := (0, 0) (10, 1);
+                END_FUZZIFY
+                DEFUZZIFY a
+                  TERM one := 1;
+                  METHOD : COGS;
+                  DEFAULT := 2;
+                END_DEFUZZIFY
+                DEFUZZIFY b
+                  TERM yes := 10;
+                  METHOD : COGS;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK first
+                  ACCU : MAX;
+                  RULE 1 : IF x IS up THEN a IS one;
+                END_RULEBLOCK
+                RULEBLOCK second
+                  ACCU : MAX;
+                  RULE 1 : IF a IS lo THEN b IS yes WITH 0.5;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis bad = analyze(new JFuzzyLogicReader(), jfl);                    // 'lo' is no term of a
+        assertTrue(bad.program().isEmpty(), bad.diagnostics()::toString);
+        // the same with the term: read at a's DEFAULT 2 whatever the first block concludes
+        Analysis a = analyze(new JFuzzyLogicReader(), jfl.replace("  TERM one := 1;\n", "  TERM one := 1;\n  TERM lo := 3;\n"));
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertTrue(has(a, "FCL-W313", 29), a.diagnostics()::toString);
+        assertTrue(p.dialectFeatures().stream().anyMatch(u -> u.feature() == Feature.O_OUTPUT_VALUE_CONDITION));
+        // 'lo' is the singleton 3 and a starts each evaluation at 2: degree 0, so b falls to its DEFAULT 0
+        assertEquals(0.0, eval(p, Map.of("x", 5.0), "b"), 0);
+        // with 'lo' at 2, its degree at the DEFAULT is 1: b = 10 (weight 0.5 on one singleton cancels)
+        Program q = read(new JFuzzyLogicReader(), jfl.replace("  TERM one := 1;\n", "  TERM one := 1;\n  TERM lo := 2;\n"));
+        assertEquals(10.0, eval(q, Map.of("x", 5.0), "b"), 0);
+    }
+
+    /** A fuzzylite output condition tolerates only itself: a wrong subcondition elsewhere is still reported. */
+    @Test
+    void anOutputConditionDoesNotHideOtherMistakes() {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT
+                  x: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  a: REAL;
+                  b: REAL;
+                END_VAR
+                FUZZIFY x
+                  RANGE := (0.000 .. 10.000);
+                  TERM up := Ramp 0.000 10.000;
+                END_FUZZIFY
+                DEFUZZIFY a
+                  RANGE := (0.000 .. 1.000);
+                  TERM one := Constant 1.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                DEFUZZIFY b
+                  RANGE := (0.000 .. 1.000);
+                  TERM one := Constant 1.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  RULE 1 : if x is up then a is one
+                  RULE 2 : if a is one then b is one
+                  RULE 3 : if x is down then b is one
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = analyze(new FuzzyliteReader(), text);
+        assertTrue(a.program().isEmpty());
+        assertTrue(has(a, "FCL-C002", 28), a.diagnostics()::toString);
+        assertFalse(has(a, "FCL-C027", 27), a.diagnostics()::toString);
+    }
+
     // ---------------------------------------------------------------- auto-detection
 
     @Test
