@@ -123,8 +123,12 @@ final class DialectParser {
         this.dialect = dialect;
         this.library = dialect.library();
         this.tokens = lexer.tokens;
+        // after the last END_FUNCTION_BLOCK the libraries read nothing, characters they could not lex included
+        Token end = tokens.stream().filter(t -> t.is("END_FUNCTION_BLOCK")).reduce((a, b) -> b).orElse(null);
         for (DialectLexer.Problem pr : lexer.problems) {
-            error(pr.line(), pr.column(), pr.code(), pr.message());
+            if (end == null || pr.line() < end.line() || pr.line() == end.line() && pr.column() < end.column()) {
+                error(pr.line(), pr.column(), pr.code(), pr.message());
+            }
         }
         for (DialectLexer.Comment c : lexer.comments) {
             features.add(new FeatureUse(Feature.O_COMMENT_STYLE, at(c.line(), c.column())));
@@ -511,7 +515,8 @@ final class DialectParser {
                 next();
             }
         }
-        fuzzifications.add(new Fuzzification(variable, terms, at(start), declaredRange));
+        fuzzifications.add(new Fuzzification(variable, Repeated.terms(this, variable, terms, dialect.firstOfRepeatedTerms()),
+                at(start), declaredRange));
     }
 
     /** Whether the block ends at t: at its {@code end} keyword (consumed), or where that is missing (reported). */
@@ -582,6 +587,9 @@ final class DialectParser {
                 next();
             }
         }
+        List<Term> distinct = new ArrayList<>(Repeated.terms(this, out.variable, out.terms, dialect.firstOfRepeatedTerms()));
+        out.terms.clear();
+        out.terms.addAll(distinct);
         dialect.finishOutput(this, out);
         outputs.add(out);
         defuzzifications.add(new Defuzzification(out.variable, out.range, out.terms, out.method, out.defaultValue,
@@ -706,7 +714,7 @@ final class DialectParser {
         }
         dialect.finishRuleBlock(this, block);
         ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu,
-                RepeatedRuleNames.renamed(this, block.rules),
+                Repeated.rules(this, block.rules),
                 block.start));
     }
 

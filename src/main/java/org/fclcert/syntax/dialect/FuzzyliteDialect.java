@@ -343,6 +343,7 @@ class FuzzyliteDialect extends LibraryDialect {
     @Override
     void finishOutput(DialectParser p, DialectParser.Output out) {
         tsukamoto(p, out);
+        emptyRangeOfAWeightedAverage(p, out);
         if (out.keepPrevious != null) {
             p.warn(out.keepPrevious, DialectCode.LOCK_PREVIOUS, "keeping the previous value is read as DEFAULT NC:"
                     + " fuzzylite keeps the previous result but gives the DEFAULT before the first one, fclcert the"
@@ -390,6 +391,24 @@ class FuzzyliteDialect extends LibraryDialect {
             p.warn(m.location(), DialectCode.TSUKAMOTO_INVERSE, "fuzzylite 6.0 inverts SShape (above degree 0.5),"
                     + " ZShape (below 0.5) and Concave terms wrongly in Tsukamoto's method (fixed in fuzzylite 7), here "
                     + String.join(", ", wrong) + " of '" + out.variable + "'; fclcert inverts them exactly");
+        }
+    }
+
+    /**
+     * {@code RANGE := (0 .. 0)} on an output defuzzified by a weighted average of singletons or Takagi–Sugeno terms
+     * (fuzzylite's importer of Matlab files writes it): fuzzylite never uses that RANGE, the standard wants min &lt;
+     * max (FCL-C023). Read without it, with FCL-W308.
+     */
+    private static void emptyRangeOfAWeightedAverage(DialectParser p, DialectParser.Output out) {
+        boolean average = out.method.map(m -> m.value() == DefuzzificationMethod.COGS
+                || m.value() == DefuzzificationMethod.COGSS).orElse(false);
+        if (average && out.range.isPresent() && !(out.range.get().min().value() < out.range.get().max().value())
+                && out.terms.stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton
+                        || t.function() instanceof MembershipFunction.Computed)) {
+            p.warn(out.range.get().location(), DialectCode.TOLERATED, "RANGE of '" + out.variable + "' is empty:"
+                    + " fuzzylite's weighted average never uses it, so it is left out; the standard wants the minimum"
+                    + " below the maximum (5.2.3)");
+            out.range = Optional.empty();
         }
     }
 

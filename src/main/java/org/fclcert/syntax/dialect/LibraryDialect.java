@@ -93,6 +93,11 @@ abstract class LibraryDialect {
         return false;
     }
 
+    /** Which of several terms of one name the library uses: the first (fuzzylite), else the last (jFuzzyLogic). */
+    boolean firstOfRepeatedTerms() {
+        return true;
+    }
+
     /** A variable's name written as a point or parameter ({@link #variablesAsPoints()}). */
     void pointVariable(DialectParser p, Token name) {
     }

@@ -600,6 +600,42 @@ class DialectsInTheWildTest {
                 d.get(0).message());
     }
 
+    /**
+     * An output without METHOD and DEFAULT, and nothing else outside the standard: both FFLL and jFuzzyLogic leave them
+     * out, and they supply different DEFAULTs (0 and NC), so auto-detection asks rather than guess (issue 13: two
+     * jFuzzyLogic test files were read as FFLL and converted with DEFAULT := 0).
+     */
+    @Test
+    void noMethodAndNoDefaultAloneAreAnUnsureCall() {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT
+                  t : REAL;
+                END_VAR
+                VAR_OUTPUT
+                  v : REAL;
+                END_VAR
+                FUZZIFY t
+                  TERM cold := (0, 1) (10, 0);
+                END_FUZZIFY
+                DEFUZZIFY v
+                  TERM shut := 0;
+                END_DEFUZZIFY
+                RULEBLOCK No1
+                  ACCU : MAX;
+                  RULE 1 : IF t IS cold THEN v IS shut;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        DialectReaders.Choice c = DialectReaders.auto(text);
+        assertTrue(c.unsure(), c.explanation());
+        assertEquals(List.of(Dialect.FFLL, Dialect.JFUZZYLOGIC), java.util.stream.Stream.concat(
+                java.util.stream.Stream.of(c.dialect()), c.tiedWith().stream()).sorted().toList());
+        // with jFuzzyLogic's '//' comment the call is clear
+        assertEquals(Dialect.JFUZZYLOGIC, DialectReaders.auto(text.replace("FUNCTION_BLOCK f", "FUNCTION_BLOCK f // fan"))
+                .dialect());
+    }
+
     /** A detector's failure is reported, never taken for 'no evidence' (which would read the file as strict). */
     @Test
     void aFailingDetectorIsAnErrorNotStrict() {

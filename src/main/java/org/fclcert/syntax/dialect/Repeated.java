@@ -8,10 +8,38 @@ import java.util.Map;
 import java.util.Set;
 import org.fclcert.model.Names;
 import org.fclcert.model.Rule;
+import org.fclcert.model.Term;
 
-/** Repeated rule names in a library's rule block, read as the libraries read them. */
-final class RepeatedRuleNames {
-    private RepeatedRuleNames() {
+/** Names written twice where the standard wants them once, read as the libraries read them (FCL-W308). */
+final class Repeated {
+    private Repeated() {
+    }
+
+    /**
+     * Terms of one variable that repeat a name: fuzzylite finds only the first of them (its rules and conditions
+     * name the first), jFuzzyLogic only the last (a map, the later replaces the earlier); the standard wants one
+     * name per term (FCL-C005). Read as the library reads it: the others left out, each with FCL-W308.
+     */
+    static List<Term> terms(DialectParser p, String variable, List<Term> terms, boolean keepFirst) {
+        Map<String, Term> kept = new java.util.LinkedHashMap<>();
+        for (Term t : terms) {
+            Term before = kept.get(Names.key(t.name()));
+            if (before == null) {
+                kept.put(Names.key(t.name()), t);
+                continue;
+            }
+            Term dropped = keepFirst ? t : before;
+            Term other = keepFirst ? before : t;
+            p.warn(dropped.location(), DialectCode.TOLERATED, "term '" + t.name() + "' of '" + variable + "' is"
+                    + " defined twice (also at line " + other.location().line() + "): " + p.library + " uses only the "
+                    + (keepFirst ? "first" : "last") + ", so this one is left out; the standard wants one name per"
+                    + " term (5.2.2)");
+            if (!keepFirst) {
+                kept.remove(Names.key(t.name()));
+                kept.put(Names.key(t.name()), t);
+            }
+        }
+        return kept.size() == terms.size() ? terms : new ArrayList<>(kept.values());
     }
 
     /**
@@ -19,7 +47,7 @@ final class RepeatedRuleNames {
      * names, jFuzzyLogic keeps them in a list), the standard wants one name per rule (5.2.4, FCL-C007). Read as the
      * library reads it, each repetition under a new name that says where it came from, with FCL-W308.
      */
-    static List<Rule> renamed(DialectParser p, List<Rule> rules) {
+    static List<Rule> rules(DialectParser p, List<Rule> rules) {
         Map<String, Rule> first = new HashMap<>();
         Set<String> taken = new HashSet<>();
         rules.forEach(r -> taken.add(Names.key(r.name())));
