@@ -543,6 +543,40 @@ class DialectsInTheWildTest {
         assertFalse(has(a, "FCL-C027", 27), a.diagnostics()::toString);
     }
 
+    /**
+     * What the libraries tolerate in files of the wild, read with FCL-W308: a term name written twice (fuzzylite finds
+     * the first, jFuzzyLogic keeps the last), an empty RANGE of a fuzzylite weighted average (its Matlab importer
+     * writes both), any characters after END_FUNCTION_BLOCK.
+     */
+    @Test
+    void repeatedTermsAnEmptyRangeAndTrailingCharacters() throws Exception {
+        String fl = TS_HEAD + """
+                DEFUZZIFY y
+                  RANGE := (0.000 .. 0.000);
+                  TERM out1 := Constant 2.000;
+                  TERM out1 := Constant 7.000;
+                  METHOD : COGS;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK
+                  RULE 1 : if a is high then y is out1
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = analyze(new FuzzyliteReader(), fl);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertTrue(has(a, "FCL-W308", 18) && has(a, "FCL-W308", 20), a.diagnostics()::toString);
+        assertEquals(2.0, eval(p, Map.of("a", 0.5, "b", 1.0), "y"), 0);      // the first out1
+        assertTrue(p.functionBlocks().get(0).defuzzifications().get(0).range().isEmpty());
+        String jfl = REPEATED.replace("  TERM b := 10;", "  TERM b := 10;\n  TERM b := 20;")
+                + "notes: see config.txt, 2 × faster\n";
+        Analysis j = analyze(new JFuzzyLogicReader(), jfl);
+        Program q = j.program().orElseThrow(() -> new AssertionError(j.diagnostics()));
+        assertTrue(has(j, "FCL-W308", 19) && has(j, "FCL-W308", 30), j.diagnostics()::toString);
+        // x = 8, y = 6: a 0.2 (at 0), b 0.8 now at 20: 16
+        assertEquals(16.0, eval(q, Map.of("x", 8.0, "y", 6.0), "z"), 1e-12);
+    }
+
     // ---------------------------------------------------------------- auto-detection
 
     @Test
