@@ -162,6 +162,8 @@ public enum Feature {
             "a block name with blanks or '-' (fuzzylite 5 wrote engine names verbatim)", true),
     O_DECLARATION_RANGE("O-DECLARATION-RANGE", ConformanceLevel.OPEN, "range",
             "'x : REAL; RANGE := (lo .. hi);' in a VAR section (jFuzzyLogic)", true),
+    O_SPACED_ASSIGN("O-SPACED-ASSIGN", ConformanceLevel.OPEN, "function block declaration",
+            "':=' written ': =' with a blank inside (FFLL's API sample)", true),
     O_TRAILING_TEXT("O-TRAILING-TEXT", ConformanceLevel.OPEN, "function block declaration",
             "text after the last END_FUNCTION_BLOCK, which the library ignores", true),
     O_UNPAIRED_OPERATORS("O-UNPAIRED-OPERATORS", ConformanceLevel.OPEN, "conditional aggregation",
