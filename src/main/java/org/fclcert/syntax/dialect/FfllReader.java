@@ -89,8 +89,11 @@ public final class FfllReader implements DialectReader {
         List<FeatureUse> uses = new ArrayList<>(result.program().map(Program::dialectFeatures).orElse(tokens.features()));
         uses.addAll(tokens.momMethods());
         uses.sort(Comparator.comparing(FeatureUse::location));
-        return uses.stream().map(u -> new Giveaway(construct(u.feature()), u.location().line(), weight(u.feature())))
-                .toList();
+        // FFLL loads no program without RANGE comments (FCL-D118): then what is merely left out (METHOD, DEFAULT,
+        // a block name), which jFuzzyLogic's users leave out too, is no sign of FFLL
+        boolean ranged = uses.stream().anyMatch(u -> u.feature() == Feature.O_RANGE_COMMENT);
+        return uses.stream().filter(u -> ranged || weight(u.feature()) > 1)
+                .map(u -> new Giveaway(construct(u.feature()), u.location().line(), weight(u.feature()))).toList();
     }
 
     /**

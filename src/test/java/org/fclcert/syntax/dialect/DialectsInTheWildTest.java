@@ -413,19 +413,16 @@ class DialectsInTheWildTest {
     void jfuzzylogicUnnamedFunctionBlock() throws Exception {
         String text = REPEATED.replace("FUNCTION_BLOCK dup    // two inputs, one output of singletons", "FUNCTION_BLOCK")
                 .replace("RULE 1 : IF x IS hi", "RULE 2 : IF x IS hi").replace("  ACCU : MAX;", "  AND : MIN;\n  ACCU : MAX;");
-        // FFLL's API sample has one too: alone it is a close call; with a '//' comment, jFuzzyLogic
-        assertTrue(DialectReaders.auto(text).unsure(), DialectReaders.auto(text).explanation());
-        text = text.replace("FUNCTION_BLOCK\n", "FUNCTION_BLOCK   // a fan\n");
+        // FFLL's API sample has one too, but FFLL loads no program without RANGE comments: jFuzzyLogic
         DialectReaders.Choice c = DialectReaders.auto(text);
         assertEquals(Dialect.JFUZZYLOGIC, c.dialect(), c.explanation());
-        assertEquals("read as jFuzzyLogic: '//' comment at line 1, FUNCTION_BLOCK without a name at line 1",
-                c.explanation());
+        assertEquals("read as jFuzzyLogic: FUNCTION_BLOCK without a name at line 1", c.explanation());
         Analysis a = analyze(c.reader(), text);
         Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
         assertEquals("function_block", p.functionBlocks().get(0).name());
         assertTrue(p.dialectFeatures().stream().anyMatch(u -> u.feature() == Feature.O_UNNAMED_BLOCK && u.location().line() == 1));
         assertEquals(8.0, eval(p, Map.of("x", 8.0, "y", 6.0), "z"), 1e-12);
-        assertTrue(has(analyze(new StrictReader(), text.replace("   // a fan", "")), "FCL-S034", 2));
+        assertTrue(has(analyze(new StrictReader(), text), "FCL-S034", 2));
     }
 
     /**
@@ -661,12 +658,13 @@ class DialectsInTheWildTest {
     }
 
     /**
-     * An output without METHOD and DEFAULT, and nothing else outside the standard: both FFLL and jFuzzyLogic leave them
-     * out, and they supply different DEFAULTs (0 and NC), so auto-detection asks rather than guess (issue 13: two
-     * jFuzzyLogic test files were read as FFLL and converted with DEFAULT := 0).
+     * An output without METHOD and DEFAULT, and nothing else outside the standard: FFLL's programs leave them out too,
+     * but FFLL loads none without RANGE comments, so this is jFuzzyLogic's, with its DEFAULT NC (issue 13: two
+     * jFuzzyLogic test files were read as FFLL and converted with DEFAULT := 0). With RANGE comments the absences
+     * count for both, and FFLL's comments decide.
      */
     @Test
-    void noMethodAndNoDefaultAloneAreAnUnsureCall() {
+    void noMethodAndNoDefaultAreJFuzzyLogicsUnlessTheTextHasRangeComments() {
         String text = """
                 FUNCTION_BLOCK f
                 VAR_INPUT
@@ -688,12 +686,13 @@ class DialectsInTheWildTest {
                 END_FUNCTION_BLOCK
                 """;
         DialectReaders.Choice c = DialectReaders.auto(text);
-        assertTrue(c.unsure(), c.explanation());
-        assertEquals(List.of(Dialect.FFLL, Dialect.JFUZZYLOGIC), java.util.stream.Stream.concat(
-                java.util.stream.Stream.of(c.dialect()), c.tiedWith().stream()).sorted().toList());
-        // with jFuzzyLogic's '//' comment the call is clear
-        assertEquals(Dialect.JFUZZYLOGIC, DialectReaders.auto(text.replace("FUNCTION_BLOCK f", "FUNCTION_BLOCK f // fan"))
-                .dialect());
+        assertEquals("read as jFuzzyLogic: no METHOD at line 11, no DEFAULT at line 11", c.explanation());
+        Program p = read(c.reader(), text);
+        assertTrue(p.functionBlocks().get(0).defuzzifications().get(0).defaultValue().orElseThrow()
+                instanceof DefaultValue.NoChange);
+        String ffll = text.replace("  t : REAL;", "  t : REAL; (* RANGE(0 .. 10) *)").replace("  v : REAL;",
+                "  v : REAL; (* RANGE(0 .. 10) *)");
+        assertEquals(Dialect.FFLL, DialectReaders.auto(ffll).dialect(), DialectReaders.auto(ffll).explanation());
     }
 
     /** A detector's failure is reported, never taken for 'no evidence' (which would read the file as strict). */
