@@ -385,7 +385,7 @@ final class JFuzzyLogicDialect extends LibraryDialect {
      * ACCU PROBOR and METHOD COGF (3), METHOD MM (1: fuzzylite writes it too), a RANGE after a declaration (3),
      * {@code //} comments (1, once: fuzzylite's exporter writes one too, beside its many own giveaways; a text in
      * standard FCL but for its {@code //} comments is what jFuzzyLogic's users write), a FUNCTION_BLOCK without a
-     * name, a DEFUZZIFY block without METHOD or without DEFAULT (1 each: FFLL's programs have them too).
+     * name (1); and the habits in a block's shape, {@link JFuzzyLogicHabits}.
      */
     @Override
     List<Giveaway> giveaways(Giveaways.Scan scan) {
@@ -393,31 +393,13 @@ final class JFuzzyLogicDialect extends LibraryDialect {
         scan.comments("/* */").forEach(line -> out.add(new Giveaway("'/* */' comment", line, 2)));
         scan.comments("//").stream().findFirst().ifPresent(line -> out.add(new Giveaway("'//' comment", line, 1)));
         List<Token> t = scan.tokens();
-        Token defuzzify = null;
-        boolean method = false;
-        boolean dflt = false;
+        out.addAll(JFuzzyLogicHabits.of(t));
         for (int i = 0; i < t.size(); i++) {
             Token tok = t.get(i);
             Token prev = i > 0 ? t.get(i - 1) : null;
             if (tok.kind() != Kind.WORD) {
                 continue;
             }
-            if (tok.is("DEFUZZIFY")) {
-                defuzzify = tok;
-                method = false;
-                dflt = false;
-            } else if (defuzzify != null && (tok.is("END_DEFUZZIFY") || tok.is("END_FUNCTION_BLOCK"))) {
-                // settings jFuzzyLogic supplies (CoG, NC); FFLL's programs leave them out too (weight 1 each)
-                if (!method) {
-                    out.add(new Giveaway("no METHOD", defuzzify.line(), 1));
-                }
-                if (!dflt) {
-                    out.add(new Giveaway("no DEFAULT", defuzzify.line(), 1));
-                }
-                defuzzify = null;
-            }
-            method |= defuzzify != null && tok.is("METHOD");
-            dflt |= defuzzify != null && tok.is("DEFAULT");
             String w = tok.text();
             boolean afterAssign = prev != null && prev.kind() == Kind.ASSIGN;
             boolean afterColon = prev != null && prev.kind() == Kind.COLON;

@@ -633,6 +633,56 @@ class DialectsInTheWildTest {
         assertTrue(read(new JFuzzyLogicReader(), text).functionBlocks().size() == 1);
     }
 
+    /**
+     * Standard FCL but for what only jFuzzyLogic makes sense of: an output without RANGE whose terms do not fall to 0
+     * (the survey's most frequent construct; jFuzzyLogic defuzzifies over their span), statements in an order its
+     * grammar takes and the standard's does not. Each gives jFuzzyLogic away.
+     */
+    @Test
+    void jfuzzylogicsHabitsInStandardLookingFilesGiveItAway() throws Exception {
+        String text = """
+                FUNCTION_BLOCK plain
+                VAR_INPUT
+                  load : REAL;
+                END_VAR
+                VAR_OUTPUT
+                  fan : REAL;
+                END_VAR
+                FUZZIFY load
+                  TERM low := (0, 1) (10, 0);
+                  TERM high := (0, 0) (10, 1);
+                END_FUZZIFY
+                DEFUZZIFY fan
+                  TERM slow := (0, 1) (50, 0);
+                  TERM fast := (50, 0) (100, 1);
+                  METHOD : COG;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK No1
+                  AND : MIN;
+                  ACT : MIN;
+                  ACCU : MAX;
+                  RULE 1 : IF load IS low THEN fan IS slow;
+                  RULE 2 : IF load IS high THEN fan IS fast;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        assertTrue(has(analyze(new StrictReader(), text), "FCL-C025", 13));
+        DialectReaders.Choice c = DialectReaders.auto(text);
+        assertEquals("read as jFuzzyLogic: no RANGE over terms not falling to 0 at line 12", c.explanation());
+        Program p = read(c.reader(), text);
+        // load = 10: fast alone at 1, over the implied universe [0, 100]: CoG of (50, 0) (100, 1) = 250/3
+        assertEquals(250.0 / 3, eval(p, Map.of("load", 10.0), "fan"), 1e-12);
+        String disordered = text.replace("  METHOD : COG;\n  DEFAULT := 0;\n", "  DEFAULT := 0;\n  METHOD : COG;\n")
+                .replace("  TERM slow := (0, 1) (50, 0);", "  TERM slow := (0, 0) (25, 1) (50, 0);")
+                .replace("  TERM fast := (50, 0) (100, 1);", "  TERM fast := (50, 0) (75, 1) (100, 0);")
+                .replace("  ACT : MIN;\n  ACCU : MAX;", "  ACCU : MAX;\n  ACT : MIN;");
+        DialectReaders.Choice d = DialectReaders.auto(disordered);
+        assertEquals("read as jFuzzyLogic: DEFUZZIFY statements out of order at line 12, RULEBLOCK settings out of order"
+                + " at line 18", d.explanation());
+        assertTrue(read(d.reader(), disordered).functionBlocks().size() == 1);
+    }
+
     /** As many signs of jFuzzyLogic as of fuzzylite: a located FCL-S311 naming both, never a guess. */
     @Test
     void aCloseCallAsksForDialect() {
