@@ -21,7 +21,6 @@ import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
 import org.fclcert.model.Names;
-import org.fclcert.model.Operand;
 import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
@@ -32,7 +31,6 @@ import org.fclcert.model.SourceLocation;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
-import org.fclcert.model.VariableRef;
 import org.fclcert.syntax.ReadResult;
 import org.fclcert.syntax.dialect.DialectLexer.Kind;
 import org.fclcert.syntax.dialect.DialectLexer.Token;
@@ -42,7 +40,9 @@ import org.fclcert.syntax.dialect.DialectLexer.Token;
  * of the grammar they share, asking its {@link LibraryDialect} wherever they differ. Builds the model
  * directly, records every non-standard construct as an Open Level feature where it was written, and
  * reports every mistake as a located diagnostic; after an error it skips to the end of the statement.
- * Every loop consumes a token or stops, so no text makes it hang. Rules are read by {@link DialectRuleParser}.
+ * Every loop consumes a token or stops, so no text makes it hang. Rules are read by {@link DialectRuleParser},
+ * terms by {@link DialectTermParser}; what remains here (a little over 700 lines) is the grammar of blocks,
+ * declarations and settings the libraries share, which reads best in one place.
  */
 final class DialectParser {
     static final int MAX_ERRORS = 25;   // also FfllModel's cap
@@ -114,7 +114,7 @@ final class DialectParser {
     /** The DEFUZZIFY blocks as read, with what the model does not hold (fuzzylite ACCU, COGS places). */
     final List<Output> outputs = new ArrayList<>();
     /** The variable of the FUZZIFY or DEFUZZIFY block being read. */
-    private String openBlock = "";
+    String openBlock = "";
     /** jFuzzyLogic: ranges written after a declaration, by variable key. */
     final java.util.Map<String, Range> declaredRanges = new java.util.HashMap<>();
 
@@ -271,23 +271,6 @@ final class DialectParser {
         }
         dialect.checkName(this, t);
         return next().text();
-    }
-
-    /** A number, or where the dialect allows it a variable's name (a point given by a variable, 5.2.2). */
-    Operand operand() {
-        Token t = peek();
-        if (t.kind() == Kind.WORD && dialect.variablesAsPoints() && !t.text().equals("nan") && !t.text().equals("inf")) {
-            next();
-            dialect.pointVariable(this, t);
-            return new VariableRef(t.text(), at(t));
-        }
-        return number(false);
-    }
-
-    /** Whether a FUZZIFY or DEFUZZIFY block of the variable has been read, or is being read. */
-    boolean blockRead(String variable) {
-        return Names.same(variable, openBlock) || fuzzifications.stream().anyMatch(f -> Names.same(f.variable(), variable))
-                || outputs.stream().anyMatch(o -> Names.same(o.variable, variable));
     }
 
     Literal number(boolean infinityAllowed) {

@@ -6,10 +6,12 @@ import java.util.Optional;
 import org.fclcert.model.Literal;
 import org.fclcert.model.Feature;
 import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Names;
 import org.fclcert.model.Operand;
 import org.fclcert.model.Point;
 import org.fclcert.model.ShapeKind;
 import org.fclcert.model.Term;
+import org.fclcert.model.VariableRef;
 import org.fclcert.syntax.dialect.DialectLexer.Kind;
 import org.fclcert.syntax.dialect.DialectLexer.Token;
 
@@ -86,7 +88,7 @@ final class DialectTermParser {
     private MembershipFunction withVariables(Token name, ShapeKind kind, List<Literal> numbers) {
         List<Operand> written = new ArrayList<>(numbers);
         while (p.peek().kind() == Kind.NUMBER || p.peek().kind() == Kind.WORD) {
-            written.add(p.operand());
+            written.add(operand());
         }
         if (kind != ShapeKind.TRIANGLE && kind != ShapeKind.TRAPEZOID || written.size() != kind.arity()) {
             p.error(name, DialectCode.UNSUPPORTED, "fclcert evaluates " + p.library + "'s '" + name.text() + "' with"
@@ -107,9 +109,9 @@ final class DialectTermParser {
         List<Point> pts = new ArrayList<>();
         while (p.peek().kind() == Kind.LPAREN) {
             Token open = p.next();
-            Operand x = p.operand();
+            Operand x = operand();
             p.expect(Kind.COMMA, "',' between x and degree");
-            Operand y = p.operand();
+            Operand y = operand();
             p.expect(Kind.RPAREN, "')'");
             pts.add(new Point(x, y, p.at(open)));
             if (p.peek().kind() == Kind.COMMA) {
@@ -118,5 +120,22 @@ final class DialectTermParser {
             }
         }
         return pts;
+    }
+
+    /** A number, or where the dialect allows it a variable's name (a point given by a variable, 5.2.2). */
+    Operand operand() {
+        Token t = p.peek();
+        if (t.kind() == Kind.WORD && p.dialect.variablesAsPoints() && !t.text().equals("nan") && !t.text().equals("inf")) {
+            p.next();
+            p.dialect.pointVariable(p, t);
+            return new VariableRef(t.text(), p.at(t));
+        }
+        return p.number(false);
+    }
+
+    /** Whether a FUZZIFY or DEFUZZIFY block of the variable has been read, or is being read. */
+    static boolean blockRead(DialectParser p, String variable) {
+        return Names.same(variable, p.openBlock) || p.fuzzifications.stream().anyMatch(f -> Names.same(f.variable(),
+                variable)) || p.outputs.stream().anyMatch(o -> Names.same(o.variable, variable));
     }
 }

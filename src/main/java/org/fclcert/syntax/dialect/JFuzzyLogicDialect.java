@@ -74,7 +74,7 @@ final class JFuzzyLogicDialect extends LibraryDialect {
      */
     @Override
     void pointVariable(DialectParser p, Token name) {
-        if (!p.blockRead(name.text())) {
+        if (!DialectTermParser.blockRead(p, name.text())) {
             p.error(name, DialectCode.NOT_IN_DIALECT, "jFuzzyLogic cannot load this: it finds '" + name.text() + "' in a"
                     + " point only once a FUZZIFY or DEFUZZIFY block of it has been read (its VAR sections create no"
                     + " variables); add 'FUZZIFY " + name.text() + " ... END_FUZZIFY' before this block");
