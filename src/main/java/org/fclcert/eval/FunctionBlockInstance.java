@@ -386,12 +386,11 @@ public final class FunctionBlockInstance {
         return byArea ? Defuzzifier.area(set.px, set.py, set.np) == 0 : Defuzzifier.supremum(set.py, set.np) == 0;
     }
 
-    /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */
-    private double singletons(OutputPlan o, Trace trace) {
+    /** Each term's accumulated degree (point 4: w·d of every subconclusion naming it, NSUM normalised) into singletonDegree. */
+    private void degreesPerTerm(OutputPlan o) {
         int terms = o.termShapes().length;
         for (int t = 0; t < terms; t++) {
             singletonDegree[t] = 0;
-            singletonValue[t] = curX[o.termShapes()[t]][0];
         }
         int[] cs = o.contributions();
         for (int i = 0; i < cs.length; i++) {
@@ -408,6 +407,15 @@ public final class FunctionBlockInstance {
                 singletonDegree[t] /= max;
             }
         }
+    }
+
+    /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */
+    private double singletons(OutputPlan o, Trace trace) {
+        int terms = o.termShapes().length;
+        for (int t = 0; t < terms; t++) {
+            singletonValue[t] = curX[o.termShapes()[t]][0];
+        }
+        degreesPerTerm(o);
         if (trace != null) {
             List<Trace.Breakpoint> pts = new ArrayList<>();
             for (int t = 0; t < terms; t++) {
@@ -431,24 +439,7 @@ public final class FunctionBlockInstance {
      */
     private double tsukamoto(OutputPlan o, Trace trace) {
         int terms = o.termShapes().length;
-        for (int t = 0; t < terms; t++) {
-            singletonDegree[t] = 0;
-        }
-        int[] cs = o.contributions();
-        for (int i = 0; i < cs.length; i++) {
-            int t = o.contributionTerm()[i];
-            singletonDegree[t] = accumulate(o.accumulation(), singletonDegree[t],
-                    contributionWeight[cs[i]] * contributionDegree[cs[i]]);
-        }
-        if (o.accumulation() == AccumulationMethod.NSUM) {
-            double max = 1.0;
-            for (int t = 0; t < terms; t++) {
-                max = Math.max(max, singletonDegree[t]);
-            }
-            for (int t = 0; t < terms; t++) {
-                singletonDegree[t] /= max;
-            }
-        }
+        degreesPerTerm(o);
         double num = 0;
         double den = 0;
         for (int t = 0; t < terms; t++) {
