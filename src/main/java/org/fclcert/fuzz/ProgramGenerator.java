@@ -369,7 +369,8 @@ public final class ProgramGenerator {
             double actProd = w(Feature.E_ACT_PROD, 0.25);
             Optional<Located<ActivationMethod>> act = Optional.empty();
             if (chance(Math.max(actMin, actProd))) {
-                act = Optional.of(new Located<>(pick(ActivationMethod.values(), actMin, actProd), AT));
+                act = Optional.of(new Located<>(pick(new ActivationMethod[] {ActivationMethod.MIN, ActivationMethod.PROD},
+                        actMin, actProd), AT));
             }
             int nRules = between(1, new int[] {2, 4, 8, 20}[size]);
             List<Rule> rules = new ArrayList<>();
