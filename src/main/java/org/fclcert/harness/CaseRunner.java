@@ -58,6 +58,9 @@ final class CaseRunner {
             // an in-process implementation recursing without end: its fault, and the run goes on
             r.errored("the implementation overflowed the stack", "java.lang.StackOverflowError");
         }
+        if (!c.expectReject()) {
+            r.traceReference(c);
+        }
         CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
         if (presenter != null && !c.expectReject()) {
             if (gaveUp) {

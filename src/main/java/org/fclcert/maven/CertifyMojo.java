@@ -19,6 +19,7 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.RunHeader;
 import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
@@ -143,7 +144,8 @@ public class CertifyMojo extends AbstractMojo {
                 .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
-                .presentAs(layout).budget(Duration.ofSeconds(budgetSeconds)).build();
+                .presentAs(layout).rerun(ProgressLog.reproduce(RunHeader.Toolkit.CASE))
+                .budget(Duration.ofSeconds(budgetSeconds)).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));

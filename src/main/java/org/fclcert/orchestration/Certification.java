@@ -69,13 +69,15 @@ public final class Certification {
      * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
      *                    null to describe {@code selection}
      * @param presentAs   the semantic axis: in which library's layout positive cases are also sent (null: auto)
+     * @param rerun       the front end's command that reruns one case, {@code {case}} for its id (null: the
+     *                    command line's); the reports print it for every case that did not pass
      * @param budget      the time the whole run may take, the cases and the probes (null: {@link Defaults#RUN_BUDGET});
      *                    when it runs out the run is stopped, and the cases not run are reported as skipped with the
      *                    reason
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters, PresentAs presentAs, Duration budget) {
+            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget) {
 
         public Request {
             budget = budget == null ? Defaults.RUN_BUDGET : budget;
@@ -125,6 +127,7 @@ public final class Certification {
         private Prober.Options probe;
         private List<List<String>> filters;
         private PresentAs presentAs = PresentAs.AUTO;
+        private String rerun;
         private Duration budget = Defaults.RUN_BUDGET;
 
         private Builder(String iutSpec, Corpus corpus) {
@@ -185,6 +188,12 @@ public final class Certification {
             return this;
         }
 
+        /** The front end's command that reruns one case, {@code {case}} standing for its id (default: the CLI's). */
+        public Builder rerun(String value) {
+            rerun = value;
+            return this;
+        }
+
         /** The time the whole run may take (default {@link Defaults#RUN_BUDGET}). */
         public Builder budget(Duration value) {
             budget = value;
@@ -193,7 +202,7 @@ public final class Certification {
 
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters, presentAs, budget);
+                    probe, filters, presentAs, rerun, budget);
         }
     }
 
@@ -304,7 +313,7 @@ public final class Certification {
             try (ImplementationUnderTest iut = stop.guard(open(request))) {
                 IutInfo info = hello(iut, request.iutSpec());
                 RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
-                        request.corpus().sha256(), all, selected, request.filtersForReport());
+                        request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun());
                 RunHeader header = request.presentAs().resolve(request.iutSpec())
                         .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
                 Path dir = request.outDir() != null ? request.outDir()

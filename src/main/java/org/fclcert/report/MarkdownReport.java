@@ -8,6 +8,7 @@ import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ExportStatus;
 import org.fclcert.harness.PresentedStatus;
+import org.fclcert.harness.ReferenceTrace;
 
 /**
  * {@code report.md}: the compliance statement in the shape clause 6.1 asks for — the Basic Level verdict
@@ -148,13 +149,26 @@ public final class MarkdownReport {
     }
 
     private void featureTable(int table) {
-        if (r.semantic() != null) {
-            semanticFeatureTable(table);
-            return;
+        List<Report.FeatureRow> folded = rows(table).stream().filter(f -> Texts.folded(r, f)).toList();
+        List<Report.FeatureRow> shown = rows(table).stream().filter(f -> !folded.contains(f)).toList();
+        if (!shown.isEmpty()) {
+            if (r.semantic() != null) {
+                semanticFeatureTable(shown);
+            } else {
+                languageFeatureTable(shown);
+            }
         }
+        if (!folded.isEmpty()) {
+            line("Not tested in this run (partial selection): " + folded.stream().map(Report.FeatureRow::id)
+                    .collect(java.util.stream.Collectors.joining(", ")) + ".");
+            line("");
+        }
+    }
+
+    private void languageFeatureTable(List<Report.FeatureRow> rows) {
         line("| Language element | Feature | Verdict | Passed | Not passed |");
         line("| --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
                     + String.join(", ", f.notPassed()) + " |");
@@ -168,12 +182,12 @@ public final class MarkdownReport {
     }
 
     /** Both axes side by side: the language verdict (the standard's text) and the semantic one (the layout). */
-    private void semanticFeatureTable(int table) {
+    private void semanticFeatureTable(List<Report.FeatureRow> rows) {
         String layout = r.semantic().presentAs();
         line("| Language element | Feature | Language verdict | Passed | Not passed | Semantic verdict (" + layout
                 + " layout) | Passed | Not passed | Not presentable |");
         line("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             Report.Semantic sem = f.semantic();
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
@@ -204,6 +218,10 @@ public final class MarkdownReport {
             java.util.Optional.ofNullable(p.evidence().mismatch()).ifPresentOrElse(m -> b.append(" — expected ").append(Texts.cell(Texts.describe(
                     m.expected()))).append(", got ").append(Texts.cell(Texts.describe(m.actual()))), () -> { });
             line(b.toString());
+            if (p.evidence().reference() != null) {
+                line("  - fclcert's reference evaluator at step " + p.evidence().reference().step() + ":");
+                p.evidence().reference().lines().forEach(l -> line("    - " + Texts.cell(l)));
+            }
             p.notes().forEach(n -> line("  - " + Texts.cell(n)));
         }
         line("");
@@ -359,6 +377,13 @@ public final class MarkdownReport {
         }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
+        c.expectedRejection().ifPresent(want -> c.programLine(want.line()).ifPresent(text ->
+                line("  - line " + want.line() + ", where the error is: `" + text.replace("`", "'") + "`")));
+        ReferenceTrace reference = c.evidence().reference();
+        if (reference != null) {
+            line("  - fclcert's reference evaluator at step " + reference.step() + ":");
+            reference.lines().forEach(l -> line("    - " + Texts.cell(l)));
+        }
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }

@@ -102,8 +102,21 @@ final class Texts {
         return "'" + s.replace("'", "'\\''") + "'";
     }
 
+    /**
+     * True for a Table 8/9/10 row that a partial run (a selection) did not test on either axis: the reports
+     * show the rows it tested and fold these away.
+     */
+    static boolean folded(Report r, Report.FeatureRow f) {
+        return !r.run().selection().whole() && f.status() == FeatureStatus.NOT_TESTED
+                && (f.semantic() == null || f.semantic().status() == FeatureStatus.NOT_TESTED);
+    }
+
     /** The command that reruns one case against the same implementation and corpus. */
     static String repro(Report report, String caseId) {
+        String rerun = report.toolkit().rerun();
+        if (rerun != null) {
+            return rerun.replace(org.fclcert.harness.RunHeader.Toolkit.CASE, caseId);
+        }
         StringBuilder b = new StringBuilder("./fclcert certify --iut ").append(shellQuote(report.iut().spec()));
         if (report.iut().classpath() != null) {
             b.append(" --classpath ").append(shellQuote(report.iut().classpath()));
