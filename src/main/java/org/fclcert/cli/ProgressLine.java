@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.Runner;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunListener;
 import org.fclcert.orchestration.Certification;
@@ -83,6 +84,9 @@ final class ProgressLine implements RunListener {
             return;
         }
         notPassed++;
+        if (result.message() != null && result.message().startsWith(Runner.STOPPED)) {
+            return;   // a stopped run: one line at its end says so, not one per case left
+        }
         synchronized (err) {
             err.print(terminal ? "\r\033[K" : "");
             err.println(result.status().word().toUpperCase(Locale.ROOT) + " " + result.id()

@@ -86,7 +86,7 @@ final class Trial {
             case EVAL_ERROR -> DeviationKind.EVAL_ERROR;
             case TIMEOUT -> DeviationKind.HANG;
             case PROTOCOL -> DeviationKind.GARBAGE;
-            case CRASH, GAVE_UP, INFRA -> DeviationKind.CRASH;
+            case CRASH, GAVE_UP, INFRA, STOPPED -> DeviationKind.CRASH;   // fuzz guards no call: STOPPED never comes
         };
     }
 

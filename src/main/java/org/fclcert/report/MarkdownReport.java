@@ -51,16 +51,16 @@ public final class MarkdownReport {
     private void header() {
         line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
-        line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
-                + ".");
+        line("IEC 61131-7 (clause 6.1), measured by fclcert " + Texts.cell(r.toolkit().version()) + " on "
+                + r.generatedAt() + ".");
         line("");
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));
         }
-        line("- Corpus: `" + r.corpus().dir() + "`, " + r.corpus().cases() + " cases, sha256 `" + r.corpus().sha256()
-                + "`");
+        line("- Corpus: `" + code(r.corpus().dir()) + "`, " + r.corpus().cases() + " cases, sha256 `"
+                + code(r.corpus().sha256()) + "`");
         Report.Summary s = r.summary();
         line("- Cases run: " + s.cases() + ": " + s.passed() + " passed, " + s.failed() + " failed, " + s.errored()
                 + " errored, " + s.skipped() + " skipped");
@@ -69,15 +69,15 @@ public final class MarkdownReport {
                     + (r.rejections().doubtful() ? " (" + Report.REJECTION_CAVEAT + ")" : ""));
         }
         if (!r.run().selection().whole()) {
-            line("- Selection: " + selection() + " (a partial run: verdicts cover only the cases run)");
+            line("- Selection: " + Texts.cell(selection()) + " (a partial run: verdicts cover only the cases run)");
         }
         if (!r.run().complete()) {
             line("- **Incomplete run**: some selected cases were not run; they are reported as skipped.");
         }
-        r.run().problems().forEach(p -> line("- Results file problem: " + p));
+        r.run().problems().forEach(p -> line("- Results file problem: " + Texts.cell(p)));
         line("");
         line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
-                + r.basicLevel().reason() + ").");
+                + Texts.cell(r.basicLevel().reason()) + ").");
         line("");
         if (r.semantic() != null) {
             line("Two verdicts per feature row: **" + Report.LANGUAGE_AXIS + "**; **" + Report.SEMANTIC_AXIS + "**.");
@@ -85,6 +85,14 @@ public final class MarkdownReport {
             line("- " + r.semantic().sentence());
             line("");
         }
+    }
+
+    /**
+     * Text inside a code span: a results file read back (report --from) may hold anything where a path or digest
+     * stands, and a backtick or line break would end the span.
+     */
+    private static String code(String s) {
+        return s == null ? "" : s.replaceAll("[`\\p{Cntrl}]", "?");
     }
 
     private String selection() {
@@ -383,7 +391,7 @@ public final class MarkdownReport {
         if (stderr != null) {
             line("  - its last stderr line: `" + stderr.replace("`", "'") + "`");
         }
-        line("  - reproduce: `" + Texts.repro(r, c.id()) + "` (transcript: `requests/"
+        line("  - reproduce: `" + code(Texts.repro(r, c.id())) + "` (transcript: `requests/"
                 + c.id().replaceAll("[^A-Za-z0-9._-]+", "-") + ".requests.jsonl`)");
     }
 

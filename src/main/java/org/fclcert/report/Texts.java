@@ -181,9 +181,11 @@ final class Texts {
         String spec = r.iut().spec();
         String command = r.iut().command();
         String how = spec == null || spec.isBlank() ? command : spec;
-        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `" + how + "`";
+        // a results file read back may hold anything here: no backtick may end the span, the command is escaped
+        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `"
+                + String.valueOf(how).replaceAll("[`\\p{Cntrl}]", "?") + "`";
         if (command != null && !command.isBlank() && !command.equals(how)) {
-            out += " (" + command + ")";
+            out += " (" + own.apply(command) + ")";
         }
         return out;
     }

@@ -45,7 +45,7 @@ import org.fclcert.syntax.dialect.DialectLexer.Token;
  * declarations and settings the libraries share, which reads best in one place.
  */
 final class DialectParser {
-    static final int MAX_ERRORS = 25;   // also FfllModel's cap
+    static final int MAX_ERRORS = org.fclcert.model.Limits.MAX_ERRORS_PER_FILE;   // also FfllModel's cap
     static final int MAX_NESTING = 200;
 
     final LibraryDialect dialect;
@@ -697,7 +697,7 @@ final class DialectParser {
         }
         dialect.finishRuleBlock(this, block);
         ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu,
-                Repeated.rules(this, block.rules),
+                Repeated.rules(this, rules.relabelled(block.rules)),
                 block.start));
     }
 
