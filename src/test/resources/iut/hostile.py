@@ -12,6 +12,7 @@ named by its argument:
   unasked         writes an extra eval reply right after each load reply, before being asked
   orphan FILE     at hello starts a child (its pid appended to FILE) that keeps stdout open; at the first eval
                   the IUT itself exits without a reply, so stdout stays open and the child is re-parented
+  name TEXT       names itself TEXT (say 'reference', or 300 characters: the default output directory's name)
 """
 import json
 import os
@@ -38,6 +39,8 @@ class Hostile(FakeIut):
             child = subprocess.Popen(["sleep", "60"], stdin=subprocess.DEVNULL)   # inherits stdout
             with open(sys.argv[2], "a") as f:
                 f.write("%d\n" % child.pid)
+        if MODE == "name":
+            body["implementation"]["name"] = sys.argv[2]
         if MODE == "inject":
             body["implementation"]["name"] = INJECT
             body["implementation"]["version"] = "1.0\x1b[31m"

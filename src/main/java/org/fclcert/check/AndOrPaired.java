@@ -26,7 +26,7 @@ public final class AndOrPaired implements FunctionBlockRule {
      */
     @Override
     public void check(org.fclcert.model.Program program, DiagnosticSink sink) {
-        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.HashSet<>();
+        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.TreeSet<>();   // by place: equals ignores it
         program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_UNPAIRED_OPERATORS)
                 .forEach(u -> tolerated.add(u.location()));
         for (FunctionBlock fb : program.functionBlocks()) {

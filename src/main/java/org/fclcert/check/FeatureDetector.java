@@ -279,6 +279,7 @@ public final class FeatureDetector {
         return switch (a) {
             case MIN -> Feature.E_ACT_MIN;
             case PROD -> Feature.E_ACT_PROD;
+            case BDIF, EPROD, HPROD, DPROD, NMIN -> Feature.O_ACT_OTHER_NORM;
         };
     }
 
@@ -289,6 +290,7 @@ public final class FeatureDetector {
             case NSUM -> Feature.E_ACCU_NSUM;
             case PROBOR -> Feature.O_ACCU_PROBOR;
             case SUM -> Feature.O_ACCU_SUM;
+            case ESUM, HSUM, DSUM, NMAX -> Feature.O_ACCU_OTHER_NORM;
         };
     }
 
@@ -301,6 +303,7 @@ public final class FeatureDetector {
             case RM -> Feature.E_RM;
             case MOM -> Feature.O_MOM;
             case COGSS -> Feature.O_COGSS;
+            case TSUKAMOTO -> Feature.O_TSUKAMOTO;
         };
     }
 }

@@ -25,13 +25,14 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
 
     /**
      * A subcondition where a dialect reader recorded {@code O-OUTPUT-CONDITION} (fuzzylite: the degree the
-     * output's term has reached so far) is that library's Open Level reading, not a mistake.
+     * output's term has reached so far) or {@code O-OUTPUT-VALUE-CONDITION} (jFuzzyLogic: its degree at the
+     * output's value when the evaluation begins) is that library's Open Level reading, not a mistake.
      */
     @Override
     public void check(org.fclcert.model.Program program, DiagnosticSink sink) {
-        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.HashSet<>();
-        program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_OUTPUT_CONDITION)
-                .forEach(u -> tolerated.add(u.location()));
+        java.util.Set<org.fclcert.model.SourceLocation> tolerated = new java.util.TreeSet<>();   // by place: equals ignores it
+        program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_OUTPUT_CONDITION
+                || u.feature() == org.fclcert.model.Feature.O_OUTPUT_VALUE_CONDITION).forEach(u -> tolerated.add(u.location()));
         for (FunctionBlock fb : program.functionBlocks()) {
             check(fb, c -> !tolerated.contains(c.location()), sink);
         }

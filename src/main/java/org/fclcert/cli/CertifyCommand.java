@@ -1,6 +1,5 @@
 package org.fclcert.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,17 +11,21 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
-import org.fclcert.harness.ResultsFile;
+import org.fclcert.harness.Runner;
 import org.fclcert.iut.ImplementationUnderTest;
+import org.fclcert.iut.StopSignal;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.orchestration.Certification;
 import org.fclcert.orchestration.Defaults;
 import org.fclcert.orchestration.PresentAs;
+import org.fclcert.orchestration.RunControl;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import org.fclcert.report.FailOn;
@@ -39,7 +42,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "certify", mixinStandardHelpOptions = true,
         description = {"Run the conformance corpus against an implementation under test and write the compliance "
                 + "statement (report.json, report.md, report.html, junit.xml) and results.jsonl.",
-            "Exit 0: the run completed and --fail-on holds; 1: it does not hold; 2: the run could not be done."})
+            "Exit 0: the run completed and --fail-on holds; 1: it does not hold; 2: the run could not be done, or was"
+                    + " stopped before its end by --budget (the reports of what was done are written)."})
 final class CertifyCommand implements Callable<Integer> {
     static final int OK = ExitCodes.OK;
     static final int FAILED = ExitCodes.ERRORS;
@@ -103,6 +107,12 @@ final class CertifyCommand implements Callable<Integer> {
                     + " built-in library adapters in their library's layout, none for reference, java: and process:)")
     PresentAs presentAs;
 
+    @Option(names = "--budget", paramLabel = "DURATION", defaultValue = Defaults.RUN_BUDGET_TEXT,
+            converter = DurationConverter.class,
+            description = "Time the whole run may take, cases and probes, e.g. 30m, 2h (default: ${DEFAULT-VALUE});"
+                    + " the cases not run by then are reported as skipped with the reason")
+    Duration budget;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
@@ -128,8 +138,23 @@ final class CertifyCommand implements Callable<Integer> {
             err.println("fclcert certify: " + TerminalText.visibleLines(e.getMessage()));
             err.flush();
             return CANNOT_RUN;
+        } finally {
+            // what the run printed is out: a shutdown hook waiting for it may let the JVM end
+            printed.countDown();
+            if (onSignal != null) {
+                try {
+                    Runtime.getRuntime().removeShutdownHook(onSignal);
+                } catch (IllegalStateException shuttingDown) {
+                    // the hook is running: it waited for 'printed'
+                }
+            }
         }
     }
+
+    /** Counted down once everything the command prints is printed. */
+    private final CountDownLatch printed = new CountDownLatch(1);
+    /** The shutdown hook of a run under way (Ctrl-C, SIGTERM), or null. */
+    private Thread onSignal;
 
     private int certify(PrintWriter stdout, PrintWriter err) throws CannotRun {
         Set<ConformanceLevel> levelSet = levels.isEmpty() ? Set.of() : EnumSet.copyOf(levels);
@@ -150,12 +175,16 @@ final class CertifyCommand implements Callable<Integer> {
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
                 .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
-                .presentAs(presentAs).build();
+                .presentAs(presentAs).budget(budget).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
+        TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
+        RunControl control = new RunControl();
+        onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
+        Runtime.getRuntime().addShutdownHook(onSignal);
         Certification.Outcome outcome;
         try {
-            outcome = Certification.run(request, progress, new TerminalHooks(progress, err, terminal));
+            outcome = Certification.run(request, progress, hooks, control);
         } catch (Certification.NothingSelected e) {
             throw new CannotRun("no case of " + corpusName() + " matches the selection");
         } catch (Certification.CannotCertify e) {
@@ -163,8 +192,22 @@ final class CertifyCommand implements Callable<Integer> {
         } finally {
             progress.stop();
         }
+        return finish(stdout, err, outcome);
+    }
+
+    private int finish(PrintWriter stdout, PrintWriter err, Certification.Outcome outcome) {
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
+        if (outcome.stopped() != null) {
+            Report.Summary s = report.summary();
+            long notRun = report.cases().stream().filter(c -> c.message() != null
+                    && c.message().startsWith(Runner.STOPPED)).count();
+            err.println("fclcert certify: the run was stopped (" + outcome.stopped() + ") after " + (s.cases() - notRun)
+                    + " of " + s.cases() + " cases; the " + notRun + " not run are reported as skipped, the reports are"
+                    + " in " + outcome.directory());
+            err.flush();
+            return CANNOT_RUN;
+        }
         if (!failOn.holds(report)) {
             err.println("fclcert certify: --fail-on " + failOn.word() + ": " + failOn.explain(report));
             err.flush();
@@ -173,15 +216,39 @@ final class CertifyCommand implements Callable<Integer> {
         return OK;
     }
 
+    /** How long the shutdown hook waits, once the run has ended, for its summary to be printed. */
+    private static final Duration PRINT_GRACE = Duration.ofSeconds(5);
+
     /**
-     * The command line's side of a run: ends the progress line, shows the Table 11 probes on a terminal,
-     * and while the results are being written keeps a shutdown hook that reports a run cut short.
+     * Ctrl-C or a kill during the run (a shutdown hook): the run is stopped and ends on its own thread — the case
+     * under way and the later ones reported as not run, the reports written, the implementation closed, the summary
+     * printed — and this waits for that, since the JVM ends when its hooks do. An implementation deaf to the stop
+     * for {@link Defaults#STOP_GRACE} is killed, and the results of the cases that finished stay in results.jsonl.
      */
+    private static void interrupted(RunControl control, CountDownLatch printed, TerminalHooks hooks, PrintWriter err) {
+        if (control.stop(StopSignal.INTERRUPTED, Defaults.STOP_GRACE)) {
+            try {
+                printed.await(PRINT_GRACE.toMillis(), TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            return;
+        }
+        Path results = hooks.resultsFile;
+        err.println();
+        err.println("fclcert certify: interrupted; the implementation did not stop within "
+                + Defaults.STOP_GRACE.toSeconds() + " s and was killed" + (results == null ? ""
+                        : "; the results of the cases that finished are in " + results + " ('fclcert report --from "
+                                + results + "' makes the reports)"));
+        err.flush();
+    }
+
+    /** The command line's side of a run: ends the progress line, shows the Table 11 probes on a terminal. */
     private static final class TerminalHooks implements Certification.Hooks {
         private final ProgressLine progress;
         private final PrintWriter err;
         private final boolean terminal;
-        private Thread onInterrupt;
+        private volatile Path resultsFile;
         private boolean probed;
 
         TerminalHooks(ProgressLine progress, PrintWriter err, boolean terminal) {
@@ -193,8 +260,7 @@ final class CertifyCommand implements Callable<Integer> {
         @Override
         public void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
             progress.directory(directory);
-            onInterrupt = new Thread(() -> reportInterruptedRun(iut, resultsFile, directory, err));
-            Runtime.getRuntime().addShutdownHook(onInterrupt);
+            this.resultsFile = resultsFile;
         }
 
         @Override
@@ -220,27 +286,6 @@ final class CertifyCommand implements Callable<Integer> {
                 err.print("\r\u001b[K");
                 err.flush();
             }
-            Runtime.getRuntime().removeShutdownHook(onInterrupt);
-        }
-    }
-
-    /**
-     * Ctrl-C or a kill during the run: the results of the finished cases are on disk already; make the
-     * reports from them (the cases not run show as skipped) and stop the implementation.
-     */
-    private static void reportInterruptedRun(ImplementationUnderTest impl, Path resultsFile, Path dir,
-            PrintWriter err) {
-        try {
-            Report report = Certification.rebuildReports(ResultsFile.read(resultsFile), dir);
-            err.println();
-            err.println("fclcert certify: interrupted after " + (report.summary().cases() - report.summary().skipped())
-                    + " of " + report.summary().cases() + " cases; reports of what was done are in " + dir);
-        } catch (IOException | ResultsFile.InvalidResultsException | RuntimeException e) {
-            err.println("fclcert certify: interrupted; the results so far are in " + resultsFile
-                    + " ('fclcert report --from " + resultsFile + "' makes the reports)");
-        } finally {
-            err.flush();
-            impl.close();
         }
     }
 

@@ -23,9 +23,12 @@ final class DiagnosticPrinter {
     private DiagnosticPrinter() {
     }
 
-    /** {@code path:line:col: severity CODE: message}, one per line. */
+    /**
+     * {@code path:line:col: severity CODE: message}, one per line; a message quoting the source's control
+     * characters (a block name taken verbatim) shows them visibly, so the file cannot act on the terminal.
+     */
     static void text(PrintWriter out, List<Diagnostic> diagnostics) {
-        diagnostics.forEach(d -> out.println(d));
+        diagnostics.forEach(d -> out.println(TerminalText.visible(d.toString())));
     }
 
     static void json(PrintWriter out, List<Diagnostic> diagnostics) {

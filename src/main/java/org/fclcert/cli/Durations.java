@@ -5,9 +5,9 @@ import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-/** Parses {@code --timeout} values: {@code 500ms}, {@code 5s}, {@code 2m}, or a plain number of seconds. */
+/** Parses durations ({@code --timeout}, the budgets): {@code 500ms}, {@code 5s}, {@code 2m}, {@code 1h}, or a plain number of seconds. */
 final class Durations {
-    private static final Pattern FORM = Pattern.compile("(\\d+(?:\\.\\d+)?)\\s*(ms|s|m)?");
+    private static final Pattern FORM = Pattern.compile("(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|h)?");
 
     private Durations() {
     }
@@ -22,6 +22,7 @@ final class Durations {
         double millis = switch (unit) {
             case "ms" -> amount;
             case "m" -> amount * 60_000;
+            case "h" -> amount * 3_600_000;
             default -> amount * 1000;
         };
         return millis < 1 ? Optional.empty() : Optional.of(Duration.ofMillis(Math.round(millis)));

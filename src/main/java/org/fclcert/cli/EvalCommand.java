@@ -82,7 +82,7 @@ final class EvalCommand implements Callable<Integer> {
         }
         for (String in : inputs) {
             if (in.indexOf('=') <= 0) {
-                err.println("fclcert: --in " + in + ": expected NAME=VALUE, e.g. --in temp=5");
+                err.println("fclcert: --in " + TerminalText.visible(in) + ": expected NAME=VALUE, e.g. --in temp=5");
                 return ExitCodes.USAGE;
             }
         }
@@ -99,13 +99,14 @@ final class EvalCommand implements Callable<Integer> {
             }
             return ExitCodes.OK;
         } catch (FileProblem e) {
-            err.println("fclcert: " + e.getMessage());
+            err.println("fclcert: " + TerminalText.visible(e.getMessage()));
             return ExitCodes.USAGE;
         } catch (EvaluationException e) {
-            err.println("fclcert: " + e.code() + ": " + e.getMessage());
+            // the message may quote a cell of the CSV table or a --in value: shown, never acted upon by the terminal
+            err.println("fclcert: " + e.code() + ": " + TerminalText.visible(e.getMessage()));
             return ExitCodes.ERRORS;
         } catch (InputProblem e) {
-            err.println("fclcert: " + e.getMessage());
+            err.println("fclcert: " + TerminalText.visible(e.getMessage()));
             return ExitCodes.ERRORS;
         }
     }

@@ -18,6 +18,7 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.orchestration.PresentAs;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -68,6 +69,13 @@ final class FuzzCommand implements Callable<Integer> {
             description = "Parallel jobs, each with its own implementation session (default: ${DEFAULT-VALUE})")
     int jobs;
 
+    @Option(names = "--present-as", paramLabel = "LAYOUT", defaultValue = "auto",
+            description = "auto | none | fuzzylite | jfuzzylogic | ffll: send each program written in that library's"
+                    + " layout, when fclcert can vouch for the text, else skip it with the reason counted (default:"
+                    + " ${DEFAULT-VALUE}: the built-in library adapters in their library's layout, standard FCL for"
+                    + " reference, java: and process:)")
+    PresentAs presentAs;
+
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "fuzz-out",
             description = "Where the case files, fuzz.json and fuzz.md go (default: ${DEFAULT-VALUE})")
     Path out;
@@ -111,7 +119,7 @@ final class FuzzCommand implements Callable<Integer> {
         }
         IutOptions options = iutOptions.options();
         Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs)
-                .withMaxFindings(Math.max(0, maxFindings));
+                .withMaxFindings(Math.max(0, maxFindings)).withLayout(presentAs.resolve(iut));
         boolean terminal = System.console() != null;
         Fuzzer.Result result;
         try {
@@ -137,6 +145,11 @@ final class FuzzCommand implements Callable<Integer> {
         stdout.printf(Locale.ROOT, "%s %s: %d programs, %d vectors in %.1f s (%.1f programs/s, %.1f vectors/s), %d finding(s)%n",
                 result.iut().name(), result.iut().version(), p.programs(), p.vectors(), p.elapsedMillis() / 1000.0,
                 p.programsPerSecond(), p.vectorsPerSecond(), written.size());
+        stdout.printf(Locale.ROOT, "  time of the jobs: %.1f s reference side, %.1f s implementation, %.1f s on disagreements%n",
+                p.referenceMillis() / 1000.0, p.implementationMillis() / 1000.0, p.shrinkMillis() / 1000.0);
+        run.layout().ifPresent(l -> stdout.println("  sent in " + l.displayName() + "'s layout; " + p.notPresentable()
+                + " generated program(s) not presentable" + (result.notPresentable().isEmpty() ? ""
+                        : " (" + FuzzReport.reasons(result.notPresentable()) + ")")));
         for (FuzzReport.Written w : written) {
             stdout.println("  " + w.file() + ": " + w.finding().feature().id() + ", " + w.finding().kind().word() + ", "
                     + w.programLines() + " lines: " + w.finding().deviation().message());
@@ -147,6 +160,8 @@ final class FuzzCommand implements Callable<Integer> {
                     + result.generatorBugs().get(0));
         }
         result.infrastructureErrors().forEach(e -> err.println("fclcert fuzz: " + e));
+        result.presentationFaults().forEach(e -> err.println("fclcert fuzz: internal error: a written text fclcert"
+                + " cannot vouch for, " + e.lines().findFirst().orElse("")));
         stdout.flush();
         err.flush();
         if (!written.isEmpty()) {

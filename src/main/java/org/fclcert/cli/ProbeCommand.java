@@ -6,15 +6,22 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
+import org.fclcert.iut.StopSignal;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.orchestration.Defaults;
 import org.fclcert.probe.Prober;
+import org.fclcert.probe.Table11;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -25,6 +32,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "probe", mixinStandardHelpOptions = true,
         description = {"Measure the Table 11 data check list (clause 6.2) of an implementation under test with "
                 + "generated programs judged by the reference evaluator, and print it.",
+            "The probe ends at --budget: the row under way keeps what it established, the rows after it are not"
+                    + " measured. Ctrl-C ends it the same way and shows what was measured.",
             "Exit 0: measured; 2: the implementation could not be probed or an option is wrong."})
 final class ProbeCommand implements Callable<Integer> {
     static final String FILE = "data-check-list.json";
@@ -44,7 +53,7 @@ final class ProbeCommand implements Callable<Integer> {
 
     @Option(names = "--budget", paramLabel = "DURATION", defaultValue = Defaults.PROBE_BUDGET,
             converter = DurationConverter.class,
-            description = "Time for the whole probe, e.g. 3m, 90s (default: ${DEFAULT-VALUE})")
+            description = "Time for the whole probe, e.g. 3m, 90s; the probe ends there (default: ${DEFAULT-VALUE})")
     Duration budget;
 
     @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text", description = "text | json")
@@ -60,17 +69,60 @@ final class ProbeCommand implements Callable<Integer> {
             return ExitCodes.USAGE;
         }
         IutOptions options = iut.options();
-        List<DataCheckEntry> entries;
+        StopSignal stop = new StopSignal();
+        List<DataCheckEntry> measured = Collections.synchronizedList(new ArrayList<>());
+        AtomicBoolean shown = new AtomicBoolean();
+        CountDownLatch done = new CountDownLatch(1);
+        Thread onSignal = new Thread(() -> interrupted(stop, done, measured, shown, stdout, err), "fclcert-interrupted");
+        Runtime.getRuntime().addShutdownHook(onSignal);
         try {
-            entries = Prober.probe(() -> Iuts.open(iut.spec, options), new Prober.Options(cap, budget, Set.of()),
-                    (row, index, count) -> progress(err, row.id(), index, count));
-        } catch (IutException e) {
+            List<DataCheckEntry> entries;
+            try {
+                entries = Prober.probe(() -> Iuts.open(iut.spec, options), new Prober.Options(cap, budget, Set.of()),
+                        new Prober.Listener() {
+                            @Override
+                            public void row(Table11 row, int index, int count) {
+                                progress(err, row.id(), index, count);
+                            }
+
+                            @Override
+                            public void measured(DataCheckEntry entry) {
+                                measured.add(entry);
+                            }
+                        }, stop);
+            } catch (IutException e) {
+                clearProgress(err);
+                err.println("fclcert probe: cannot probe '" + iut.spec + "': " + TerminalText.visible(e.getMessage()) + IutArguments.stderrTail(e));
+                err.flush();
+                return ExitCodes.USAGE;
+            }
             clearProgress(err);
-            err.println("fclcert probe: cannot probe '" + iut.spec + "': " + TerminalText.visible(e.getMessage()) + IutArguments.stderrTail(e));
-            err.flush();
-            return ExitCodes.USAGE;
+            if (!shown.compareAndSet(false, true)) {
+                return ExitCodes.OK;   // the shutdown hook gave up waiting and showed what was measured
+            }
+            int exit = show(entries, stdout, err);
+            if (stop.stopped()) {
+                err.println("fclcert probe: stopped (" + stop.reason() + ") after " + measuredRows(entries) + " of "
+                        + entries.size() + " rows; the others are not measured");
+                err.flush();
+            }
+            return exit;
+        } finally {
+            done.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(onSignal);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running: it waits for 'done'
+            }
         }
-        clearProgress(err);
+    }
+
+    private static long measuredRows(List<DataCheckEntry> entries) {
+        return entries.stream().filter(e -> !e.bound().equals(DataCheckEntry.NOT_MEASURED)).count();
+    }
+
+    /** Prints the list and writes it to --out; the exit code. */
+    private int show(List<DataCheckEntry> entries, PrintWriter stdout, PrintWriter err) {
         if (format == OutputFormat.json) {
             stdout.println(DataCheckPrinter.json(entries));
             stdout.flush();
@@ -88,6 +140,37 @@ final class ProbeCommand implements Callable<Integer> {
             }
         }
         return ExitCodes.OK;
+    }
+
+    /**
+     * Ctrl-C or a kill during the probe (a shutdown hook): the probe is stopped, ends the row under way, closes the
+     * implementation and shows what it measured, on its own thread; this waits for that, since the JVM ends when
+     * its hooks do. An implementation deaf to the stop for {@link Defaults#STOP_GRACE} is killed from here, and the
+     * rows measured so far are shown.
+     */
+    private void interrupted(StopSignal stop, CountDownLatch done, List<DataCheckEntry> measured, AtomicBoolean shown,
+            PrintWriter stdout, PrintWriter err) {
+        stop.stop(StopSignal.INTERRUPTED);
+        try {
+            if (done.await(Defaults.STOP_GRACE.toMillis(), TimeUnit.MILLISECONDS)) {
+                return;
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        stop.closeAll();
+        if (!shown.compareAndSet(false, true)) {
+            return;
+        }
+        List<DataCheckEntry> rows = new ArrayList<>(List.copyOf(measured));
+        List<DataCheckEntry> all = Prober.notMeasured("not measured: the probe was stopped: " + StopSignal.INTERRUPTED);
+        rows.addAll(all.subList(Math.min(rows.size(), all.size()), all.size()));
+        clearProgress(err);
+        show(rows, stdout, err);
+        err.println("fclcert probe: interrupted; the implementation did not stop within "
+                + Defaults.STOP_GRACE.toSeconds() + " s and was killed; " + measuredRows(rows) + " of " + rows.size()
+                + " rows were measured");
+        err.flush();
     }
 
     private static void progress(PrintWriter err, String id, int index, int count) {

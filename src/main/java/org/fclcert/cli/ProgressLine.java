@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.Runner;
 import org.fclcert.harness.RunCase;
 import org.fclcert.harness.RunListener;
 import org.fclcert.orchestration.Certification;
@@ -83,6 +84,9 @@ final class ProgressLine implements RunListener {
             return;
         }
         notPassed++;
+        if (result.message() != null && result.message().startsWith(Runner.STOPPED)) {
+            return;   // a stopped run: one line at its end says so, not one per case left
+        }
         synchronized (err) {
             err.print(terminal ? "\r\033[K" : "");
             err.println(result.status().word().toUpperCase(Locale.ROOT) + " " + result.id()
@@ -103,6 +107,9 @@ final class ProgressLine implements RunListener {
             err.println("  expected: " + TerminalText.visible(describe(m.expected())));
             err.println("  actual:   " + TerminalText.visible(describe(m.actual())));
         });
+        if (r.evidence().reference() != null) {
+            r.evidence().reference().lines().forEach(l -> err.println("  reference: " + TerminalText.visible(l)));
+        }
         negativeCase(r);
         String stderr = lastStderrLine(r.evidence().error());
         if (stderr != null) {
@@ -114,28 +121,14 @@ final class ProgressLine implements RunListener {
         }
     }
 
-    private static final java.util.regex.Pattern EXPECTED_REJECTION =
-            java.util.regex.Pattern.compile("reject: (FCL-[A-Z]+[0-9]+)(?: at line ([0-9]+))?.*");
-
     /** For a negative case: what its code means, and the line of the program that holds the error. */
     private void negativeCase(CaseResult r) {
-        if (!(r.evidence().mismatch() instanceof CaseResult.Mismatch.Sentences m) || m.expected() == null) {
-            return;
-        }
-        java.util.regex.Matcher match = EXPECTED_REJECTION.matcher(m.expected());
-        if (!match.matches()) {
-            return;
-        }
-        DiagnosticCatalogue.find(match.group(1)).ifPresent(code ->
-                err.println("  " + code.code() + " (" + code.clause() + "): " + code.meaning()));
-        String program = r.setup().program();
-        if (match.group(2) != null && program != null) {
-            int line = Integer.parseInt(match.group(2));
-            List<String> lines = program.lines().toList();
-            if (line >= 1 && line <= lines.size()) {
-                err.println("  line " + line + ": " + TerminalText.visible(lines.get(line - 1).strip()));
-            }
-        }
+        r.expectedRejection().ifPresent(want -> {
+            DiagnosticCatalogue.find(want.code()).ifPresent(code ->
+                    err.println("  " + code.code() + " (" + code.clause() + "): " + code.meaning()));
+            r.programLine(want.line()).ifPresent(text -> err.println("  line " + want.line() + ": "
+                    + TerminalText.visible(text)));
+        });
     }
 
     /** The command that reruns just this case: no probes, reports in the temporary directory. */

@@ -31,15 +31,20 @@ final class ReportCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
-        if (!Files.isRegularFile(from)) {
-            err.println("fclcert report: " + from + ": no such file");
-            err.flush();
-            return CertifyCommand.CANNOT_RUN;
+        if (!Files.exists(from)) {
+            return cannot(err, from + ": no such file");
         }
         Path dir = out != null ? out : from.getParent() != null ? from.getParent() : Path.of(".");
+        ResultsFile results;
         try {
-            ResultsFile results = ResultsFile.read(from);
-            results.problems().forEach(p -> err.println("warning: " + p));
+            results = ResultsFile.read(from);
+        } catch (ResultsFile.InvalidResultsException e) {
+            return cannot(err, e.getMessage());
+        } catch (IOException e) {
+            return cannot(err, "cannot read " + from + ": " + e.getMessage());
+        }
+        try {
+            results.problems().forEach(p -> err.println("warning: " + TerminalText.visible(p)));
             Report report = Certification.rebuildReports(results, dir);
             PrintWriter o = spec.commandLine().getOut();
             o.println(report.summary().cases() + " cases (" + report.summary().passed() + " passed, "
@@ -49,11 +54,13 @@ final class ReportCommand implements Callable<Integer> {
             o.flush();
             err.flush();
             return CertifyCommand.OK;
-        } catch (ResultsFile.InvalidResultsException e) {
-            err.println("fclcert report: " + e.getMessage());
         } catch (IOException e) {
-            err.println("fclcert report: " + e.getMessage());
+            return cannot(err, "cannot write the reports in " + dir + ": " + e.getMessage());
         }
+    }
+
+    private static int cannot(PrintWriter err, String message) {
+        err.println("fclcert report: " + message);
         err.flush();
         return CertifyCommand.CANNOT_RUN;
     }

@@ -1,7 +1,6 @@
 package org.fclcert.cli;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
@@ -33,20 +32,14 @@ final class SourceFiles {
      * A leading byte order mark, as some Windows editors write, is not part of the text.
      */
     static String read(String path) throws FileProblem {
-        Path p = Path.of(path);
-        if (Files.isDirectory(p)) {
-            throw new FileProblem(path, "it is a directory");
-        }
-        if (Files.exists(p) && !Files.isRegularFile(p)) {
-            // checked before opening: opening a FIFO blocks, and /dev/zero never ends
-            throw new FileProblem(path, "not a regular file (a device, pipe or socket); fclcert reads only files");
-        }
         try {
-            byte[] bytes = readBounded(p, path);
+            byte[] bytes = Limits.readFile(Path.of(path));
             return StandardCharsets.UTF_8.newDecoder()
                     .onMalformedInput(CodingErrorAction.REPLACE)
                     .onUnmappableCharacter(CodingErrorAction.REPLACE)
                     .decode(ByteBuffer.wrap(bytes)).toString().replaceFirst("^\uFEFF", "");
+        } catch (Limits.Unreadable e) {
+            throw new FileProblem(path, e.getMessage());
         } catch (NoSuchFileException e) {
             throw new FileProblem(path, "no such file");
         } catch (AccessDeniedException e) {
@@ -54,25 +47,6 @@ final class SourceFiles {
         } catch (IOException e) {
             throw new FileProblem(path, String.valueOf(e.getMessage()));
         }
-    }
-
-    /** At most Limits.MAX_SOURCE_BYTES, also when the file grows while it is read. */
-    private static byte[] readBounded(Path p, String path) throws IOException, FileProblem {
-        if (Files.size(p) > Limits.MAX_SOURCE_BYTES) {
-            throw tooLarge(path);
-        }
-        try (InputStream in = Files.newInputStream(p)) {
-            byte[] bytes = in.readNBytes((int) Limits.MAX_SOURCE_BYTES + 1);
-            if (bytes.length > Limits.MAX_SOURCE_BYTES) {
-                throw tooLarge(path);
-            }
-            return bytes;
-        }
-    }
-
-    private static FileProblem tooLarge(String path) {
-        return new FileProblem(path, "larger than fclcert's limit of " + Limits.MAX_SOURCE_BYTES / (1024 * 1024)
-                + " MiB (org.fclcert.model.Limits.MAX_SOURCE_BYTES)");
     }
 
     static void write(String path, String text) throws FileProblem {

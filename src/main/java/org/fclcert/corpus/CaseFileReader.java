@@ -27,9 +27,11 @@ final class CaseFileReader {
 
     private static final Set<String> KEYS = Set.of("id", "title", "level", "features", "tests", "tolerance",
             "flags", "derivation", "block", "vectors", "expect", "error");
-    private static final Pattern ID = Pattern.compile("[BEON]-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]{3}");
+    private static final Pattern ID = CorpusCase.ID_FORM;
     private static final Pattern CODE = Pattern.compile("FCL-[SCWV][0-9]{3}");
-    private static final Pattern FLAG = Pattern.compile("stateful|interpretation:[0-9A-Za-z.]+|knife-edge:[1-9][0-9]*");
+    private static final Pattern FLAG = CorpusCase.FLAG_FORM;
+    /** The characters YAML takes as line breaks besides the newline (a CR before a newline is gone already). */
+    private static final Pattern OTHER_BREAK = Pattern.compile("[\\r\\u0085\\u2028\\u2029]");
     private static final Pattern DECIMAL = Pattern.compile("[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
     private static final YAMLMapper YAML = YAMLMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
@@ -75,6 +77,14 @@ final class CaseFileReader {
         }
         // The YAML starts right after "(*---" on line 1, so YAML line n is file line n.
         yaml = text.substring(OPEN.length(), close.start());
+        Matcher otherBreak = OTHER_BREAK.matcher(yaml);
+        if (otherBreak.find()) {
+            // YAML starts a line there too: every line it names after it would be wrong
+            int line = 1 + (int) yaml.substring(0, otherBreak.start()).chars().filter(c -> c == '\n').count();
+            problem(line, "the metadata has a line break other than a newline (a lone carriage return, U+0085,"
+                    + " U+2028 or U+2029): write each line ending in a newline");
+            return Optional.empty();
+        }
         Optional<JsonNode> root = parseYaml();
         if (root.isEmpty()) {
             return Optional.empty();

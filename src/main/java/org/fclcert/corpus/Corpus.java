@@ -89,7 +89,7 @@ public record Corpus(Path directory, List<CorpusCase> cases, String sha256) {
 
     private static Optional<String> readFile(Path file, List<CorpusProblem> problems) {
         try {
-            byte[] bytes = Files.readAllBytes(file);
+            byte[] bytes = org.fclcert.model.Limits.readFile(file);
             return Optional.of(StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(bytes)).toString()
                     .replace("\r\n", "\n"));
         } catch (CharacterCodingException e) {

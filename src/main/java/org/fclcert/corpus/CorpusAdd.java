@@ -42,7 +42,7 @@ public final class CorpusAdd {
     }
 
     public static Outcome add(Path corpus, Path file) throws IOException, NotACase {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
+        String text = new String(org.fclcert.model.Limits.readFile(file), StandardCharsets.UTF_8);
         if (!text.startsWith(CaseFileReader.OPEN)) {
             throw new NotACase(file + ": not a case file (its first line must start with " + CaseFileReader.OPEN + ")");
         }
@@ -91,7 +91,8 @@ public final class CorpusAdd {
         }
         Path retired = corpus.resolve(CorpusLint.RETIRED_FILE);
         if (Files.isRegularFile(retired)) {
-            for (String line : Files.readAllLines(retired)) {
+            for (String line : new String(org.fclcert.model.Limits.readFile(retired), StandardCharsets.UTF_8).lines()
+                    .toList()) {
                 String word = line.replaceFirst("#.*", "").strip().split("\\s+")[0];
                 max = Math.max(max, number(word, prefix));
             }

@@ -54,6 +54,14 @@ public record CorpusCase(
     /** Prefix of the flag naming a vector (1-based) that is a knife edge, judged by no one (FairVectors). */
     public static final String KNIFE_EDGE = "knife-edge:";
 
+    /** The form of a case id (conformance/README.md): {@code B-COGS-001}. */
+    public static final java.util.regex.Pattern ID_FORM = java.util.regex.Pattern.compile(
+            "[BEON]-[A-Z0-9]+(-[A-Z0-9]+)*-[0-9]{3}");
+
+    /** The form of a flag: {@link #STATEFUL}, {@link #INTERPRETATION} with a point, {@link #KNIFE_EDGE} with a step. */
+    public static final java.util.regex.Pattern FLAG_FORM = java.util.regex.Pattern.compile(
+            "stateful|interpretation:[0-9A-Za-z.]+|knife-edge:[1-9][0-9]*");
+
     public CorpusCase {
         Objects.requireNonNull(id, "id");
         features = List.copyOf(features);

@@ -55,14 +55,22 @@ final class BlockCompiler {
     private final Map<String, Defuzzification> defuzzifications = new HashMap<>();
     private final Map<String, Map<String, Integer>> termPositions = new HashMap<>();
 
-    private BlockCompiler(FunctionBlock fb) {
+    /** jFuzzyLogic's reading of 'output IS term' in a condition (O-OUTPUT-VALUE-CONDITION), else fuzzylite's. */
+    private final boolean valueConditions;
+
+    private BlockCompiler(FunctionBlock fb, boolean valueConditions) {
         this.fb = fb;
+        this.valueConditions = valueConditions;
         // a map, not a search per subconclusion: programs with 10^5 outputs would compile in quadratic time
         fb.defuzzifications().forEach(d -> defuzzifications.putIfAbsent(Names.key(d.variable()), d));
     }
 
     static BlockPlan compile(FunctionBlock fb) {
-        return new BlockCompiler(fb).build();
+        return compile(fb, false);
+    }
+
+    static BlockPlan compile(FunctionBlock fb, boolean valueConditions) {
+        return new BlockCompiler(fb, valueConditions).build();
     }
 
     private BlockPlan build() {
@@ -75,11 +83,14 @@ final class BlockCompiler {
         b.smoothOutputs = new boolean[b.outputs.length];
         for (int i = 0; i < b.outputs.length; i++) {
             OutputPlan o = b.outputs[i];
-            boolean smooth = !o.singletons() && o.accumulation() == AccumulationMethod.PROBOR;
+            boolean smooth = !o.singletons() && (o.accumulation() == AccumulationMethod.PROBOR
+                    || o.accumulation().otherNorm().isPresent()
+                    || java.util.Arrays.stream(o.contributionActivation()).anyMatch(a -> !a.standard()));
             for (int s : o.termShapes()) {
                 smooth |= shapes.get(s).kind != null;
             }
-            b.smoothOutputs[i] = smooth;
+            // Tsukamoto's method inverts each term at its degree: no accumulated set to integrate
+            b.smoothOutputs[i] = smooth && o.method() != DefuzzificationMethod.TSUKAMOTO;
         }
         b.shapes = shapes.toArray(Shape[]::new);
         b.contributionCount = contributionCount;
@@ -144,17 +155,35 @@ final class BlockCompiler {
         inputTermCount = varSlot.size();
     }
 
-    /** Which contribution feeds which chained degree, and with which accumulation. */
+    /**
+     * Which contribution feeds which chained degree, and with which accumulation; or, in jFuzzyLogic's reading, which
+     * output term is taken at the output's value when the evaluation begins.
+     */
     private void chainedDegrees(BlockPlan.Builder b) {
         b.chainedTerms = chained.size();
         b.chainedDegree = new int[contributionCount];
         b.chainedAccumulation = new AccumulationMethod[contributionCount];
         java.util.Arrays.fill(b.chainedDegree, -1);
+        if (valueConditions) {
+            b.valueTermShape = new int[chained.size()];
+            b.valueTermSlot = new int[chained.size()];
+            b.valueTermStart = new double[chained.size()];
+        }
         for (Map.Entry<String, Integer> e : chained.entrySet()) {
             String output = e.getKey().substring(0, e.getKey().indexOf('\0'));
             String term = e.getKey().substring(e.getKey().indexOf('\0') + 1);
             Defuzzification d = fb.defuzzification(output).orElseThrow();
             int position = positions(d).getOrDefault(term, -1);
+            if (valueConditions) {
+                int k = e.getValue() - inputTermCount;
+                OutputPlan o = java.util.Arrays.stream(b.outputs).filter(x -> Names.same(x.variable(), d.variable()))
+                        .findFirst().orElseThrow();
+                b.valueTermShape[k] = o.termShapes()[position];
+                b.valueTermSlot[k] = o.slot();
+                // jFuzzyLogic sets an output to its numeric DEFAULT before the rules run; with NC it keeps its value
+                b.valueTermStart[k] = o.noChange() ? Double.NaN : o.defaultValue();
+                continue;
+            }
             for (int[] c : contributions.getOrDefault(output, List.of())) {
                 if (c[1] == position) {
                     b.chainedDegree[c[0]] = e.getValue();
@@ -262,7 +291,7 @@ final class BlockCompiler {
             hedges.put(id, s.hedges().toArray(org.fclcert.model.Hedge[]::new));
         }
         contributions.computeIfAbsent(key, k -> new ArrayList<>())
-                .add(new int[] {id, termInOutput, act == ActivationMethod.PROD ? 1 : 0});
+                .add(new int[] {id, termInOutput, act.ordinal()});
         outputAccumulation.putIfAbsent(key, accu);
         return new SubconclusionPlan(variable, d.terms().get(termInOutput).name(), id, -1, wConst, wSlot);
     }
@@ -284,12 +313,17 @@ final class BlockCompiler {
         if (!singletons && (method == DefuzzificationMethod.COGS || method == DefuzzificationMethod.COGSS)) {
             throw new IllegalArgumentException("CoGS needs singleton terms on " + d.variable());
         }
+        if (method == DefuzzificationMethod.TSUKAMOTO && !d.terms().stream().allMatch(BlockCompiler::monotonic)) {
+            throw new IllegalArgumentException("Tsukamoto's method needs monotonic terms on " + d.variable());
+        }
         int[] termShapes = d.terms().stream().mapToInt(this::addShape).toArray();
         int maxPoints = d.terms().stream().mapToInt(BlockCompiler::pointCount).sum();
         List<int[]> cs = contributions.getOrDefault(key, List.of());
         boolean[] prod = new boolean[cs.size()];
+        ActivationMethod[] activation = new ActivationMethod[cs.size()];
         for (int i = 0; i < prod.length; i++) {
-            prod[i] = cs.get(i)[2] == 1;
+            activation[i] = ActivationMethod.values()[cs.get(i)[2]];
+            prod[i] = activation[i] == ActivationMethod.PROD;
         }
         boolean nc = d.defaultValue().map(v -> v instanceof DefaultValue.NoChange).orElse(false);
         double def = d.defaultValue().filter(v -> v instanceof DefaultValue.Constant)
@@ -300,7 +334,27 @@ final class BlockCompiler {
                 d.terms().stream().map(Term::name).toArray(String[]::new), nc, def,
                 outputAccumulation.getOrDefault(key, AccumulationMethod.MAX),
                 cs.stream().mapToInt(c -> c[0]).toArray(), cs.stream().mapToInt(c -> c[1]).toArray(), prod,
-                maxPoints);
+                maxPoints, activation);
+    }
+
+    /** A term Tsukamoto's method can invert: a monotonic named shape, or points rising or falling throughout. */
+    private static boolean monotonic(Term t) {
+        MembershipFunction f = t.function();
+        if (f instanceof MembershipFunction.NamedShape named) {
+            return named.kind().monotonic() && named.parameters().size() == named.kind().arity();
+        }
+        if (f instanceof MembershipFunction.Points p && p.points().stream().allMatch(x -> x.degree() instanceof Literal)) {
+            boolean up = true;
+            boolean down = true;
+            for (int i = 0; i + 1 < p.points().size(); i++) {
+                double a = ((Literal) p.points().get(i).degree()).value();
+                double b = ((Literal) p.points().get(i + 1).degree()).value();
+                up &= a <= b;
+                down &= a >= b;
+            }
+            return up || down;
+        }
+        return false;
     }
 
     /** Singletons and Takagi–Sugeno terms (a singleton at a computed value). */

@@ -35,7 +35,10 @@ final class BlockPlan {
 
     final RuleBlockPlan[] ruleBlocks;
     final OutputPlan[] outputs;
-    /** Per output: true when its accumulated set is not piece-wise linear (smooth shapes, PROBOR): SmoothSet. */
+    /**
+     * Per output: true when its accumulated set is not piece-wise linear (smooth shapes, PROBOR and the dialects'
+     * other accumulations and activations): SmoothSet.
+     */
     final boolean[] smoothOutputs;
     /** Number of IS subconclusions; each has an entry in the instance's degree/weight arrays. */
     final int contributionCount;
@@ -46,6 +49,14 @@ final class BlockPlan {
     final int[] chainedDegree;
     final org.fclcert.model.AccumulationMethod[] chainedAccumulation;
     final int chainedTerms;
+    /**
+     * jFuzzyLogic's reading of 'output IS term' in a condition (O-OUTPUT-VALUE-CONDITION), per chained degree: the
+     * output term's shape, the output's slot, and the value it starts each evaluation with (its DEFAULT; NaN: its
+     * value, DEFAULT NC); null in fuzzylite's reading, where contributions accumulate into the chained degrees.
+     */
+    final int[] valueTermShape;
+    final int[] valueTermSlot;
+    final double[] valueTermStart;
     /** Dialects (fuzzylite hedges in conclusions): per contribution, the hedges applied to the rule's degree, or null. */
     final org.fclcert.model.Hedge[][] contributionHedges;
     final int maxStack;
@@ -76,6 +87,9 @@ final class BlockPlan {
                 : new org.fclcert.model.AccumulationMethod[0];
         chainedTerms = b.chainedTerms;
         contributionHedges = b.contributionHedges != null ? b.contributionHedges : new org.fclcert.model.Hedge[0][];
+        valueTermShape = b.valueTermShape;
+        valueTermSlot = b.valueTermSlot;
+        valueTermStart = b.valueTermStart;
         int stack = 1;
         int bare = 0;
         for (RuleBlockPlan rb : ruleBlocks) {
@@ -112,6 +126,9 @@ final class BlockPlan {
         org.fclcert.model.AccumulationMethod[] chainedAccumulation;
         int chainedTerms;
         org.fclcert.model.Hedge[][] contributionHedges;
+        int[] valueTermShape;
+        int[] valueTermSlot;
+        double[] valueTermStart;
     }
 
     /** One rule block: operators, methods, and per rule its condition and subconclusions. */
@@ -153,6 +170,7 @@ final class BlockPlan {
             int[] contributions,
             int[] contributionTerm,
             boolean[] contributionProd,
-            int maxPoints) {
+            int maxPoints,
+            ActivationMethod[] contributionActivation) {
     }
 }

@@ -189,8 +189,14 @@ public final class CompiledEvaluator {
             return false;       // dialect constructs (fuzzylite): the reference instance evaluates them
         }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
-            if (!rb.and().standard() || !rb.or().standard()) {
-                return false;   // the dialects' other norms: fold below knows Table 3 only
+            if (!rb.and().standard() || !rb.or().standard() || !rb.activation().standard()
+                    || rb.accumulation().otherNorm().isPresent()) {
+                return false;   // the dialects' other norms: fold below knows Table 3, 4 and PROBOR/SUM only
+            }
+        }
+        for (OutputPlan o : plan.outputs) {
+            if (o.method() == DefuzzificationMethod.TSUKAMOTO) {
+                return false;   // fuzzylite's Tsukamoto method: the reference instance inverts the terms
             }
         }
         for (Shape s : plan.shapes) {

@@ -18,7 +18,12 @@ public final class Evaluator {
      *                                  (undeclared names, no METHOD, CoA on singletons, ...)
      */
     public static LoadedProgram load(Program checkedProgram) {
-        List<BlockPlan> plans = checkedProgram.functionBlocks().stream().map(BlockCompiler::compile).toList();
+        // 'output IS term' in a condition: fuzzylite's reading (the degree reached so far) unless the jFuzzyLogic
+        // reader recorded its own (the degree at the output's value when the evaluation begins)
+        boolean valueConditions = checkedProgram.dialectFeatures().stream()
+                .anyMatch(u -> u.feature() == org.fclcert.model.Feature.O_OUTPUT_VALUE_CONDITION);
+        List<BlockPlan> plans = checkedProgram.functionBlocks().stream()
+                .map(fb -> BlockCompiler.compile(fb, valueConditions)).toList();
         if (plans.isEmpty()) {
             throw new IllegalArgumentException("the program has no function block");
         }

@@ -61,9 +61,12 @@ public final class ExactInstance {
     ExactInstance(BlockPlan plan, NumberReading reading) {
         // dialect constructs only the fast path evaluates: refused, never computed wrong
         if (plan.chainedTerms > 0 || plan.contributionHedges.length > 0
-                || java.util.Arrays.stream(plan.shapes).anyMatch(sh -> sh.computed != null)) {
+                || java.util.Arrays.stream(plan.shapes).anyMatch(sh -> sh.computed != null)
+                || java.util.Arrays.stream(plan.outputs).anyMatch(o -> o.method() == DefuzzificationMethod.TSUKAMOTO
+                        || java.util.Arrays.stream(o.contributionActivation()).anyMatch(a -> !a.standard()))) {
             throw new IllegalArgumentException("the exact path does not evaluate Takagi-Sugeno terms, hedges in"
-                    + " conclusions or output terms in conditions (dialect constructs); the reference evaluator does");
+                    + " conclusions, output terms in conditions, Tsukamoto's method or activations outside Table 4"
+                    + " (dialect constructs); the reference evaluator does");
         }
         this.plan = plan;
         this.reading = reading;
@@ -353,6 +356,10 @@ public final class ExactInstance {
             case BSUM -> a.add(b).min(Rational.ONE);
             case NSUM, SUM -> a.add(b);
             case PROBOR -> a.add(b).subtract(a.multiply(b));
+            case ESUM -> or(OrAlgorithm.ESUM, a, b);
+            case HSUM -> or(OrAlgorithm.HSUM, a, b);
+            case DSUM -> or(OrAlgorithm.DSUM, a, b);
+            case NMAX -> or(OrAlgorithm.NMAX, a, b);
         };
     }
 

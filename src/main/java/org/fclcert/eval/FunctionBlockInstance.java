@@ -145,6 +145,9 @@ public final class FunctionBlockInstance {
         for (int t = plan.termShape.length; t < termDegrees.length; t++) {
             termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
         }
+        if (plan.valueTermShape != null) {
+            valueConditions();
+        }
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             runRuleBlock(rb, trace);
         }
@@ -195,6 +198,21 @@ public final class FunctionBlockInstance {
             if (trace != null) {
                 trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
             }
+        }
+    }
+
+    /**
+     * jFuzzyLogic's 'output IS term' in a condition: the term's degree at the output's value when the evaluation
+     * begins, which is its numeric DEFAULT (jFuzzyLogic resets it so before the rules) or, with DEFAULT NC, the value
+     * of the last evaluation.
+     */
+    private void valueConditions() {
+        for (int k = 0; k < plan.valueTermShape.length; k++) {
+            double u = Double.isNaN(plan.valueTermStart[k]) ? values[plan.valueTermSlot[k]] : plan.valueTermStart[k];
+            int s = plan.valueTermShape[k];
+            Shape shape = plan.shapes[s];
+            termDegrees[plan.termShape.length + k] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0)
+                    : shape.kind == null ? Pwl.degree(curX[s], curY[s], shape.n, u) : shape.kind.degree(shape.params, u);
         }
     }
 
@@ -253,6 +271,10 @@ public final class FunctionBlockInstance {
             case BSUM -> Math.min(1.0, a + b);
             case NSUM, SUM -> a + b;
             case PROBOR -> a == 1.0 || b == 1.0 ? 1.0 : a + b - a * b;
+            case ESUM -> or(OrAlgorithm.ESUM, a, b);
+            case HSUM -> or(OrAlgorithm.HSUM, a, b);
+            case DSUM -> or(OrAlgorithm.DSUM, a, b);
+            case NMAX -> or(OrAlgorithm.NMAX, a, b);
         };
     }
 
@@ -323,8 +345,9 @@ public final class FunctionBlockInstance {
                 plan.shapes[s].resolve(values, curX[s], curY[s]);
             }
         }
-        double result = o.singletons() ? singletons(o, trace) : smooth != null ? smoothSet(o, smooth, trace)
-                : pointSet(o, trace);
+        double result = o.singletons() ? singletons(o, trace)
+                : o.method() == DefuzzificationMethod.TSUKAMOTO ? tsukamoto(o, trace)
+                : smooth != null ? smoothSet(o, smooth, trace) : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
         if (Double.isNaN(result) && !(smooth != null ? smooth.empty() : nothingFired(o))) {
             throw new EvaluationException(EvaluationCode.NO_RESULT,
@@ -351,7 +374,7 @@ public final class FunctionBlockInstance {
      * (LM, RM). A NaN result from a non-empty set is an overflow, not a reason for DEFAULT.
      */
     private boolean nothingFired(OutputPlan o) {
-        if (o.singletons()) {
+        if (o.singletons() || o.method() == DefuzzificationMethod.TSUKAMOTO) {
             for (int t = 0; t < o.termShapes().length; t++) {
                 if (singletonDegree[t] != 0) {
                     return false;
@@ -363,12 +386,11 @@ public final class FunctionBlockInstance {
         return byArea ? Defuzzifier.area(set.px, set.py, set.np) == 0 : Defuzzifier.supremum(set.py, set.np) == 0;
     }
 
-    /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */
-    private double singletons(OutputPlan o, Trace trace) {
+    /** Each term's accumulated degree (point 4: w·d of every subconclusion naming it, NSUM normalised) into singletonDegree. */
+    private void degreesPerTerm(OutputPlan o) {
         int terms = o.termShapes().length;
         for (int t = 0; t < terms; t++) {
             singletonDegree[t] = 0;
-            singletonValue[t] = curX[o.termShapes()[t]][0];
         }
         int[] cs = o.contributions();
         for (int i = 0; i < cs.length; i++) {
@@ -385,6 +407,15 @@ public final class FunctionBlockInstance {
                 singletonDegree[t] /= max;
             }
         }
+    }
+
+    /** Singleton outputs accumulate per term; CoGS (= CoG), LM and RM over the terms. NaN if empty. */
+    private double singletons(OutputPlan o, Trace trace) {
+        int terms = o.termShapes().length;
+        for (int t = 0; t < terms; t++) {
+            singletonValue[t] = curX[o.termShapes()[t]][0];
+        }
+        degreesPerTerm(o);
         if (trace != null) {
             List<Trace.Breakpoint> pts = new ArrayList<>();
             for (int t = 0; t < terms; t++) {
@@ -399,6 +430,37 @@ public final class FunctionBlockInstance {
             case COGSS -> weightedSumOfSingletons(terms);
             default -> centreOfGravityForSingletons(terms);
         };
+    }
+
+    /**
+     * Tsukamoto's method (Open Level, O-TSUKAMOTO): the terms' degrees accumulated per term as for singletons, each
+     * monotonic term inverted at its degree ({@link Tsukamoto#point}), the weighted average of those points; NaN when
+     * nothing fired.
+     */
+    private double tsukamoto(OutputPlan o, Trace trace) {
+        int terms = o.termShapes().length;
+        degreesPerTerm(o);
+        double num = 0;
+        double den = 0;
+        for (int t = 0; t < terms; t++) {
+            int s = o.termShapes()[t];
+            singletonValue[t] = singletonDegree[t] > 0 ? Tsukamoto.point(plan.shapes[s], curX[s], curY[s],
+                    singletonDegree[t], o.hasRange(), o.rangeMin(), o.rangeMax()) : Double.NaN;
+            if (singletonDegree[t] > 0) {
+                num += singletonDegree[t] * singletonValue[t];
+                den += singletonDegree[t];
+            }
+        }
+        if (trace != null) {
+            List<Trace.Breakpoint> pts = new ArrayList<>();
+            for (int t = 0; t < terms; t++) {
+                if (singletonDegree[t] > 0) {
+                    pts.add(new Trace.Breakpoint(singletonValue[t], singletonDegree[t]));
+                }
+            }
+            trace.add(new Trace.AccumulatedSet(o.variable(), true, pts));
+        }
+        return den > 0 ? num / den : Double.NaN;
     }
 
     /** fuzzylite's COGSS: Σ u·μ, not divided by Σ μ; NaN when every degree is 0 (nothing fired). */
@@ -510,7 +572,7 @@ public final class FunctionBlockInstance {
             double d = contributionDegree[cs[i]];
             double w = contributionWeight[cs[i]];
             if (d * w > 0) {
-                into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionProd()[i]);
+                into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
             }
         }
     }

@@ -6,13 +6,14 @@ import org.fclcert.model.DefuzzificationMethod;
 
 /**
  * Defuzzification of an accumulated set that is not piece-wise linear: an output with a smooth named
- * shape (Gaussian, bell, ...) or accumulated by PROBOR (a + b − ab of two linear pieces is quadratic).
+ * shape (Gaussian, bell, ...), accumulated by PROBOR (a + b − ab of two linear pieces is quadratic) or by
+ * another of the dialects' s-norms, or activated by a t-norm outside Table 4 (Einstein product, ...).
  * docs/semantics.md, "Named shapes, hedges and other dialect accumulations", states the method:
  *
  * <ul>
  * <li>The interval is split at every known non-smooth place: term points, the shapes' special points,
- *     and the places where a MIN clip level meets a term (exact for points, closed form for the
- *     shapes that invert simply). Kinks not known in advance (envelope crossings under MAX, a sum
+ *     and the places where a MIN clip level (or a kink of another activation) meets a term (exact for points,
+ *     closed form for the shapes that invert simply). Kinks not known in advance (envelope crossings under MAX, a sum
  *     reaching 1 under BSUM) are handled by the adaptivity.</li>
  * <li>Each piece is integrated by adaptive Gauss–Kronrod (7/15 points), area and first moment
  *     together, bisecting a panel until |K15 − G7| ≤ 1e-13 · (its share of the interval) · (the largest
@@ -49,6 +50,8 @@ final class SmoothSet {
     private double[][] cx;
     private double[][] cy;
     private AccumulationMethod accu;
+    /** The s-norm of the dialects' other accumulations (ESUM, ...), else null. */
+    private org.fclcert.model.OrAlgorithm sNorm;
 
     private double[] split = new double[16];
     private int nSplit;
@@ -74,6 +77,7 @@ final class SmoothSet {
                 case MAX -> Math.max(acc, c);
                 case BSUM, NSUM, SUM -> acc + c;
                 case PROBOR -> acc + c - acc * c;
+                case ESUM, HSUM, DSUM, NMAX -> FunctionBlockInstance.or(sNorm, acc, c);
             };
         }
         return accu == AccumulationMethod.BSUM ? Math.min(1.0, acc) : acc;
@@ -89,6 +93,7 @@ final class SmoothSet {
         this.cx = curX;
         this.cy = curY;
         this.accu = accumulation;
+        this.sNorm = accumulation.otherNorm().orElse(null);
         lastEmpty = true;
         if (act.n == 0 || !(lo < hi)) {
             return Double.NaN;
@@ -134,7 +139,13 @@ final class SmoothSet {
                 for (double u : s.kind.specialPoints(s.params)) {
                     addSplit(u, lo, hi);
                 }
-                if (!act.prod[j]) {
+                if (act.norm[j] != null) {
+                    for (double k : act.kinkDegrees(j)) {
+                        for (double u : s.kind.levelCrossings(s.params, k)) {
+                            addSplit(u, lo, hi);
+                        }
+                    }
+                } else if (!act.prod[j]) {
                     for (double u : s.kind.levelCrossings(s.params, act.level[j])) {
                         addSplit(u, lo, hi);
                     }
@@ -145,13 +156,12 @@ final class SmoothSet {
                 for (int i = 0; i < s.n; i++) {
                     addSplit(x[i], lo, hi);
                 }
-                if (!act.prod[j]) {
-                    double level = act.level[j];
-                    for (int i = 0; i + 1 < s.n; i++) {
-                        if ((y[i] - level) * (y[i + 1] - level) < 0 && x[i + 1] > x[i]) {
-                            addSplit(x[i] + (x[i + 1] - x[i]) * (level - y[i]) / (y[i + 1] - y[i]), lo, hi);
-                        }
+                if (act.norm[j] != null) {
+                    for (double k : act.kinkDegrees(j)) {
+                        pointCrossings(x, y, s.n, k, lo, hi);
                     }
+                } else if (!act.prod[j]) {
+                    pointCrossings(x, y, s.n, act.level[j], lo, hi);
                 }
             }
         }
@@ -163,6 +173,15 @@ final class SmoothSet {
             }
         }
         nSplit = m;
+    }
+
+    /** Where a point term crosses a degree (a MIN clip level, a kink of another activation). */
+    private void pointCrossings(double[] x, double[] y, int n, double level, double lo, double hi) {
+        for (int i = 0; i + 1 < n; i++) {
+            if ((y[i] - level) * (y[i + 1] - level) < 0 && x[i + 1] > x[i]) {
+                addSplit(x[i] + (x[i + 1] - x[i]) * (level - y[i]) / (y[i + 1] - y[i]), lo, hi);
+            }
+        }
     }
 
     private void addSplit(double u, double lo, double hi) {

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.stream.Collectors;
 import org.fclcert.check.Analysis;
 import org.fclcert.check.FeatureDetector;
@@ -36,8 +37,9 @@ public final class CaseFiles {
         return level + "-" + feature;
     }
 
-    /** The whole case file. */
-    static String text(Finding f, String id, String iutName) throws EvaluationException {
+    /** The whole case file (with where the text as sent is, when the run presented it in a library's layout). */
+    static String text(Finding f, String id, String iutName, Optional<Presentation.Sent> sent, Optional<String> sentAs)
+            throws EvaluationException {
         Shrinker.Case c = f.minimal();
         Program program = c.program();
         FeatureReport report = new FeatureDetector().detect(program);
@@ -56,9 +58,16 @@ public final class CaseFiles {
                 .append("]\n");
         out.append("tests: [").append(f.feature().id()).append("]\n");
         out.append("tolerance: ").append(continuous ? "continuous" : "exact").append('\n');
-        out.append("flags: [").append(stateful ? "stateful" : "").append("]\n");
+        List<String> flags = new ArrayList<>();
+        if (stateful) {
+            flags.add("stateful");
+        }
+        if (Isolation.verticalEdgeUnderAnInput(c).isPresent()) {
+            flags.add("\"interpretation:1\"");      // the degree at a vertical edge is fclcert's reading (semantics.md 1)
+        }
+        out.append("flags: [").append(String.join(", ", flags)).append("]\n");
         out.append("derivation: |\n");
-        for (String line : derivation(f, steps, iutName)) {
+        for (String line : derivation(f, steps, iutName, sent, sentAs)) {
             out.append("  ").append(line).append('\n');
         }
         out.append("vectors:\n");
@@ -76,10 +85,16 @@ public final class CaseFiles {
         return (int) compact(program).lines().count();
     }
 
-    private static List<String> derivation(Finding f, List<ReferenceProgram.Step> steps, String iutName) {
+    private static List<String> derivation(Finding f, List<ReferenceProgram.Step> steps, String iutName,
+            Optional<Presentation.Sent> sent, Optional<String> sentAs) {
         List<String> lines = new ArrayList<>();
         lines.add("Reference values from fclcert's reference evaluator, step by step from its trace; review them by hand");
         lines.add("before the case joins the corpus. " + plain(iutName) + " deviates: " + f.deviation().message() + ".");
+        sent.flatMap(Presentation.Sent::layout).ifPresent(l -> lines.add("It got the program in " + l.displayName()
+                + "'s layout" + sentAs.map(a -> " (" + a + ")").orElse("") + "."));
+        for (org.fclcert.model.Diagnostic d : sent.map(Presentation.Sent::differences).orElse(List.of())) {
+            lines.add("The writer notes (" + d.code() + "): " + d.message() + ".");
+        }
         for (int i = 0; i < steps.size(); i++) {
             ReferenceProgram.Step s = steps.get(i);
             Trace t = s.trace();

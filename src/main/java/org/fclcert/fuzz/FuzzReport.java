@@ -13,6 +13,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.model.Feature;
 
@@ -32,18 +33,34 @@ public final class FuzzReport {
     private FuzzReport() {
     }
 
-    /** Writes everything; returns the case files in finding order. */
+    /**
+     * Writes everything; returns the case files in finding order. When the run presented programs in a library's
+     * layout, each case's text as sent goes to {@code as-<layout>/<id>.fcl} beside it (a subdirectory, so that
+     * {@code fclcert corpus add DIR/*.fcl} takes only the standard cases).
+     */
     public static List<Written> write(Fuzzer.Result result, Path dir) throws IOException {
         Files.createDirectories(dir);
         List<Written> written = new ArrayList<>();
         Map<String, Integer> numbers = new HashMap<>();
+        Presentation presentation = new Presentation(result.options().layout());
         for (Finding f : result.findings()) {
             String prefix = CaseFiles.prefix(f);
             int n = numbers.merge(prefix, 1, Integer::sum);
             String id = prefix + String.format(Locale.ROOT, "-%03d", n);
             Path file = dir.resolve(id + ".fcl");
             try {
-                Files.writeString(file, CaseFiles.text(f, id, result.iut().name()), StandardCharsets.UTF_8);
+                Optional<Presentation.Sent> sent = result.options().layout().isEmpty() ? Optional.empty()
+                        : presentation.present(f.minimal().program(), new ReferenceProgram(f.minimal().program())
+                                .run(f.minimal().steps())).sent();
+                Optional<String> sentAs = Optional.empty();
+                if (sent.isPresent()) {
+                    String layout = sent.get().layout().orElseThrow().cliName();
+                    Path as = dir.resolve("as-" + layout).resolve(id + ".fcl");
+                    Files.createDirectories(as.getParent());
+                    Files.writeString(as, sent.get().text(), StandardCharsets.UTF_8);
+                    sentAs = Optional.of(dir.relativize(as).toString());
+                }
+                Files.writeString(file, CaseFiles.text(f, id, result.iut().name(), sent, sentAs), StandardCharsets.UTF_8);
             } catch (EvaluationException e) {
                 throw new IllegalStateException("the reference cannot evaluate a case it judged before: " + e.getMessage(), e);
             }
@@ -71,6 +88,7 @@ public final class FuzzReport {
         ArrayNode focus = run.putArray("features");
         r.options().settings().focus().stream().map(Feature::id).sorted().forEach(focus::add);
         run.put("jobs", r.options().jobs());
+        run.put("presentAs", r.options().layout().map(l -> l.cliName()).orElse("none"));
         run.put("started", r.started().toString());
         Fuzzer.Progress p = r.progress();
         run.put("elapsedSeconds", p.elapsedMillis() / 1000.0);
@@ -86,6 +104,13 @@ public final class FuzzReport {
         counts.put("programsWithoutFairSteps", p.programsWithoutSteps());
         counts.put("restarts", p.restarts());
         counts.put("generatorBugs", p.generatorBugs());
+        counts.put("notPresentable", p.notPresentable());
+        ObjectNode time = root.putObject("time");
+        time.put("referenceSeconds", p.referenceMillis() / 1000.0);
+        time.put("implementationSeconds", p.implementationMillis() / 1000.0);
+        time.put("shrinkSeconds", p.shrinkMillis() / 1000.0);
+        ObjectNode why = root.putObject("notPresentable");
+        r.notPresentable().forEach(why::put);
         ArrayNode list = root.putArray("findings");
         for (Written w : written) {
             Finding f = w.finding();
@@ -109,7 +134,16 @@ public final class FuzzReport {
         r.generatorBugs().forEach(bugs::add);
         ArrayNode infra = root.putArray("infrastructureErrors");
         r.infrastructureErrors().forEach(infra::add);
+        ArrayNode faults = root.putArray("presentationFaults");
+        r.presentationFaults().forEach(faults::add);
         return root;
+    }
+
+    /** Reasons for not presenting, most frequent first: {@code FCL-X104 812, FCL-X102 97}. */
+    public static String reasons(Map<String, Long> byReason) {
+        return byReason.entrySet().stream().sorted(Map.Entry.<String, Long>comparingByValue().reversed()
+                .thenComparing(Map.Entry.comparingByKey())).map(e -> e.getKey() + " " + e.getValue())
+                .collect(java.util.stream.Collectors.joining(", "));
     }
 
     static String markdown(Fuzzer.Result r, List<Written> written) {
@@ -122,6 +156,15 @@ public final class FuzzReport {
                         .map(Feature::id).sorted().toList(),
                 r.options().jobs(), p.elapsedMillis() / 1000.0, p.programs(), p.vectors(), p.programsPerSecond(),
                 p.vectorsPerSecond(), p.disagreements(), written.size()));
+        md.append(String.format(Locale.ROOT, "Time of the jobs (summed): %.1f s on the reference side (generating, "
+                + "checking, judging and evaluating steps), %.1f s waiting for the implementation, %.1f s on "
+                + "disagreements (deduplicating, shrinking).%n%n", p.referenceMillis() / 1000.0,
+                p.implementationMillis() / 1000.0, p.shrinkMillis() / 1000.0));
+        r.options().layout().ifPresent(l -> md.append("Programs were sent in ").append(l.displayName())
+                .append("'s layout (`--present-as ").append(l.cliName()).append("`); ").append(p.notPresentable())
+                .append(" generated program(s) were not presentable").append(r.notPresentable().isEmpty() ? ""
+                        : " (" + reasons(r.notPresentable()) + ")").append(". Each case's text as sent is in `as-")
+                .append(l.cliName()).append("/`.\n\n"));
         if (!written.isEmpty()) {
             md.append("| case | feature | kind | first seen | lines (original → minimal) | same finding again |\n");
             md.append("|---|---|---|---|---|---|\n");
@@ -145,6 +188,8 @@ public final class FuzzReport {
         md.append(String.format(Locale.ROOT, "%nSteps judged unfair (knife edges) and not sent: %d. Restarts of the "
                 + "implementation: %d. Generator bugs: %d.%n", p.unfairSteps(), p.restarts(), p.generatorBugs()));
         r.infrastructureErrors().forEach(e -> md.append("\nInfrastructure: ").append(e).append('\n'));
+        r.presentationFaults().forEach(e -> md.append("\nA written text fclcert cannot vouch for (a fault of fclcert's"
+                + " writer or reader): ").append(e.lines().findFirst().orElse("")).append('\n'));
         return md.toString();
     }
 }

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Random;
+import java.util.TreeMap;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import org.fclcert.check.Analysis;
@@ -19,6 +20,7 @@ import org.fclcert.iut.IutInfo;
 import org.fclcert.model.Feature;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.write.CanonicalWriter;
 
 /**
@@ -36,32 +38,48 @@ public final class Fuzzer {
      * @param shrinkTime   the longest one finding is shrunk
      * @param maxShrinks   the most disagreements shrunk in one run; later unexplained ones are only counted
      * @param maxFindings  stop generating once this many distinct findings are known (0 = no limit)
+     * @param layout       the library layout programs are sent in ({@code --present-as}); empty: standard FCL
      */
     public record Options(long seed, Duration budget, long maxPrograms, FuzzSettings settings, int jobs,
-            Duration shrinkTime, int maxShrinks, int maxFindings) {
+            Duration shrinkTime, int maxShrinks, int maxFindings, Optional<Dialect> layout) {
         public Options {
             if (jobs < 1) {
                 throw new IllegalArgumentException("jobs must be at least 1");
+            }
+            if (layout.isPresent() && layout.get() == Dialect.STRICT) {
+                throw new IllegalArgumentException("standard FCL is sent without a layout");
             }
         }
 
         public static Options of(long seed, Duration budget, FuzzSettings settings, int jobs) {
             Duration shrink = Duration.ofSeconds(Math.max(15, Math.min(60, budget.toSeconds() / 3)));
-            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0);
+            return new Options(seed, budget, 0, settings, jobs, shrink, 40, 0, Optional.empty());
         }
 
         public Options withMaxPrograms(long n) {
-            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings);
+            return new Options(seed, budget, n, settings, jobs, shrinkTime, maxShrinks, maxFindings, layout);
         }
 
         public Options withMaxFindings(int n) {
-            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n);
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, n, layout);
+        }
+
+        /** Programs sent in this library's layout ({@code --present-as}); empty: as standard FCL. */
+        public Options withLayout(Optional<Dialect> l) {
+            return new Options(seed, budget, maxPrograms, settings, jobs, shrinkTime, maxShrinks, maxFindings, l);
         }
     }
 
     /** Counters of a run, as shown while it goes and in the summary. */
+    /**
+     * @param referenceMillis      time the jobs spent on the reference side (generating, checking, judging and
+     *                             evaluating steps, presenting), summed over jobs
+     * @param implementationMillis time the jobs spent waiting for the implementation (load and every step)
+     * @param shrinkMillis         time spent deciding whether a disagreement is known, and shrinking it
+     */
     public record Progress(long programs, long vectors, int findings, long disagreements, long elapsedMillis,
-            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts) {
+            long unfairSteps, long programsWithoutSteps, long generatorBugs, int restarts, long notPresentable,
+            long referenceMillis, long implementationMillis, long shrinkMillis) {
         public double programsPerSecond() {
             return elapsedMillis == 0 ? 0 : programs * 1000.0 / elapsedMillis;
         }
@@ -71,9 +89,17 @@ public final class Fuzzer {
         }
     }
 
-    /** The whole result. */
+    /**
+     * The whole result.
+     *
+     * @param notPresentable     per reason (the writer's {@code FCL-X1nn} code, or a fault of fclcert's: see {@link
+     *                           Presentation}), how many generated programs were not sent because the layout of
+     *                           {@code --present-as} could not say them
+     * @param presentationFaults the first programs a writer and fclcert's reader of its dialect disagreed on
+     */
     public record Result(IutInfo iut, Options options, Instant started, Progress progress, List<Finding> findings,
-            long unexplained, List<String> generatorBugs, List<String> infrastructureErrors) {
+            long unexplained, List<String> generatorBugs, List<String> infrastructureErrors,
+            Map<String, Long> notPresentable, List<String> presentationFaults) {
     }
 
     private final CanonicalWriter writer = new CanonicalWriter();
@@ -86,6 +112,13 @@ public final class Fuzzer {
     private final AtomicLong noSteps = new AtomicLong();
     private final AtomicLong unexplained = new AtomicLong();
     private final AtomicLong shrinks = new AtomicLong();
+    private final AtomicLong notPresentable = new AtomicLong();
+    private final AtomicLong referenceNanos = new AtomicLong();
+    private final AtomicLong implementationNanos = new AtomicLong();
+    private final AtomicLong shrinkNanos = new AtomicLong();
+    private final Map<String, Long> notPresentableBy = new TreeMap<>();
+    private final List<String> presentationFaults = new ArrayList<>();
+    private Presentation presentation = Presentation.standard();
     private final List<String> generatorBugs = new ArrayList<>();
     private final List<String> infrastructure = new ArrayList<>();
     private final Map<String, Finding> findings = new LinkedHashMap<>();
@@ -93,7 +126,7 @@ public final class Fuzzer {
     private volatile Instant start;
 
     public Fuzzer() {
-        this(new ExactFairness());
+        this(new ScreenedFairness());
     }
 
     public Fuzzer(FairnessJudge fairness) {
@@ -117,6 +150,7 @@ public final class Fuzzer {
     public Result run(IutSession.Factory factory, Options options, Duration interval, Consumer<Progress> progress)
             throws IutException, InterruptedException {
         start = Instant.now();
+        presentation = new Presentation(options.layout());
         IutSession first = new IutSession(factory);
         IutInfo info;
         try {
@@ -155,7 +189,8 @@ public final class Fuzzer {
         list.sort(Comparator.comparingLong(Finding::programIndex));
         synchronized (generatorBugs) {
             return new Result(info, options, start, progress(), List.copyOf(list), unexplained.get(),
-                    List.copyOf(generatorBugs), List.copyOf(infrastructure));
+                    List.copyOf(generatorBugs), List.copyOf(infrastructure), java.util.Collections.unmodifiableMap(new TreeMap<>(notPresentableBy)),
+                    List.copyOf(presentationFaults));
         }
     }
 
@@ -170,7 +205,8 @@ public final class Fuzzer {
         }
         long elapsed = start == null ? 0 : Duration.between(start, Instant.now()).toMillis();
         return new Progress(programs.get(), vectors.get(), n, disagreements.get(), elapsed, unfair.get(), noSteps.get(),
-                generatorBugs.size(), restarts);
+                generatorBugs.size(), restarts, notPresentable.get(), referenceNanos.get() / 1_000_000,
+                implementationNanos.get() / 1_000_000, shrinkNanos.get() / 1_000_000);
     }
 
     private void job(IutSession given, IutSession.Factory factory, Options options, ProgramGenerator generator,
@@ -218,8 +254,36 @@ public final class Fuzzer {
         };
     }
 
+    /** A generated program ready to be sent: its text, model, reference, fair steps, expected values, text as sent. */
+    private record Prepared(long seed, String text, Program program, ReferenceProgram ref,
+            List<java.util.Map<String, Double>> steps, List<ReferenceProgram.Step> expected, Presentation.Sent sent) {
+    }
+
     private void one(IutSession session, Options options, ProgramGenerator generator, VectorGenerator vg, long index)
             throws IutException {
+        long t0 = System.nanoTime();
+        Prepared p = prepare(options, generator, vg, index);
+        long t1 = System.nanoTime();
+        referenceNanos.addAndGet(t1 - t0);
+        if (p == null) {
+            return;
+        }
+        Optional<Deviation> d = Trial.run(session, p.ref(), p.sent(), p.expected());
+        long t2 = System.nanoTime();
+        implementationNanos.addAndGet(t2 - t1);
+        programs.incrementAndGet();
+        vectors.addAndGet(d.isEmpty() ? p.steps().size() : d.get().step() + 1);     // the vectors the IUT evaluated
+        if (d.isPresent()) {
+            try {
+                disagreement(session, options, index, p, d.get());
+            } finally {
+                shrinkNanos.addAndGet(System.nanoTime() - t2);
+            }
+        }
+    }
+
+    /** The reference side of one program; null when there is nothing to send (counted why). */
+    private Prepared prepare(Options options, ProgramGenerator generator, VectorGenerator vg, long index) {
         long seed = programSeed(options.seed(), index);
         Program generated = generator.generate(seed);
         String text = writer.write(generated);
@@ -228,31 +292,41 @@ public final class Fuzzer {
             synchronized (generatorBugs) {
                 generatorBugs.add("program " + index + " (seed " + seed + "): " + analysis.diagnostics().get(0));
             }
-            return;
+            return null;
         }
         Program program = analysis.program().get();
+        Presentation.Outcome written = presentation.write(program);
+        if (written.sent().isEmpty()) {
+            notPresented(index, written);
+            return null;
+        }
         ReferenceProgram ref = new ReferenceProgram(program);
         List<java.util.Map<String, Double>> steps = vg.steps(ref, new Random(seed ^ 0x5DEECE66DL));
         if (steps.isEmpty()) {
             noSteps.incrementAndGet();
-            return;
+            return null;
         }
         List<ReferenceProgram.Step> expected;
         try {
             expected = ref.run(steps);
         } catch (EvaluationException e) {
             noSteps.incrementAndGet();
-            return;
+            return null;
         }
-        Optional<Deviation> d = Trial.run(session, ref, text, expected);
-        programs.incrementAndGet();
-        vectors.addAndGet(d.isEmpty() ? steps.size() : d.get().step() + 1);     // the vectors the IUT evaluated
-        if (d.isEmpty()) {
-            return;
+        Presentation.Outcome presented = presentation.vouch(written, expected);
+        if (presented.sent().isEmpty()) {
+            notPresented(index, presented);
+            return null;
         }
+        return new Prepared(seed, text, program, ref, steps, expected, presented.sent().get());
+    }
+
+    /** A new disagreement: a known finding again, or shrunk into a finding of its own. */
+    private void disagreement(IutSession session, Options options, long index, Prepared p, Deviation deviation)
+            throws IutException {
         disagreements.incrementAndGet();
-        Shrinker.Case raw = new Shrinker.Case(program, steps);
-        if (known(session, raw, d.get())) {
+        Shrinker.Case raw = new Shrinker.Case(p.program(), p.steps());
+        if (known(session, raw, deviation)) {
             return;
         }
         if (shrinks.incrementAndGet() > options.maxShrinks()) {
@@ -261,10 +335,10 @@ public final class Fuzzer {
         }
         long foundAfter = Duration.between(start, Instant.now()).toMillis();
         Instant deadline = Instant.now().plus(options.shrinkTime());
-        Shrinker.Result shrunk = new Shrinker(session, fairness, 4000, deadline).shrink(raw, d.get());
-        Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation());
-        Finding f = new Finding(feature, d.get().kind(), shrunk.minimal(), shrunk.deviation(), d.get(), index, seed,
-                (int) text.lines().count(), shrunk.tried(), 0, foundAfter,
+        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline).shrink(raw, deviation);
+        Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation(), presentation);
+        Finding f = new Finding(feature, deviation.kind(), shrunk.minimal(), shrunk.deviation(), deviation, index, p.seed(),
+                (int) p.text().lines().count(), shrunk.tried(), 0, foundAfter,
                 Duration.between(start, Instant.now()).toMillis() - foundAfter);
         synchronized (findings) {
             Finding before = findings.get(f.key());
@@ -280,7 +354,21 @@ public final class Fuzzer {
         }
     }
 
-    /** True when switching off the feature of a finding of the same kind makes the disagreement go away. */
+    private void notPresented(long index, Presentation.Outcome o) {
+        notPresentable.incrementAndGet();
+        synchronized (notPresentableBy) {
+            notPresentableBy.merge(o.reason(), 1L, Long::sum);
+            if (Presentation.FAULTS.contains(o.reason()) && presentationFaults.size() < 5) {
+                presentationFaults.add("program " + index + ": " + o.reason() + ": " + o.detail());
+            }
+        }
+    }
+
+    /**
+     * True when the disagreement is a known finding of the same kind again: a refusal that says the same (numbers
+     * aside) or quotes the same token of the language (not a name of the program), a small error on an output whose METHOD is a finding, or one that goes away when the feature of a
+     * finding is switched off.
+     */
     private boolean known(IutSession session, Shrinker.Case raw, Deviation d) throws IutException {
         List<Finding> same;
         synchronized (findings) {
@@ -288,8 +376,10 @@ public final class Fuzzer {
         }
         if (!Isolation.valueKind(d.kind())) {
             String signature = Isolation.signature(d);
+            Optional<String> token = Isolation.quotedToken(d, raw.program());
             for (Finding f : same) {
-                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)) {
+                if (Isolation.signature(f.original()).equals(signature) || Isolation.signature(f.deviation()).equals(signature)
+                        || token.isPresent() && token.equals(Isolation.quotedToken(f.deviation(), f.minimal().program()))) {
                     synchronized (findings) {
                         findings.put(f.key(), findings.get(f.key()).withDuplicate());
                     }
@@ -297,8 +387,18 @@ public final class Fuzzer {
                 }
             }
         }
+        // a small error on an output whose METHOD is already a finding (a sampling library errs so on every such output)
+        Optional<Feature> method = Isolation.smallErrorOfMethod(raw, d);
+        for (Finding f : same) {
+            if (method.isPresent() && f.feature() == method.get()) {
+                synchronized (findings) {
+                    findings.put(f.key(), findings.get(f.key()).withDuplicate());
+                }
+                return true;
+            }
+        }
         java.util.Set<Feature> used = new FeatureDetector().detect(raw.program()).features();
-        Shrinker probe = new Shrinker(session, fairness, Integer.MAX_VALUE, Instant.MAX);
+        Shrinker probe = new Shrinker(session, fairness, presentation, Integer.MAX_VALUE, Instant.MAX);
         for (Finding f : same) {
             if (!used.contains(f.feature())) {
                 continue;

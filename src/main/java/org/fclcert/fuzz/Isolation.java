@@ -9,6 +9,9 @@ import org.fclcert.check.FeatureReport;
 import java.util.OptionalDouble;
 import org.fclcert.corpus.OutputScales;
 import org.fclcert.model.Defuzzification;
+import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Trace;
 import java.util.Set;
 import org.fclcert.check.FeatureDetector;
 import org.fclcert.model.Condition;
@@ -29,7 +32,10 @@ import org.fclcert.model.Term;
  * basics out (ACCU MAX for NSUM, no ACT, no WITH, a DEFAULT constant, ...) and failed, so each one left is
  * needed; the most specific of them names the case. A case of Basic features only is named by what it
  * exercises: an input beyond a term's outer points (B-IN-TERM), a singleton concluded by two rules
- * (B-COGS), or the default when nothing fires.
+ * (B-COGS), or the default when nothing fires. An input exactly on a vertical edge of its term names the case by
+ * that term's points feature before anything else, and a rule firing with a degree of at most 1e-6 (which an
+ * implementation may take for not firing) by B-DEFAULT-VALUE. A singleton of the deviating CoGS output
+ * activated twice names it B-COGS unless an accumulation, activation, weight, NC or operator setting is left.
  */
 final class Isolation {
     /** Most specific first: what the shrinker can switch off, then the methods, then structure. */
@@ -45,18 +51,39 @@ final class Isolation {
     private Isolation() {
     }
 
-    static Feature feature(Shrinker.Case c, Deviation d) {
+    static Feature feature(Shrinker.Case c, Deviation d, Presentation presentation) {
         FeatureReport report = new FeatureDetector().detect(c.program());
         Set<Feature> used = report.features();
         if (!valueKind(d.kind())) {
-            Optional<Feature> named = refusal(report, d);
+            // the line an implementation names is a line of the text it got (in a library's layout, when presented)
+            FeatureReport seen = presentation.layout().isEmpty() ? report : presentation.seen(c.program())
+                    .map(p -> new FeatureDetector().detect(p)).orElse(report);
+            Optional<Feature> named = refusal(seen, report.features(), d);
             if (named.isPresent()) {
                 return named.get();
             }
         }
+        Optional<Feature> edge = verticalEdgeUnderAnInput(c);
+        if (edge.isPresent() && valueKind(d.kind())) {
+            return edge.get();
+        }
+        Optional<Trace> trace = trace(c, d);
+        if (valueKind(d.kind()) && trace.isPresent() && trace.get().ruleDegrees().stream()
+                .anyMatch(r -> r.degree() > 0 && r.degree() <= TINY)) {
+            return Feature.B_DEFAULT_VALUE;
+        }
         Optional<Feature> precision = precision(c, d, used);
         if (precision.isPresent()) {
             return precision.get();
+        }
+        List<Feature> switchable = PRIORITY.subList(0, PRIORITY.indexOf(Feature.E_NOT));
+        for (Feature f : switchable) {
+            if (used.contains(f)) {
+                return f;
+            }
+        }
+        if (d.kind() == DeviationKind.WRONG_VALUE && trace.isPresent() && singletonActivatedTwice(c, d, trace.get())) {
+            return Feature.B_COGS;
         }
         for (Feature f : PRIORITY) {
             if (used.contains(f)) {
@@ -80,6 +107,8 @@ final class Isolation {
         return used.contains(Feature.B_AND_MIN) && hasAnd(fb) ? Feature.B_AND_MIN : Feature.B_COGS;
     }
 
+    /** A rule degree this small is one an implementation may take for "did not fire" (fuzzylite: 1e-6). */
+    private static final double TINY = 1e-6;
     private static final Pattern LINE = Pattern.compile("\\(line (\\d+)\\)");
     private static final Map<String, Feature> WORDS = Map.ofEntries(Map.entry("COGS", Feature.B_COGS),
             Map.entry("COG", Feature.E_COG), Map.entry("COA", Feature.E_COA), Map.entry("LM", Feature.E_LM),
@@ -97,7 +126,7 @@ final class Isolation {
      * A refusal (rejection, error, crash) is named by the most specific feature used on the line the
      * implementation names, else by a feature whose keyword its message names.
      */
-    private static Optional<Feature> refusal(FeatureReport report, Deviation d) {
+    private static Optional<Feature> refusal(FeatureReport report, Set<Feature> used, Deviation d) {
         Matcher m = LINE.matcher(d.message());
         if (m.find()) {
             int line = Integer.parseInt(m.group(1));
@@ -108,14 +137,14 @@ final class Isolation {
                     return Optional.of(f);
                 }
             }
-            Optional<Feature> basic = there.stream().sorted().findFirst();
+            Optional<Feature> basic = there.stream().filter(used::contains).sorted().findFirst();
             if (basic.isPresent()) {
                 return basic;
             }
         }
         for (String word : d.message().toUpperCase(java.util.Locale.ROOT).split("[^A-Z_]+")) {
             Feature f = WORDS.get(word);
-            if (f != null && report.features().contains(f)) {
+            if (f != null && used.contains(f)) {
                 return Optional.of(f);
             }
         }
@@ -128,6 +157,32 @@ final class Isolation {
         return d.kind().word() + ":" + text.replaceAll("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?", "#");
     }
 
+    private static final Pattern QUOTED = Pattern.compile("'([^']{1,40})'|<([^<>]{1,40})>");
+
+    /**
+     * The first token a refusal quotes ({@code 'LREAL'}, {@code <CoGS>}) that is not a name of the program: two
+     * refusals quoting the same keyword, type or symbol are one finding however the library words them (a printed
+     * parse error, or the same error followed by an internal failure).
+     */
+    static Optional<String> quotedToken(Deviation d, org.fclcert.model.Program program) {
+        Set<String> names = new java.util.HashSet<>();
+        for (FunctionBlock fb : program.functionBlocks()) {
+            names.add(Names.key(fb.name()));
+            fb.variables().forEach(v -> names.add(Names.key(v.name())));
+            fb.fuzzifications().forEach(f -> f.terms().forEach(t -> names.add(Names.key(t.name()))));
+            fb.defuzzifications().forEach(x -> x.terms().forEach(t -> names.add(Names.key(t.name()))));
+            fb.ruleBlocks().forEach(rb -> names.add(Names.key(rb.name())));
+        }
+        Matcher m = QUOTED.matcher(d.message());
+        while (m.find()) {
+            String token = m.group(1) != null ? m.group(1) : m.group(2);
+            if (!names.contains(Names.key(token)) && !token.matches("[-+0-9.eE]+")) {
+                return Optional.of(d.kind().word() + ":" + token);
+            }
+        }
+        return Optional.empty();
+    }
+
     /**
      * A small error (at most a tenth of the output's width) on an output defuzzified over point terms, in a
      * case with nothing more specific to blame (no accumulation, activation, weight or NC): the integration
@@ -135,8 +190,18 @@ final class Isolation {
      * shape the set, which would otherwise name the case.
      */
     private static Optional<Feature> precision(Shrinker.Case c, Deviation d, Set<Feature> used) {
-        if (d.kind() != DeviationKind.WRONG_VALUE || PRIORITY.subList(0, PRIORITY.indexOf(Feature.E_AND_PROD)).stream()
-                .anyMatch(used::contains)) {
+        if (PRIORITY.subList(0, PRIORITY.indexOf(Feature.E_AND_PROD)).stream().anyMatch(used::contains)) {
+            return Optional.empty();
+        }
+        return smallErrorOfMethod(c, d);
+    }
+
+    /**
+     * The METHOD feature of the output {@code d} is on, when {@code d} is a wrong value off by at most a tenth of
+     * that output's width (the size of error an integration or a maximum search makes); empty otherwise.
+     */
+    static Optional<Feature> smallErrorOfMethod(Shrinker.Case c, Deviation d) {
+        if (d.kind() != DeviationKind.WRONG_VALUE) {
             return Optional.empty();
         }
         Optional<Defuzzification> def = c.block().defuzzification(d.output());
@@ -153,6 +218,32 @@ final class Isolation {
             case MOM -> Feature.O_MOM;
             default -> Feature.B_COGS;
         });
+    }
+
+    /**
+     * The points feature of an input term with a vertical edge (two points at one x) that some step puts its input
+     * exactly on: B-IN-TERM for three points or fewer, E-IN-TERM-4 for four, O-MANY-POINTS beyond. Implementations
+     * differ on the degree at the edge (docs/semantics.md point 1 takes the largest); the shrinker never makes an
+     * edge, so one left in a minimal case under an input was there from the start, and is needed.
+     */
+    static Optional<Feature> verticalEdgeUnderAnInput(Shrinker.Case c) {
+        for (Fuzzification f : c.block().fuzzifications()) {
+            for (Term t : f.terms()) {
+                if (!(t.function() instanceof MembershipFunction.Points p)) {
+                    continue;
+                }
+                List<Point> pts = p.points();
+                for (int i = 1; i < pts.size(); i++) {
+                    if (pts.get(i).x() instanceof Literal x && pts.get(i - 1).x() instanceof Literal prev
+                            && x.value() == prev.value() && c.steps().stream().anyMatch(s -> s.entrySet().stream()
+                                    .anyMatch(e -> Names.same(e.getKey(), f.variable()) && e.getValue() == x.value()))) {
+                        return Optional.of(pts.size() <= 3 ? Feature.B_IN_TERM : pts.size() == 4 ? Feature.E_IN_TERM_4
+                                : Feature.O_MANY_POINTS);
+                    }
+                }
+            }
+        }
+        return Optional.empty();
     }
 
     /** Some step puts an input beyond a term's outer points, where the term keeps a non-zero outer degree. */
@@ -176,6 +267,35 @@ final class Isolation {
                         }
                     }
                 }
+            }
+        }
+        return false;
+    }
+
+    /** The reference's trace of the step {@code d} is at (empty for a deviation at load). */
+    private static Optional<Trace> trace(Shrinker.Case c, Deviation d) {
+        if (d.step() < 0 || d.step() >= c.steps().size()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(new ReferenceProgram(c.program()).run(c.steps().subList(0, d.step() + 1))
+                    .get(d.step()).trace());
+        } catch (EvaluationException | RuntimeException e) {
+            return Optional.empty();
+        }
+    }
+
+    /** A singleton term of the deviating CoGS output activated by two subconclusions at once in the step. */
+    private static boolean singletonActivatedTwice(Shrinker.Case c, Deviation d, Trace t) {
+        Optional<Defuzzification> def = c.block().defuzzification(d.output());
+        if (def.isEmpty() || def.get().method().map(m -> m.value() != DefuzzificationMethod.COGS).orElse(true)) {
+            return false;
+        }
+        java.util.Set<String> seen = new java.util.HashSet<>();
+        for (Trace.Activation a : t.activations()) {
+            if (Names.same(a.variable(), d.output()) && a.term().isPresent() && a.activatedDegree() > 0
+                    && !seen.add(Names.key(a.term().get()))) {
+                return true;
             }
         }
         return false;

@@ -369,7 +369,8 @@ public final class ProgramGenerator {
             double actProd = w(Feature.E_ACT_PROD, 0.25);
             Optional<Located<ActivationMethod>> act = Optional.empty();
             if (chance(Math.max(actMin, actProd))) {
-                act = Optional.of(new Located<>(pick(ActivationMethod.values(), actMin, actProd), AT));
+                act = Optional.of(new Located<>(pick(new ActivationMethod[] {ActivationMethod.MIN, ActivationMethod.PROD},
+                        actMin, actProd), AT));
             }
             int nRules = between(1, new int[] {2, 4, 8, 20}[size]);
             List<Rule> rules = new ArrayList<>();
@@ -384,11 +385,9 @@ public final class ProgramGenerator {
                     // every output is concluded in the last block at least once
                     int first = index == count - 1 && i < outs.size() ? i : r.nextInt(outs.size());
                     List<Integer> targets = new ArrayList<>(List.of(first));
-                    if (multiConclusion && outs.size() > 1 && chance(0.5)) {
-                        int other = r.nextInt(outs.size());
-                        if (other != first) {
-                            targets.add(other);
-                        }
+                    if (multiConclusion && chance(0.5)) {
+                        // another output, or the same one again with another term (both are accumulated)
+                        targets.add(r.nextInt(outs.size()));
                     }
                     for (int o : targets) {
                         Out out = outs.get(o);
@@ -412,10 +411,12 @@ public final class ProgramGenerator {
                     Optional.of(new Located<>(accu, AT)), rules, AT);
         }
 
+        /** One subconclusion per variable and term (a bare variable is assigned once). */
         private List<Subconclusion> dedupe(List<Subconclusion> parts) {
             List<Subconclusion> out = new ArrayList<>();
             for (Subconclusion s : parts) {
-                if (out.stream().noneMatch(o -> o.variable().equals(s.variable()))) {
+                if (out.stream().noneMatch(o -> o.variable().equals(s.variable())
+                        && (o.term().isEmpty() || s.term().isEmpty() || o.term().equals(s.term())))) {
                     out.add(s);
                 }
             }

@@ -50,8 +50,10 @@ import org.fclcert.write.CanonicalWriter;
  * after every success, fewer steps, rule blocks, rules, outputs, inputs, local variables, terms,
  * subconclusions and points; simpler conditions; the Basic Level settings (ACCU MAX, AND MIN, no ACT, no
  * RANGE, no WITH, a DEFAULT constant); and rounder numbers. A candidate is kept only when it is valid
- * (strict reader and checks), all its steps are fair, the implementation still deviates in the same way,
- * and it is smaller ({@link #measure}), so the search ends.
+ * (strict reader and checks), all its steps are fair, it can still be presented as the run presents programs
+ * ({@code --present-as}), the implementation still deviates in the same way (the same kind; for a refusal, the
+ * same message but for its numbers), it has no more degenerate shapes
+ * than before ({@link #degeneracies}), and it is smaller ({@link #measure}), so the search ends.
  */
 final class Shrinker {
     private static final SourceLocation AT = SourceLocation.UNKNOWN;
@@ -73,34 +75,39 @@ final class Shrinker {
 
     private final IutSession session;
     private final FairnessJudge fairness;
+    private final Presentation presentation;
     private final int maxTrials;
     private final Instant deadline;
     private int tried;
 
-    Shrinker(IutSession session, FairnessJudge fairness, int maxTrials, Instant deadline) {
+    Shrinker(IutSession session, FairnessJudge fairness, Presentation presentation, int maxTrials, Instant deadline) {
         this.session = session;
         this.fairness = fairness;
+        this.presentation = presentation;
         this.maxTrials = maxTrials;
         this.deadline = deadline;
     }
 
     Result shrink(Case start, Deviation deviation) throws IutException {
         Case current = truncate(start, deviation);
+        String refusal = Isolation.signature(deviation);
         Deviation found = deviation;
         long size = measure(current);
         int accepted = 0;
         boolean progress = true;
         while (progress && !exhausted()) {
             progress = false;
+            int degenerate = degeneracies(current.program());
             for (Case candidate : candidates(current)) {
                 if (exhausted()) {
                     break;
                 }
                 Optional<Case> valid = validate(candidate);
-                if (valid.isEmpty() || measure(valid.get()) >= size) {
+                if (valid.isEmpty() || measure(valid.get()) >= size || degeneracies(valid.get().program()) > degenerate) {
                     continue;
                 }
-                Optional<Deviation> d = test(valid.get(), deviation.kind());
+                Optional<Deviation> d = test(valid.get(), deviation.kind())
+                        .filter(x -> Isolation.valueKind(x.kind()) || Isolation.signature(x).equals(refusal));
                 if (d.isPresent()) {
                     current = truncate(valid.get(), d.get());
                     found = d.get();
@@ -122,6 +129,38 @@ final class Shrinker {
     private static Case truncate(Case c, Deviation d) {
         int keep = d.step() < 0 ? 1 : d.step() + 1;
         return c.steps().size() <= keep ? c : new Case(c.program(), List.copyOf(c.steps().subList(0, keep)));
+    }
+
+    /**
+     * The degenerate shapes in a program: vertical edges (two points of a term at one x) and terms that are 0
+     * everywhere. Rounding a number or dropping a point easily makes one, and implementations differ on them
+     * (fuzzylite's degree at a vertical edge, the maximum of an empty set), so a candidate that gains one could
+     * keep deviating for that reason instead of the one being shrunk; the shrinker never accepts such a
+     * candidate. A case that had one from the start keeps it, so a deviation on them is still found and shrunk.
+     */
+    static int degeneracies(Program p) {
+        int n = 0;
+        FunctionBlock fb = p.functionBlocks().get(0);
+        List<Term> terms = new ArrayList<>();
+        fb.fuzzifications().forEach(f -> terms.addAll(f.terms()));
+        fb.defuzzifications().forEach(d -> terms.addAll(d.terms()));
+        for (Term t : terms) {
+            if (!(t.function() instanceof MembershipFunction.Points pts)) {
+                continue;
+            }
+            List<Point> points = pts.points();
+            boolean zero = true;
+            for (int i = 0; i < points.size(); i++) {
+                Point pt = points.get(i);
+                zero &= pt.degree() instanceof Literal d && d.value() == 0;
+                if (i > 0 && pt.x() instanceof Literal x && points.get(i - 1).x() instanceof Literal prev
+                        && x.value() == prev.value()) {
+                    n++;
+                }
+            }
+            n += zero ? 1 : 0;
+        }
+        return n;
     }
 
     /** Smaller is simpler: the program text, the features beyond Table 8's basics, the digits of the steps. */
@@ -163,7 +202,7 @@ final class Shrinker {
         return Optional.of(new Case(p, steps));
     }
 
-    /** The deviation of the same kind on this case, if the implementation still shows it. */
+    /** The deviation of the same kind on this case (presented as the run presents), if the implementation still shows it. */
     Optional<Deviation> test(Case c, DeviationKind kind) throws IutException {
         tried++;
         ReferenceProgram ref = new ReferenceProgram(c.program());
@@ -180,7 +219,11 @@ final class Shrinker {
         } catch (EvaluationException e) {
             return Optional.empty();
         }
-        return Trial.run(session, ref, WRITER.write(c.program()), expected).filter(d -> d.kind() == kind);
+        Optional<Presentation.Sent> sent = presentation.present(c.program(), expected).sent();
+        if (sent.isEmpty()) {
+            return Optional.empty();
+        }
+        return Trial.run(session, ref, sent.get(), expected).filter(d -> d.kind() == kind);
     }
 
     // ---- candidates, most reducing first
@@ -304,6 +347,9 @@ final class Shrinker {
             if (rb.or().isPresent()) {
                 Optional<Located<AndAlgorithm>> and = Optional.of(rb.and().orElse(new Located<>(rb.or().get().value().pair(), AT)));
                 out.add(withBlock(fb, b, new RuleBlock(rb.name(), and, Optional.empty(), rb.activation(), rb.accumulation(), rb.rules(), rb.location())));
+                // an OR declared but no longer used: AND MIN alone
+                out.add(withBlock(fb, b, new RuleBlock(rb.name(), Optional.of(new Located<>(AndAlgorithm.MIN, AT)), Optional.empty(),
+                        rb.activation(), rb.accumulation(), rb.rules(), rb.location())));
             }
         }
         for (int d = 0; d < fb.defuzzifications().size(); d++) {

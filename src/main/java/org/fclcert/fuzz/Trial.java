@@ -8,7 +8,10 @@ import org.fclcert.corpus.Tolerance;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.LoadOutcome;
 
-/** Puts one program and its steps to an implementation and compares every step with the reference. */
+/**
+ * Puts one program (as standard FCL or in a library's layout) and its steps to an implementation and compares every
+ * step with the reference.
+ */
 final class Trial {
     private Trial() {
     }
@@ -18,19 +21,20 @@ final class Trial {
      *
      * @throws IutException of kind INFRA when the implementation cannot be reopened
      */
-    static Optional<Deviation> run(IutSession session, ReferenceProgram ref, String text,
+    static Optional<Deviation> run(IutSession session, ReferenceProgram ref, Presentation.Sent sent,
             List<ReferenceProgram.Step> expected) throws IutException {
-        Optional<Deviation> d = attempt(session, ref, text, expected);
+        Optional<Deviation> d = attempt(session, ref, sent, expected);
         if (d.isPresent() && d.get().kind().fatal()) {
             session.restart();
         }
         return d;
     }
 
-    private static Optional<Deviation> attempt(IutSession session, ReferenceProgram ref, String text,
+    private static Optional<Deviation> attempt(IutSession session, ReferenceProgram ref, Presentation.Sent sent,
             List<ReferenceProgram.Step> expected) throws IutException {
         try {
-            LoadOutcome outcome = session.iut().load(text);
+            LoadOutcome outcome = sent.layout().isPresent() ? session.iut().loadWritten(sent.text(), sent.layout().get())
+                    : session.iut().load(sent.text());
             if (outcome instanceof LoadOutcome.Rejected rejected) {
                 return Optional.of(Deviation.atLoad(DeviationKind.REJECTED, "rejected the valid program: "
                         + rejected.message() + rejected.line().stream().mapToObj(l -> " (line " + l + ")").findFirst().orElse("")));
@@ -82,7 +86,7 @@ final class Trial {
             case EVAL_ERROR -> DeviationKind.EVAL_ERROR;
             case TIMEOUT -> DeviationKind.HANG;
             case PROTOCOL -> DeviationKind.GARBAGE;
-            case CRASH, GAVE_UP, INFRA -> DeviationKind.CRASH;
+            case CRASH, GAVE_UP, INFRA, STOPPED -> DeviationKind.CRASH;   // fuzz guards no call: STOPPED never comes
         };
     }
 

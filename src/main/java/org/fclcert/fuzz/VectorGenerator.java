@@ -25,8 +25,9 @@ import org.fclcert.model.VariableRef;
 
 /**
  * Random input steps for a program, each judged fair before it is kept. A linguistic input takes values on
- * its terms' breakpoints, inside plateaus, halfway between breakpoints (where symmetric terms tie), outside
- * all terms, and anywhere; an input read as a degree (WITH, a bare subcondition, a variable degree) takes
+ * its terms' breakpoints, inside plateaus, halfway between breakpoints (where symmetric terms tie), just inside
+ * a term's foot (a degree of about 1e-7, which an implementation may take for zero), outside all terms, and
+ * anywhere; an input read as a degree (WITH, a bare subcondition, a variable degree) takes
  * 0, 1, simple fractions or any value in [0, 1]; an input giving a point takes values around that point's
  * neighbours. Programs with state (NC, local variables) get longer sequences with more steps outside the
  * terms, so that nothing fires and the previous value must be kept.
@@ -62,6 +63,8 @@ public final class VectorGenerator {
     /** How each input is read, and the values worth trying for it. */
     static final class Roles {
         private final Map<String, double[]> linguistic = new HashMap<>();
+        /** Per input: just inside a term's foot, where its degree is about 1e-7. */
+        private final Map<String, double[]> nearFeet = new HashMap<>();
         private final Map<String, double[]> parameters = new HashMap<>();
         private final java.util.Set<String> degrees = new java.util.HashSet<>();
 
@@ -70,6 +73,7 @@ public final class VectorGenerator {
             for (Fuzzification f : fb.fuzzifications()) {
                 TreeSet<Double> xs = new TreeSet<>();
                 TreeSet<Double> special = new TreeSet<>();
+                TreeSet<Double> feet = new TreeSet<>();
                 for (Term t : f.terms()) {
                     if (t.function() instanceof MembershipFunction.Points p) {
                         List<Point> points = p.points();
@@ -80,6 +84,9 @@ public final class VectorGenerator {
                                 if (i > 0 && points.get(i - 1).x() instanceof Literal prev
                                         && points.get(i - 1).degree().equals(pt.degree())) {
                                     special.add((prev.value() + l.value()) / 2);     // inside a plateau
+                                }
+                                if (i > 0 && points.get(i - 1).x() instanceof Literal prev && prev.value() < l.value()) {
+                                    foot(feet, prev.value(), points.get(i - 1).degree(), l.value(), pt.degree());
                                 }
                             }
                         }
@@ -96,6 +103,7 @@ public final class VectorGenerator {
                 }
                 special.addAll(xs);
                 roles.linguistic.put(Names.key(f.variable()), special.stream().mapToDouble(Double::doubleValue).toArray());
+                roles.nearFeet.put(Names.key(f.variable()), feet.stream().mapToDouble(Double::doubleValue).toArray());
             }
             for (Fuzzification f : fb.fuzzifications()) {
                 for (Term t : f.terms()) {
@@ -121,6 +129,17 @@ public final class VectorGenerator {
                 }
             }
             return roles;
+        }
+
+        /** On a rising or falling segment from degree 0: the input where the degree is 1e-7 of the other end's. */
+        private static void foot(java.util.Set<Double> feet, double x0, Object d0, double x1, Object d1) {
+            if (!(d0 instanceof Literal a && d1 instanceof Literal b) || (a.value() == 0) == (b.value() == 0)) {
+                return;
+            }
+            double near = a.value() == 0 ? x0 + (x1 - x0) * 1e-7 : x1 - (x1 - x0) * 1e-7;
+            if (near > x0 && near < x1) {
+                feet.add(near);
+            }
         }
 
         private static void pointOperands(Roles roles, Term t) {
@@ -164,6 +183,10 @@ public final class VectorGenerator {
             double lo = special[0];
             double hi = special[special.length - 1];
             double span = hi > lo ? hi - lo : Math.max(1, Math.abs(lo));
+            double[] feet = nearFeet.getOrDefault(key, new double[0]);
+            if (feet.length > 0 && r.nextDouble() < 0.05) {
+                return feet[r.nextInt(feet.length)];
+            }
             double u = r.nextDouble();
             if (u < outside) {
                 return r.nextBoolean() ? lo - span * (0.05 + r.nextDouble() * 0.5) : hi + span * (0.05 + r.nextDouble() * 0.5);

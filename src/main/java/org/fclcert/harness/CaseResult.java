@@ -81,10 +81,16 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
      * or the step at which the implementation broke down; {@code mismatch}: what was expected and what came;
      * {@code error}: the implementation's own error text (with the end of its stderr); {@code maxError}: the
      * largest absolute error over every compared output of the case, whatever its status (+&infin; once an
-     * output was not finite, see {@link org.fclcert.corpus.OutputComparison}).
+     * output was not finite, see {@link org.fclcert.corpus.OutputComparison}); {@code reference}: what the
+     * reference evaluator did at that step of a positive case that did not pass.
      */
-    public record Evidence(Step step, Mismatch mismatch, String error, Double maxError) {
+    public record Evidence(Step step, Mismatch mismatch, String error, Double maxError, ReferenceTrace reference) {
         public static final Evidence NONE = new Evidence(null, null, null, null);
+
+        /** Evidence without the reference's trace. */
+        public Evidence(Step step, Mismatch mismatch, String error, Double maxError) {
+            this(step, mismatch, error, maxError, null);
+        }
     }
 
     /** A step of a positive case: its 1-based number and its inputs. */
@@ -177,6 +183,29 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
 
     public boolean interpretation() {
         return plan.interpretation();
+    }
+
+    private static final java.util.regex.Pattern EXPECTED_REJECTION =
+            java.util.regex.Pattern.compile("reject: (FCL-[A-Z]+[0-9]+) at line ([0-9]+).*");
+
+    /** The error a negative case expects, as its expected side says it ({@code reject: FCL-C002 at line 14}). */
+    public record ExpectedRejection(String code, int line) {
+    }
+
+    /** For a negative case: the code and line of the error it expects. */
+    public Optional<ExpectedRejection> expectedRejection() {
+        if (!(evidence.mismatch() instanceof Mismatch.Sentences m) || m.expected() == null) {
+            return Optional.empty();
+        }
+        java.util.regex.Matcher match = EXPECTED_REJECTION.matcher(m.expected());
+        return match.matches() ? Optional.of(new ExpectedRejection(match.group(1), Integer.parseInt(match.group(2))))
+                : Optional.empty();
+    }
+
+    /** A line (1-based) of the program as sent, stripped, when the result kept the program (cases that did not pass). */
+    public Optional<String> programLine(int line) {
+        List<String> lines = setup.program() == null ? List.of() : setup.program().lines().toList();
+        return line >= 1 && line <= lines.size() ? Optional.of(lines.get(line - 1).strip()) : Optional.empty();
     }
 
     /** The mismatch, if the case recorded one. */

@@ -28,6 +28,7 @@ record CaseResultJson(
         Object actual,
         String error,
         Double maxError,
+        ReferenceTrace reference,
         String tolerance,
         ExportStatus exportStatus,
         String exportMessage,
@@ -42,7 +43,7 @@ record CaseResultJson(
     @JsonInclude(JsonInclude.Include.NON_NULL)
     record PresentedJson(String dialect, PresentedStatus status, String message, Integer step,
             Map<String, Double> inputs, Object expected, Object actual, String error, Double maxError,
-            List<String> notes, String program) {
+            ReferenceTrace reference, List<String> notes, String program) {
 
         static PresentedJson of(CaseResult.Presented p) {
             if (p == null) {
@@ -53,14 +54,14 @@ record CaseResultJson(
             CaseResult.Mismatch m = e.mismatch();
             return new PresentedJson(p.dialect(), p.status(), p.message(), step == null ? null : step.number(),
                     step == null ? null : step.inputs(), m == null ? null : m.expected(),
-                    m == null ? null : m.actual(), e.error(), e.maxError(), p.notes().isEmpty() ? null : p.notes(),
-                    p.program());
+                    m == null ? null : m.actual(), e.error(), e.maxError(), e.reference(),
+                    p.notes().isEmpty() ? null : p.notes(), p.program());
         }
 
         CaseResult.Presented toPresented() {
             CaseResult.Step s = step == null ? null : new CaseResult.Step(step, inputs);
             return new CaseResult.Presented(dialect, status == null ? PresentedStatus.SKIPPED : status, message,
-                    notes, new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError), program);
+                    notes, new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError, reference), program);
         }
     }
 
@@ -71,7 +72,7 @@ record CaseResultJson(
         return new CaseResultJson(r.id(), r.title(), r.level(), r.tests(), r.flags(), r.status(), r.message(),
                 step == null ? null : step.number(), step == null ? null : step.inputs(),
                 m == null ? null : m.expected(), m == null ? null : m.actual(), e.error(), e.maxError(),
-                r.setup().tolerance(), r.export().status(), r.export().message(), r.verdict().notes(),
+                e.reference(), r.setup().tolerance(), r.export().status(), r.export().message(), r.verdict().notes(),
                 r.setup().block(), r.setup().program(), r.setup().durationMs(), r.verdict().rejection(),
                 PresentedJson.of(r.presented()));
     }
@@ -81,7 +82,7 @@ record CaseResultJson(
                 flags == null ? List.of() : flags);
         CaseResult.Step s = step == null ? null : new CaseResult.Step(step, inputs);
         return new CaseResult(plan, new CaseResult.Verdict(status, message, notes, rejection),
-                new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError),
+                new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError, reference),
                 new CaseResult.Export(exportStatus, exportMessage),
                 new CaseResult.Setup(block, tolerance, program, durationMs),
                 presented == null ? null : presented.toPresented());

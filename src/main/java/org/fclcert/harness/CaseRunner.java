@@ -58,10 +58,13 @@ final class CaseRunner {
             // an in-process implementation recursing without end: its fault, and the run goes on
             r.errored("the implementation overflowed the stack", "java.lang.StackOverflowError");
         }
+        if (!c.expectReject()) {
+            r.traceReference(c);
+        }
         CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
         if (presenter != null && !c.expectReject()) {
             if (gaveUp) {
-                result = notPresented(c, result);
+                result = notPresented(c, result, "the implementation was given up");
             } else {
                 Presenter.Presentation p = presenter.present(iut, c);
                 result = result.withPresented(p.presented());
@@ -71,13 +74,13 @@ final class CaseRunner {
         return new Ran(result, gaveUp);
     }
 
-    /** {@code result} of a case that was not run: a positive one is not presented either. */
-    CaseResult notPresented(RunCase c, CaseResult result) {
+    /** {@code result} of a case that was not run: a positive one is not presented either, for reason {@code why}. */
+    CaseResult notPresented(RunCase c, CaseResult result, String why) {
         if (presenter == null || c.expectReject()) {
             return result;
         }
         return result.withPresented(new CaseResult.Presented(presenter.dialect().cliName(), PresentedStatus.SKIPPED,
-                "not presented: the implementation was given up", List.of(), null, null));
+                "not presented: " + why, List.of(), null, null));
     }
 
     private static void judgeRejection(RunCase c, LoadOutcome outcome, ResultBuilder r) {

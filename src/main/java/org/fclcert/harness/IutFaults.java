@@ -16,6 +16,7 @@ final class IutFaults {
             case PROTOCOL -> "broke the protocol";
             case GAVE_UP -> "was given up (restart budget exhausted)";
             case INFRA -> "could not be driven";
+            case STOPPED -> "was stopped by fclcert";
         };
         String message = e.getMessage();
         return message == null || message.isBlank() ? what : what + ": " + message;

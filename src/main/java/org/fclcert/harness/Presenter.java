@@ -80,7 +80,7 @@ final class Presenter {
         for (Diagnostic d : prepared.written.differences()) {
             r.note("known difference (" + d.code() + "): " + d.message());
         }
-        CaseResult ran = r.build(0);
+        CaseResult ran = r.traceReference(c).build(0);
         PresentedStatus status = PresentedStatus.of(ran.status());
         return new Presentation(new CaseResult.Presented(dialect.cliName(), status, ran.message(),
                 ran.verdict().notes(), ran.evidence(), status == PresentedStatus.PASSED ? null : written.program()),

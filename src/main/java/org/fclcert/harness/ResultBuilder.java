@@ -17,6 +17,7 @@ final class ResultBuilder {
     private String exportMessage;
     private final List<String> notes = new ArrayList<>();
     private RejectionPlace rejection;
+    private ReferenceTrace reference;
 
     ResultBuilder(RunCase c) {
         this.c = c;
@@ -86,6 +87,17 @@ final class ResultBuilder {
         return this;
     }
 
+    /**
+     * The reference evaluator's trace at the step that went wrong (positive cases that did not pass), on
+     * {@code original}: the case as the corpus writes it, also when a library's layout of it was sent.
+     */
+    ResultBuilder traceReference(RunCase original) {
+        if (status != CaseStatus.PASSED && step != null) {
+            reference = ReferenceTraces.at(original, step.number());
+        }
+        return this;
+    }
+
     ResultBuilder note(String note) {
         notes.add(note);
         return this;
@@ -94,7 +106,7 @@ final class ResultBuilder {
     CaseResult build(long durationMs) {
         boolean keepProgram = status != CaseStatus.PASSED || exportStatus == ExportStatus.FAILED;
         return new CaseResult(c.plan(), new CaseResult.Verdict(status, message, notes, rejection),
-                new CaseResult.Evidence(step, mismatch, error, maxError), new CaseResult.Export(exportStatus,
+                new CaseResult.Evidence(step, mismatch, error, maxError, reference), new CaseResult.Export(exportStatus,
                         exportMessage), new CaseResult.Setup(c.block().orElse(null), c.tolerance().describe(),
                         keepProgram ? c.program() : null, durationMs));
     }

@@ -33,7 +33,19 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
         }
     }
 
-    public record Toolkit(String version) {
+    /**
+     * fclcert itself: its version, and {@code rerun}, the command that reruns one case of this run with
+     * {@value #CASE} standing for the case id, when the front end that ran it has its own ({@code mvn verify
+     * -Dfclcert.cases={case}} from the Maven plugin); null: the command line's {@code ./fclcert certify ... --case}.
+     */
+    @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+    public record Toolkit(String version, String rerun) {
+        /** What {@code rerun} has where the case id goes. */
+        public static final String CASE = "{case}";
+
+        public Toolkit(String version) {
+            this(version, null);
+        }
     }
 
     /**

@@ -20,11 +20,17 @@ public final class RunHeaders {
      */
     public static RunHeader of(IutInfo info, String spec, String classpath, String corpusDir, String sha256,
             List<RunCase> all, List<RunCase> selected, List<List<String>> filters) {
+        return of(info, spec, classpath, corpusDir, sha256, all, selected, filters, null);
+    }
+
+    /** As above, with the front end's command that reruns one case ({@link RunHeader.Toolkit#rerun}; null: none). */
+    public static RunHeader of(IutInfo info, String spec, String classpath, String corpusDir, String sha256,
+            List<RunCase> all, List<RunCase> selected, List<List<String>> filters, String rerun) {
         int basic = (int) all.stream().filter(c -> c.level() == ConformanceLevel.BASIC && !c.interpretation()).count();
         return new RunHeader(
                 new RunHeader.Iut(info.name(), info.version(), info.command(), spec, classpath, info.claims(),
                         info.declaredLimits()),
-                new RunHeader.Toolkit(Toolkit.version()),
+                new RunHeader.Toolkit(Toolkit.version(), rerun),
                 new RunHeader.CorpusInfo(corpusDir, all.size(), sha256, basic),
                 new RunHeader.Selection(filters.get(0), filters.get(1), filters.get(2),
                         selected.stream().map(RunCase::plan).toList()),

@@ -4,13 +4,19 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import org.fclcert.iut.ImplementationUnderTest;
+import org.fclcert.iut.StopSignal;
 
 /**
  * Runs the selected cases one after another on one implementation and hands each result to the sink as
  * soon as it is known, so an interrupted run keeps what it did. Once the implementation has exhausted its
- * restart budget the remaining cases are skipped with that reason (never counted as passed).
+ * restart budget the remaining cases are skipped with that reason (never counted as passed). A run that is
+ * stopped ({@link StopSignal}: Ctrl-C, SIGTERM, the run budget) records the case under way and every later
+ * case as skipped with the reason, so that the results still hold every selected case exactly once.
  */
 public final class Runner {
+    /** How the message of a case begins that was not run because the run was stopped; the reason follows. */
+    public static final String STOPPED = "not run: the run was stopped: ";
+
     private final CaseRunner caseRunner;
     private final RunListener listener;
 
@@ -35,6 +41,16 @@ public final class Runner {
 
     public List<CaseResult> run(ImplementationUnderTest iut, RunHeader header, List<RunCase> cases,
             ResultSink sink) throws IOException {
+        return run(iut, header, cases, sink, null);
+    }
+
+    /**
+     * As {@link #run(ImplementationUnderTest, RunHeader, List, ResultSink)}, ending early when {@code stop} (null:
+     * never) stops the run; {@code iut} should be guarded by it ({@link StopSignal#guard}), so that a request under
+     * way ends at once.
+     */
+    public List<CaseResult> run(ImplementationUnderTest iut, RunHeader header, List<RunCase> cases,
+            ResultSink sink, StopSignal stop) throws IOException {
         sink.header(header);
         List<CaseResult> results = new ArrayList<>();
         String gaveUpAt = null;
@@ -42,18 +58,30 @@ public final class Runner {
             RunCase c = cases.get(i);
             listener.caseStarted(c, i, cases.size());
             CaseResult result;
-            if (gaveUpAt != null) {
-                result = caseRunner.notPresented(c, CaseResult.skipped(c.plan(),
-                        "not run: the implementation was given up at case " + gaveUpAt + " (restart budget exhausted)"));
+            if (stop != null && stop.stopped()) {
+                result = notRun(c, STOPPED + stop.reason());
+            } else if (gaveUpAt != null) {
+                result = notRun(c, "not run: the implementation was given up at case " + gaveUpAt
+                        + " (restart budget exhausted)");
             } else {
+                int cuts = stop == null ? 0 : stop.cuts();
                 CaseRunner.Ran ran = caseRunner.run(iut, c);
-                result = ran.result();
-                gaveUpAt = ran.gaveUp() ? c.id() : null;
+                if (stop != null && stop.cuts() != cuts) {
+                    // the stop cut one of its requests short: what the case recorded since is fclcert's doing
+                    result = notRun(c, STOPPED + stop.reason());
+                } else {
+                    result = ran.result();
+                    gaveUpAt = ran.gaveUp() ? c.id() : null;
+                }
             }
             sink.accept(result);
             results.add(result);
             listener.caseFinished(result, i, cases.size());
         }
         return results;
+    }
+
+    private CaseResult notRun(RunCase c, String why) {
+        return caseRunner.notPresented(c, CaseResult.skipped(c.plan(), why), why.replaceFirst("^not run: ", ""));
     }
 }

@@ -290,9 +290,15 @@ final class FuzzyliteIut implements ImplementationUnderTest {
         }
     }
 
-    private static String read(Path path) throws IutException {
-        try {
-            return new String(Files.readAllBytes(path), StandardCharsets.UTF_8);
+    /** A file fuzzylite wrote, at most {@link IutOptions#maxReplyBytes()} long, as a process IUT's reply line is. */
+    private String read(Path path) throws IutException {
+        try (java.io.InputStream in = Files.newInputStream(path)) {
+            byte[] bytes = in.readNBytes(options.maxReplyBytes() + 1);
+            if (bytes.length > options.maxReplyBytes()) {
+                throw new IutException(Kind.PROTOCOL, "fuzzylite wrote more than " + options.maxReplyBytes()
+                        + " bytes to " + path.getFileName() + " (IutOptions.maxReplyBytes)");
+            }
+            return new String(bytes, StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new IutException(Kind.INFRA, "cannot read " + path + " written by fuzzylite: " + e.getMessage());
         }

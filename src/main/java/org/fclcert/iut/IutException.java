@@ -23,7 +23,12 @@ public final class IutException extends Exception {
         /** The IUT failed so often that the restart budget is used up; no more requests are sent. */
         GAVE_UP,
         /** fclcert could not reach the IUT at all (bad spec, class not found, command not startable). */
-        INFRA
+        INFRA,
+        /**
+         * fclcert itself stopped the run (Ctrl-C, SIGTERM, the run budget) before or while the request was under
+         * way ({@link StopSignal}): no fault of the IUT; the step is reported as not run.
+         */
+        STOPPED
     }
 
     private final Kind kind;

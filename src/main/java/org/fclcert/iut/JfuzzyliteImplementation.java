@@ -58,10 +58,40 @@ final class JfuzzyliteImplementation implements FclImplementation {
         Class<?> exporterType = Class.forName("com.fuzzylite.imex.FclExporter", true, loader);
         this.exporter = exporterType.getConstructor().newInstance();
         this.exportText = exporterType.getMethod("toString", engineType);
-        Class<?> library = Class.forName("com.fuzzylite.FuzzyLite", true, loader);
+        Class<?> library = initialiseKeepingLogging("com.fuzzylite.FuzzyLite", loader);
         // the library logs through java.util.logging; a certification run keeps its own output clean
         library.getMethod("setLogging", boolean.class).invoke(null, false);
         this.version = artifactVersion(loader).orElse(String.valueOf(library.getField("VERSION").get(null)));
+    }
+
+    /**
+     * Initialises a class whose static initialiser replaces the JVM-wide java.util.logging configuration: jfuzzylite's
+     * {@code FuzzyLite} reads its own {@code logging.properties} into the {@code LogManager} (root level ALL, a console
+     * handler at ALL), after which every logger in the process prints its FINE to FINEST records (in a test run
+     * JUnit's and Jazzer's, over a thousand lines). The root logger's level and handlers are put back as they were.
+     */
+    static Class<?> initialiseKeepingLogging(String className, ClassLoader loader) throws ClassNotFoundException {
+        java.util.logging.Logger root = java.util.logging.Logger.getLogger("");
+        synchronized (java.util.logging.LogManager.getLogManager()) {
+            java.util.logging.Level level = root.getLevel();
+            java.util.logging.Handler[] handlers = root.getHandlers();
+            java.util.logging.Level[] levels = new java.util.logging.Level[handlers.length];
+            for (int i = 0; i < handlers.length; i++) {
+                levels[i] = handlers[i].getLevel();
+            }
+            Class<?> type = Class.forName(className, true, loader);
+            if (root.getLevel() != level || !java.util.Arrays.equals(root.getHandlers(), handlers)) {
+                for (java.util.logging.Handler h : root.getHandlers()) {
+                    root.removeHandler(h);
+                }
+                for (int i = 0; i < handlers.length; i++) {
+                    handlers[i].setLevel(levels[i]);
+                    root.addHandler(handlers[i]);
+                }
+                root.setLevel(level);
+            }
+            return type;
+        }
     }
 
     /** {@code jfuzzylite} or {@code jfuzzylite:JAR}, driven by {@link JavaIut}. */

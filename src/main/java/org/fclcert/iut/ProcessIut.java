@@ -1,7 +1,6 @@
 package org.fclcert.iut;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.core.exc.StreamReadException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -26,7 +25,6 @@ import org.fclcert.iut.IutException.Kind;
 final class ProcessIut implements ImplementationUnderTest {
     private static final long STDERR_WAIT_MILLIS = 500;
     private static final Duration BYE_WAIT = Duration.ofSeconds(1);
-    private static final int QUOTE_CHARS = 200;
     /** A fresh process gets at least this long for its first reply: interpreters and JVMs start slowly. */
     static final Duration STARTUP_TIMEOUT = Duration.ofSeconds(10);
 
@@ -218,7 +216,8 @@ final class ProcessIut implements ImplementationUnderTest {
         ReplyReader.Line early = session.unasked();
         if (early != null) {
             // a reply written before the question (say an eval answer sent along with the load reply) is no answer
-            throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: " + quote(early.text()));
+            throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
+                    + Protocol.quote(early.text()));
         }
         session.send(write(request.put("id", id)));
         long deadline = System.nanoTime() + timeout.toNanos();
@@ -255,31 +254,11 @@ final class ProcessIut implements ImplementationUnderTest {
     }
 
     private JsonNode parse(String text, String op, long id) throws IutException {
-        JsonNode reply;
         try {
-            reply = mapper.readTree(text);
-        } catch (StreamReadException e) {
-            if (e.getMessage() != null && e.getMessage().startsWith("Duplicate field")) {
-                throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is ambiguous: it gives a key twice in one object: "
-                        + quote(text));
-            }
-            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not JSON: " + quote(text));
-        } catch (JsonProcessingException e) {
-            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not JSON: " + quote(text));
+            return Protocol.reply(mapper, text, op, id);
+        } catch (IutException e) {
+            throw fail(e.kind(), e.getMessage());
         }
-        if (reply == null || !reply.isObject() || !reply.path("ok").isBoolean()) {
-            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is not an object with a boolean 'ok': " + quote(text));
-        }
-        Optional<String> collision = Protocol.caseCollision(reply);
-        if (collision.isPresent()) {
-            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' is ambiguous: key '" + IutText.kept(collision.get())
-                    + "' differs from another key of the same object only in case: " + quote(text));
-        }
-        JsonNode echoed = reply.get("id");
-        if (echoed != null && !(echoed.canConvertToExactIntegral() && echoed.asLong() == id)) {
-            throw fail(Kind.PROTOCOL, "the reply to '" + op + "' carries id " + echoed + " where " + id + " was sent");
-        }
-        return reply;
     }
 
     /** Kills the process after a failure and builds the exception, with the end of its stderr. */
@@ -313,10 +292,4 @@ final class ProcessIut implements ImplementationUnderTest {
         return exitCode.isPresent() ? " (exit code " + exitCode.getAsLong() + ")" : "";
     }
 
-    private static String quote(String text) {
-        String shown = IutText.wellFormed(text);
-        return shown.length() <= QUOTE_CHARS ? shown
-                : shown.substring(0, Character.isHighSurrogate(shown.charAt(QUOTE_CHARS - 1)) ? QUOTE_CHARS - 1
-                        : QUOTE_CHARS) + "…";
-    }
 }

@@ -1,6 +1,8 @@
 package org.fclcert.iut;
 
 import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.exc.StreamReadException;
 import com.fasterxml.jackson.core.StreamReadFeature;
 import com.fasterxml.jackson.core.json.JsonReadFeature;
 import com.fasterxml.jackson.databind.DeserializationFeature;
@@ -37,6 +39,51 @@ final class Protocol {
         JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
                 .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION).build();
         return new ObjectMapper(factory).enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
+    }
+
+    /** How much of an offending reply a fault quotes. */
+    private static final int QUOTE_CHARS = 200;
+
+    /**
+     * Reads one reply line to request {@code id} ({@code op}): a JSON object with a boolean {@code ok}, no key given
+     * twice (nor twice but for case), and, when it carries an {@code id}, ours. Anything else is a
+     * {@link IutException.Kind#PROTOCOL} fault quoting the line.
+     */
+    static JsonNode reply(ObjectMapper mapper, String text, String op, long id) throws IutException {
+        JsonNode reply;
+        try {
+            reply = mapper.readTree(text);
+        } catch (StreamReadException e) {
+            if (e.getMessage() != null && e.getMessage().startsWith("Duplicate field")) {
+                throw protocol("the reply to '" + op + "' is ambiguous: it gives a key twice in one object: "
+                        + quote(text));
+            }
+            throw protocol("the reply to '" + op + "' is not JSON: " + quote(text));
+        } catch (JsonProcessingException e) {
+            throw protocol("the reply to '" + op + "' is not JSON: " + quote(text));
+        }
+        if (reply == null || !reply.isObject() || !reply.path("ok").isBoolean()) {
+            throw protocol("the reply to '" + op + "' is not an object with a boolean 'ok': " + quote(text));
+        }
+        Optional<String> collision = caseCollision(reply);
+        if (collision.isPresent()) {
+            throw protocol("the reply to '" + op + "' is ambiguous: key '" + IutText.kept(collision.get())
+                    + "' differs from another key of the same object only in case: " + quote(text));
+        }
+        JsonNode echoed = reply.get("id");
+        if (echoed != null && !(echoed.canConvertToExactIntegral() && echoed.asLong() == id)) {
+            throw protocol("the reply to '" + op + "' carries id " + quote(echoed.toString()) + " where " + id
+                    + " was sent");
+        }
+        return reply;
+    }
+
+    /** The start of an offending line, well-formed, for a fault's message. */
+    static String quote(String text) {
+        String shown = IutText.wellFormed(text);
+        return shown.length() <= QUOTE_CHARS ? shown
+                : shown.substring(0, Character.isHighSurrogate(shown.charAt(QUOTE_CHARS - 1)) ? QUOTE_CHARS - 1
+                        : QUOTE_CHARS) + "…";
     }
 
     static ObjectNode request(String op) {
@@ -131,10 +178,15 @@ final class Protocol {
             throw protocol("the reply to 'eval' has no 'outputs' object");
         }
         Map<String, Double> values = new LinkedHashMap<>();
+        Set<String> seen = new java.util.HashSet<>();
         for (Map.Entry<String, JsonNode> output : outputs.properties()) {
             String name = IutText.kept(output.getKey());
             if (!output.getValue().isNumber()) {
                 throw protocol("output " + name + " is not a number: " + IutText.kept(output.getValue().toString()));
+            }
+            if (!seen.add(name.toLowerCase(Locale.ROOT))) {
+                // two names longer than what is kept, alike in what is kept: which value is which is unknowable
+                throw protocol("the reply to 'eval' is ambiguous: two output names are the same as kept: " + name);
             }
             values.put(name, output.getValue().asDouble());
         }

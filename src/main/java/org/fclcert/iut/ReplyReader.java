@@ -81,7 +81,13 @@ final class ReplyReader {
             Thread.currentThread().interrupt();
             return;
         }
-        events.offer(new EndOfStream());
+        try {
+            // put, not offer: with lines still waiting to be taken, the end must not be lost (it tells a crash
+            // from a hang); stop() frees this thread when nobody takes events any more
+            events.put(new EndOfStream());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private void scan(byte[] chunk, int n) throws InterruptedException {

@@ -19,6 +19,7 @@ import org.fclcert.corpus.BundledCorpus;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
 import org.fclcert.harness.CaseSelection;
+import org.fclcert.harness.RunHeader;
 import org.fclcert.probe.Prober;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.model.ConformanceLevel;
@@ -75,6 +76,13 @@ public class CertifyMojo extends AbstractMojo {
     @Parameter(property = "fclcert.timeoutMillis", defaultValue = Defaults.TIMEOUT_MILLIS)
     private long timeoutMillis;
 
+    /**
+     * Time the whole run may take, cases and probes, in seconds; the cases not run by then are reported as skipped
+     * with the reason, and the goal fails.
+     */
+    @Parameter(property = "fclcert.budgetSeconds", defaultValue = Defaults.RUN_BUDGET_SECONDS)
+    private long budgetSeconds;
+
     /** Also measure the Table 11 data check list by probing (off by default: it takes up to probeBudgetSeconds). */
     @Parameter(property = "fclcert.probe", defaultValue = "false")
     private boolean probe;
@@ -121,6 +129,9 @@ public class CertifyMojo extends AbstractMojo {
             throw new MojoExecutionException("fclcert:certify: presentAs '" + presentAs
                     + "' is not one of auto, none, fuzzylite, jfuzzylogic, ffll");
         }
+        if (budgetSeconds < 1) {
+            throw new MojoExecutionException("fclcert:certify: budgetSeconds must be at least 1, not " + budgetSeconds);
+        }
         Corpus corpus = corpus();
         IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis));
         List<Path> classpath = iut.startsWith("java:") ? testClasspath() : List.of();
@@ -133,7 +144,8 @@ public class CertifyMojo extends AbstractMojo {
                 .selection(new CaseSelection(levels(), Set.copyOf(orEmpty(features)), orEmpty(cases)))
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
-                .presentAs(layout).build();
+                .presentAs(layout).rerun(ProgressLog.reproduce(RunHeader.Toolkit.CASE))
+                .budget(Duration.ofSeconds(budgetSeconds)).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));
@@ -164,6 +176,10 @@ public class CertifyMojo extends AbstractMojo {
         r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
                 + surefire);
+        if (outcome.stopped() != null) {
+            throw new MojoExecutionException("fclcert:certify: the run was stopped (" + outcome.stopped()
+                    + "); the cases not run are reported as skipped (budgetSeconds)");
+        }
     }
 
     private Corpus corpus() throws MojoExecutionException {

@@ -2,7 +2,6 @@ package org.fclcert.maven;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -35,7 +34,7 @@ final class FclFileGate {
     }
 
     FileVerdict examine(Path file) throws IOException {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
+        String text = new String(org.fclcert.model.Limits.readFile(file), StandardCharsets.UTF_8);
         Analysis analysis = Analysis.analyze(new StrictReader(), file.toString(), text);
         if (analysis.program().isEmpty()) {
             return new FileVerdict(file, analysis.diagnostics(), ConformanceLevel.BASIC, List.of());

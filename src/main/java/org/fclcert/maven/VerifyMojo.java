@@ -19,7 +19,8 @@ import org.fclcert.report.ReportFiles;
 /**
  * Reads the report {@code fclcert:certify} wrote and fails the build when it does not meet
  * {@code failOn}: {@code basic} (Basic Level not conformant), {@code claimed} (that, or a feature in
- * {@code claims} not realised), {@code any} (any case failed or errored) or {@code none}.
+ * {@code claims} not realised), {@code any} (any case failed or errored) or {@code none}. A run narrowed by
+ * {@code fclcert.cases} (the reproduce command) is judged by its cases alone: it fails when one of them did not pass.
  */
 @Mojo(name = "verify", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
 public class VerifyMojo extends AbstractMojo {
@@ -71,6 +72,11 @@ public class VerifyMojo extends AbstractMojo {
                     + ") failed for " + report.iut().name() + ":\n" + failure.get()
                     + "\nDetails: " + reportsDirectory.toPath().resolve(ReportFiles.MARKDOWN));
         }
-        getLog().info("fclcert:verify: " + report.iut().name() + " meets failOn=" + failOn);
+        if (ReportGate.reproduction(report)) {
+            getLog().info("fclcert:verify: the " + report.cases().size() + " case(s) selected by fclcert.cases passed on "
+                    + report.iut().name() + " (failOn=" + failOn + " needs the whole corpus: run without fclcert.cases)");
+        } else {
+            getLog().info("fclcert:verify: " + report.iut().name() + " meets failOn=" + failOn);
+        }
     }
 }

@@ -11,7 +11,15 @@ public enum AccumulationMethod {
     /** Probabilistic OR, a + b − a·b (jFuzzyLogic PROBOR, fuzzylite ASUM): O-ACCU-PROBOR. */
     PROBOR(false),
     /** Unbounded sum, a + b (jFuzzyLogic SUM, also its reading of a missing ACCU; fuzzylite SUM): O-ACCU-SUM. */
-    SUM(false);
+    SUM(false),
+    /** Einstein sum (fuzzylite): O-ACCU-OTHER-NORM, as the others below. */
+    ESUM(false),
+    /** Hamacher sum (fuzzylite). */
+    HSUM(false),
+    /** Drastic sum (fuzzylite). */
+    DSUM(false),
+    /** Nilpotent maximum (fuzzylite). */
+    NMAX(false);
 
     private final boolean standard;
 
@@ -22,5 +30,16 @@ public enum AccumulationMethod {
     /** True for the methods of Table 5. */
     public boolean standard() {
         return standard;
+    }
+
+    /**
+     * The s-norm of the OR algorithm of the same name for the fuzzylite norms ESUM, HSUM, DSUM and NMAX (which
+     * accumulate a + b folded as S(a, b) from 0), else empty.
+     */
+    public java.util.Optional<OrAlgorithm> otherNorm() {
+        return switch (this) {
+            case ESUM, HSUM, DSUM, NMAX -> java.util.Optional.of(OrAlgorithm.valueOf(name()));
+            default -> java.util.Optional.empty();
+        };
     }
 }

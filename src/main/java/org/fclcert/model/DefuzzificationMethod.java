@@ -16,7 +16,12 @@ public enum DefuzzificationMethod {
     /** Mean of maximum (FFLL's MoM, jFuzzyLogic's and fuzzylite's MM): Open Level, O-MOM. */
     MOM("MoM", false),
     /** Weighted sum of singletons, Σ u·μ without the division (fuzzylite's COGSS): Open Level, O-COGSS. */
-    COGSS("COGSS", false);
+    COGSS("COGSS", false),
+    /**
+     * Tsukamoto's method (fuzzylite's COGS on monotonic terms): Σ μ·z / Σ μ over the terms, z the point where the
+     * monotonic term reaches its accumulated degree μ: Open Level, O-TSUKAMOTO.
+     */
+    TSUKAMOTO("Tsukamoto", false);
 
     private final String keyword;
     private final boolean standard;

@@ -15,12 +15,61 @@ public final class Limits {
     public static final int MAX_NESTING_DEPTH = 1_000;
 
     /**
-     * Largest program, CSV or results file the command line reads, in bytes (128 MiB). Only regular
-     * files are read (not devices, FIFOs or directories), so {@code /dev/zero} or a pipe that never
-     * ends gets a plain error instead of exhausting memory or hanging.
+     * Errors a reader reports for one file (the strict reader, each dialect reader): the rest are summarised in one
+     * last error ("too many errors"), so that one early mistake cannot bury the user in follow-up messages and the
+     * diagnostics kept stay small on any input. Check findings are not capped: each names one offending place of a
+     * program that has read without error.
+     */
+    public static final int MAX_ERRORS_PER_FILE = 25;
+
+    /** Warnings of one code the strict reader reports for one file before it summarises the rest in one. */
+    public static final int MAX_WARNINGS_PER_CODE = 25;
+
+    /**
+     * Largest file fclcert reads, in bytes (128 MiB): a program, a CSV table, a corpus case, a results file, a
+     * report. Only regular files are read (not devices, FIFOs or directories), so {@code /dev/zero} or a pipe
+     * that never ends gets a plain error instead of exhausting memory or hanging. {@link #readFile} enforces it.
      */
     public static final long MAX_SOURCE_BYTES = 128L * 1024 * 1024;
 
     private Limits() {
+    }
+
+    /** A file fclcert does not read: {@link #getMessage()} is the reason, a phrase ("it is a directory"). */
+    public static final class Unreadable extends java.io.IOException {
+        private static final long serialVersionUID = 1L;
+
+        Unreadable(String reason) {
+            super(reason);
+        }
+    }
+
+    /**
+     * The bytes of a regular file of at most {@link #MAX_SOURCE_BYTES}, also when it grows while it is read. A
+     * directory, a device, a FIFO or a larger file is {@link Unreadable}, found before the file is opened
+     * (opening a FIFO blocks, and {@code /dev/zero} never ends); other I/O failures pass through.
+     */
+    public static byte[] readFile(java.nio.file.Path p) throws java.io.IOException {
+        if (java.nio.file.Files.isDirectory(p)) {
+            throw new Unreadable("it is a directory");
+        }
+        if (java.nio.file.Files.exists(p) && !java.nio.file.Files.isRegularFile(p)) {
+            throw new Unreadable("not a regular file (a device, pipe or socket); fclcert reads only files");
+        }
+        if (java.nio.file.Files.size(p) > MAX_SOURCE_BYTES) {
+            throw tooLarge();
+        }
+        try (java.io.InputStream in = java.nio.file.Files.newInputStream(p)) {
+            byte[] bytes = in.readNBytes((int) MAX_SOURCE_BYTES + 1);
+            if (bytes.length > MAX_SOURCE_BYTES) {
+                throw tooLarge();
+            }
+            return bytes;
+        }
+    }
+
+    private static Unreadable tooLarge() {
+        return new Unreadable("larger than fclcert's limit of " + MAX_SOURCE_BYTES / (1024 * 1024)
+                + " MiB (org.fclcert.model.Limits.MAX_SOURCE_BYTES)");
     }
 }

@@ -202,6 +202,47 @@ public enum ShapeKind {
         };
     }
 
+    /** True for the shapes that rise or fall monotonically (fuzzylite's Ramp, Sigmoid, SShape, ZShape, Concave). */
+    public boolean monotonic() {
+        return this == RAMP || this == SIGMOID || this == S_SHAPE || this == Z_SHAPE || this == CONCAVE;
+    }
+
+    /**
+     * Tsukamoto's inverse of a {@link #monotonic()} shape at degree {@code w} &gt; 0, in closed form: for a rising
+     * shape the least u with μ(u) ≥ w, for a falling one the greatest; {@code +∞} (rising) or {@code −∞} (falling)
+     * when the shape never reaches w (a sigmoid never reaches 1). NaN for the other kinds. Parameters in canonical
+     * order.
+     */
+    public double inverse(double[] p, double w) {
+        if (!monotonic() || !(w > 0)) {
+            return Double.NaN;
+        }
+        boolean rising = rising(p);
+        double never = rising ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
+        return switch (this) {
+            case RAMP -> w > 1 ? never : p[0] + w * (p[1] - p[0]);
+            case SIGMOID -> w >= 1 ? never : p[0] - Math.log(1 / w - 1) / p[1];
+            case S_SHAPE -> w > 1 ? never : w <= 0.5 ? p[0] + (p[1] - p[0]) * Math.sqrt(w / 2)
+                    : p[1] - (p[1] - p[0]) * Math.sqrt((1 - w) / 2);
+            case Z_SHAPE -> w > 1 ? never : w >= 0.5 ? p[0] + (p[1] - p[0]) * Math.sqrt((1 - w) / 2)
+                    : p[1] - (p[1] - p[0]) * Math.sqrt(w / 2);
+            // rising: (e − i) / (2e − i − u) = w below e; falling: (i − e) / (i − 2e + u) = w above e
+            case CONCAVE -> w > 1 ? never : rising ? 2 * p[1] - p[0] - (p[1] - p[0]) / w : (p[0] - p[1]) / w + 2 * p[1] - p[0];
+            default -> Double.NaN;
+        };
+    }
+
+    /** Whether a {@link #monotonic()} shape rises (else it falls). */
+    public boolean rising(double[] p) {
+        return switch (this) {
+            case RAMP -> p[0] <= p[1];
+            case SIGMOID -> p[1] >= 0;
+            case Z_SHAPE -> false;
+            case CONCAVE -> p[0] <= p[1];
+            default -> true;
+        };
+    }
+
     private static double linearDegree(double[][] xy, double u) {
         double[] x = xy[0];
         double[] y = xy[1];

@@ -3,6 +3,7 @@ package org.fclcert.orchestration;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
@@ -13,6 +14,7 @@ import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ReferenceExportCheck;
+import org.fclcert.harness.ResultSink;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
@@ -27,6 +29,7 @@ import org.fclcert.iut.IutInfo;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.iut.RecordingIut;
+import org.fclcert.iut.StopSignal;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
@@ -66,12 +69,21 @@ public final class Certification {
      * @param filters     the filters as the user gave them (levels, features, case globs), for the report;
      *                    null to describe {@code selection}
      * @param presentAs   the semantic axis: in which library's layout positive cases are also sent (null: auto)
+     * @param rerun       the front end's command that reruns one case, {@code {case}} for its id (null: the
+     *                    command line's); the reports print it for every case that did not pass
+     * @param budget      the time the whole run may take, the cases and the probes (null: {@link Defaults#RUN_BUDGET});
+     *                    when it runs out the run is stopped, and the cases not run are reported as skipped with the
+     *                    reason
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters, PresentAs presentAs) {
+            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget) {
 
         public Request {
+            budget = budget == null ? Defaults.RUN_BUDGET : budget;
+            if (budget.isNegative() || budget.isZero()) {
+                throw new IllegalArgumentException("the run budget must be positive: " + budget);
+            }
             Objects.requireNonNull(iutSpec, "iutSpec");
             Objects.requireNonNull(options, "options");
             Objects.requireNonNull(corpus, "corpus");
@@ -115,6 +127,8 @@ public final class Certification {
         private Prober.Options probe;
         private List<List<String>> filters;
         private PresentAs presentAs = PresentAs.AUTO;
+        private String rerun;
+        private Duration budget = Defaults.RUN_BUDGET;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -174,9 +188,21 @@ public final class Certification {
             return this;
         }
 
+        /** The front end's command that reruns one case, {@code {case}} standing for its id (default: the CLI's). */
+        public Builder rerun(String value) {
+            rerun = value;
+            return this;
+        }
+
+        /** The time the whole run may take (default {@link Defaults#RUN_BUDGET}). */
+        public Builder budget(Duration value) {
+            budget = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters, presentAs);
+                    probe, filters, presentAs, rerun, budget);
         }
     }
 
@@ -206,8 +232,11 @@ public final class Certification {
     /** The longest default directory name: well below every file system's 255-byte limit on a name. */
     public static final int MAX_DIRECTORY_NAME = 64;
 
-    /** The finished run: its report and the directory holding the files. */
-    public record Outcome(Report report, Path directory) {
+    /**
+     * The finished run: its report and the directory holding the files; {@code stopped} is why the run was stopped
+     * before its end (Ctrl-C, the run budget), null when it ran to the end.
+     */
+    public record Outcome(Report report, Path directory, String stopped) {
     }
 
     /** The run could not be done (implementation would not start, nothing selected, files not writable). */
@@ -261,44 +290,94 @@ public final class Certification {
     }
 
     public static Outcome run(Request request, RunListener listener, Hooks hooks) throws CannotCertify {
-        List<RunCase> all = RunCases.from(request.corpus().cases());
-        List<RunCase> selected = request.selection().apply(all);
-        if (selected.isEmpty()) {
-            throw new NothingSelected(request.corpusName());
-        }
-        try (ImplementationUnderTest iut = open(request)) {
-            IutInfo info = hello(iut, request.iutSpec());
-            RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
-                    request.corpus().sha256(), all, selected, request.filtersForReport());
-            RunHeader header = request.presentAs().resolve(request.iutSpec())
-                    .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
-            Path dir = request.outDir() != null ? request.outDir()
-                    : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
-            return new Outcome(runAndReport(request, iut, header, selected, dir, listener, hooks), dir);
+        return run(request, listener, hooks, new RunControl());
+    }
+
+    /**
+     * As {@link #run(Request, RunListener, Hooks)}, stoppable from another thread through {@code control} (the
+     * command line's Ctrl-C); the run budget stops it too. A stopped run records the case under way and every later
+     * case as skipped ({@link Runner#STOPPED} and the reason), measures no more Table 11 rows, writes the reports
+     * and closes the implementation, and its outcome says why it stopped.
+     */
+    public static Outcome run(Request request, RunListener listener, Hooks hooks, RunControl control)
+            throws CannotCertify {
+        StopSignal stop = control.signal;
+        long deadline = System.nanoTime() + request.budget().toNanos();
+        try (StopSignal.Timing budget = stop.stopAfter(request.budget(),
+                StopSignal.budgetRanOut("run", request.budget()))) {
+            List<RunCase> all = RunCases.from(request.corpus().cases());
+            List<RunCase> selected = request.selection().apply(all);
+            if (selected.isEmpty()) {
+                throw new NothingSelected(request.corpusName());
+            }
+            try (ImplementationUnderTest iut = stop.guard(open(request))) {
+                IutInfo info = hello(iut, request.iutSpec());
+                RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
+                        request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun());
+                RunHeader header = request.presentAs().resolve(request.iutSpec())
+                        .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
+                Path dir = request.outDir() != null ? request.outDir()
+                        : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
+                return runAndReport(request, iut, header, selected, dir, listener, hooks, control, deadline);
+            }
+        } finally {
+            control.ended();
         }
     }
 
-    private static Report runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
-            List<RunCase> selected, Path dir, RunListener listener, Hooks hooks) throws CannotCertify {
+    private static Outcome runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
+            List<RunCase> selected, Path dir, RunListener listener, Hooks hooks, RunControl control, long deadline)
+            throws CannotCertify {
         Path resultsFile = dir.resolve(RESULTS);
+        try {
+            removeEarlierReports(dir);
+        } catch (IOException e) {
+            throw new CannotCertify("cannot remove the earlier reports in " + dir + ": " + e.getMessage());
+        }
+        StopSignal stop = control.signal;
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
+            ResultSink sink = control.guard(results);
             hooks.started(iut, dir, resultsFile);
             Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
             RecordingIut recording = new RecordingIut(iut);
             List<CaseResult> done = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout)
-                    .run(recording, header, selected, results);
+                    .run(recording, header, selected, sink, stop);
             hooks.casesFinished();
             List<DataCheckEntry> dataCheckList = List.of();
             if (request.probe() != null) {
-                dataCheckList = dataCheckList(request, hooks::probing);
-                results.dataCheckList(dataCheckList);
+                long left = deadline - System.nanoTime();
+                dataCheckList = stop.stopped() || left < 1_000_000
+                        ? Prober.notMeasured("not measured: the run was stopped: " + (stop.stopped() ? stop.reason()
+                                : StopSignal.budgetRanOut("run", request.budget())))
+                        : dataCheckList(request, hooks::probing, stop, Duration.ofNanos(left));
+                sink.dataCheckList(dataCheckList);
             }
+            // a stop from here on finds every case run: it waits for the reports, and the run is complete
+            String stopped = stop.reason();
             hooks.resultsComplete();
             Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
-            ReportFiles.writeAll(report, dir);
-            return report;
+            control.write(() -> ReportFiles.writeAll(report, dir));
+            return new Outcome(report, dir, stopped);
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * Removes the reports and transcripts of an earlier run in {@code dir}: a run killed before its reports are
+     * written (SIGKILL, a power cut) must not leave an earlier run's reports next to its own results.jsonl.
+     */
+    private static void removeEarlierReports(Path dir) throws IOException {
+        for (String name : List.of(ReportFiles.JSON, ReportFiles.MARKDOWN, ReportFiles.HTML, ReportFiles.JUNIT)) {
+            Files.deleteIfExists(dir.resolve(name));
+        }
+        Path transcripts = dir.resolve(TRANSCRIPTS);
+        if (Files.isDirectory(transcripts)) {
+            try (var files = Files.newDirectoryStream(transcripts, "*.requests.jsonl")) {
+                for (Path f : files) {
+                    Files.deleteIfExists(f);
+                }
+            }
         }
     }
 
@@ -354,11 +433,19 @@ public final class Certification {
      * "not measured" with the reason, so that the certification itself still stands.
      */
     public static List<DataCheckEntry> dataCheckList(Request request, Prober.Listener listener) {
+        return dataCheckList(request, listener, null, request.budget());
+    }
+
+    /** As {@link #dataCheckList(Request, Prober.Listener)}, stopped by {@code stop}, within at most {@code left}. */
+    private static List<DataCheckEntry> dataCheckList(Request request, Prober.Listener listener, StopSignal stop,
+            Duration left) {
         if (request.probe() == null) {
             return List.of();
         }
+        Prober.Options options = request.probe().budget().compareTo(left) <= 0 ? request.probe()
+                : request.probe().withBudget(left);
         try {
-            return Prober.probe(() -> Iuts.open(request.iutSpec(), request.options()), request.probe(), listener);
+            return Prober.probe(() -> Iuts.open(request.iutSpec(), request.options()), options, listener, stop);
         } catch (IutException e) {
             return Prober.notMeasured("the implementation could not be probed: " + e.getMessage());
         }
@@ -394,6 +481,10 @@ public final class Certification {
         try {
             return iut.hello();
         } catch (IutException e) {
+            if (e.kind() == IutException.Kind.STOPPED) {
+                throw new CannotCertify("the run was stopped before the implementation '" + spec + "' answered hello: "
+                        + e.getMessage());
+            }
             throw new CannotCertify("the implementation '" + spec + "' did not answer hello: " + e.getMessage()
                     + tail(e.stderrTail()));
         }

@@ -41,4 +41,28 @@ public final class Defaults {
 
     /** {@link #PROBE_BUDGET_MINUTES} as the Maven plugin's {@code probeBudgetSeconds} takes it: {@code 180}. */
     public static final String PROBE_BUDGET_SECONDS = "" + PROBE_BUDGET_MINUTES * 60;
+
+    /**
+     * The time a whole certification run may take, cases and probes, in minutes. The per-request timeout bounds a
+     * hang, not a slow implementation: one answering each request just within it (0.85 s under 1 s) would stretch
+     * a run over the corpus's thousands of requests to hours. The corpus runs in seconds on every implementation
+     * fclcert knows, fuzzylite's launch per request included, and the probes take {@link #PROBE_BUDGET_MINUTES}.
+     */
+    public static final int RUN_BUDGET_MINUTES = 30;
+
+    /** {@link #RUN_BUDGET_MINUTES} as a duration. */
+    public static final java.time.Duration RUN_BUDGET = java.time.Duration.ofMinutes(RUN_BUDGET_MINUTES);
+
+    /** {@link #RUN_BUDGET_MINUTES} as the command line writes it: {@code 30m}. */
+    public static final String RUN_BUDGET_TEXT = RUN_BUDGET_MINUTES + "m";
+
+    /** {@link #RUN_BUDGET_MINUTES} as the Maven plugin's {@code budgetSeconds} takes it: {@code 1800}. */
+    public static final String RUN_BUDGET_SECONDS = "" + RUN_BUDGET_MINUTES * 60;
+
+    /**
+     * How long a shutdown hook (Ctrl-C, SIGTERM) waits for a stopped run to end on its own — the request under way
+     * cut short, the reports written, the implementation closed — before it seals the outputs and kills the
+     * implementation itself. A process IUT ends at once; this bounds an in-process one deaf to interruption.
+     */
+    public static final java.time.Duration STOP_GRACE = java.time.Duration.ofSeconds(10);
 }

@@ -343,8 +343,13 @@ public final class Plotter {
     }
 
     private Svg frame(String title, double[] dx, double[] dy, String xLabel, String yLabel) {
-        Svg svg = new Svg(WIDTH, HEIGHT, block.name() + ": " + title);
-        svg.text(LEFT + PLOT_WIDTH / 2.0, 20, "middle", block.name() + ": " + title);
+        return frame(block.name() + ": " + title, dx, dy, xLabel, yLabel, WIDTH);
+    }
+
+    /** A picture with its title, the plot area's border, ticks and labels on both axes. */
+    static Svg frame(String title, double[] dx, double[] dy, String xLabel, String yLabel, int width) {
+        Svg svg = new Svg(width, HEIGHT, title);
+        svg.text(LEFT + PLOT_WIDTH / 2.0, 20, "middle", title);
         svg.raw("<rect x=\"" + LEFT + "\" y=\"" + TOP + "\" width=\"" + PLOT_WIDTH + "\" height=\"" + PLOT_HEIGHT
                 + "\" fill=\"none\" stroke=\"#444444\" stroke-width=\"1\"/>");
         for (int k = 0; k <= 5; k++) {
@@ -364,7 +369,7 @@ public final class Plotter {
         return svg;
     }
 
-    private static void curve(Svg svg, double[] xs, double[] ys, double[] dx, double[] dy, String colour,
+    static void curve(Svg svg, double[] xs, double[] ys, double[] dx, double[] dy, String colour,
             String cssClass) {
         double[] px = new double[xs.length];
         double[] py = new double[ys.length];
@@ -396,7 +401,7 @@ public final class Plotter {
         return String.format(Locale.ROOT, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
     }
 
-    private static String label(double v) {
+    static String label(double v) {
         if (v == Math.rint(v) && Math.abs(v) < 1e9) {
             return Long.toString((long) v);
         }

@@ -17,6 +17,7 @@ import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutInfo;
 import org.fclcert.iut.LoadOutcome;
+import org.fclcert.iut.StopSignal;
 
 /**
  * Measures the Table 11 data check list (clause 6.2) on an implementation under test by probing it with
@@ -27,7 +28,10 @@ import org.fclcert.iut.LoadOutcome;
  *
  * <p>A process implementation that crashes is restarted by its adapter; when its restart budget is used
  * up the prober closes it and opens a fresh one from the {@link IutSource}. The whole probe stays
- * within the time budget: each row gets an even share of what is left, and a row that runs out says so.
+ * within the time budget: each row gets an even share of what is left, and a row that runs out says so; at the
+ * budget itself the probe is stopped ({@link StopSignal}), as when the caller stops it (Ctrl-C): the row under
+ * way keeps what it had established ("at least" the last size that worked) or is not measured, every later row
+ * is not measured, each with the reason, and the implementation is closed.
  * Library code: nothing is printed.
  */
 public final class Prober {
@@ -77,9 +81,13 @@ public final class Prober {
         ImplementationUnderTest open() throws IutException;
     }
 
-    /** Told when a row starts, for progress display. */
+    /** Told when a row starts, for progress display, and when it is measured. */
     public interface Listener {
         void row(Table11 row, int index, int total);
+
+        /** The row's entry, as it will be returned (an interrupted probe can still show the rows done). */
+        default void measured(DataCheckEntry entry) {
+        }
 
         Listener NONE = (row, index, total) -> { };
     }
@@ -92,12 +100,14 @@ public final class Prober {
     private ImplementationUnderTest iut;
     private IutInfo info;
     private final List<DataCheckEntry> done = new ArrayList<>();
+    private final StopSignal stop;
 
-    private Prober(IutSource source, Options options, LongSupplier clock) {
+    private Prober(IutSource source, Options options, LongSupplier clock, StopSignal stop) {
         this.source = source;
         this.options = options;
         this.clock = clock;
         this.deadline = clock.getAsLong() + options.budget().toNanos();
+        this.stop = stop;
     }
 
     /**
@@ -107,28 +117,66 @@ public final class Prober {
      */
     public static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener)
             throws IutException {
-        return probe(source, options, listener, System::nanoTime);
+        return probe(source, options, listener, (StopSignal) null);
+    }
+
+    /**
+     * As {@link #probe(IutSource, Options, Listener)}, ending early when {@code stop} (null: never) stops; the
+     * probe's budget stops it too (a {@link StopSignal#child} of {@code stop}, so that the caller's run goes on).
+     */
+    public static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener, StopSignal stop)
+            throws IutException {
+        StopSignal own = stop == null ? new StopSignal() : stop.child();
+        try (StopSignal.Timing budget = own.stopAfter(options.budget(),
+                StopSignal.budgetRanOut("probe", options.budget()))) {
+            return probe(source, options, listener, System::nanoTime, own);
+        }
     }
 
     /** As {@link #probe(IutSource, Options, Listener)}, with the budget kept on {@code clock} (nanoseconds). */
     static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener, LongSupplier clock)
             throws IutException {
-        Prober p = new Prober(source, options, clock);
+        return probe(source, options, listener, clock, new StopSignal());
+    }
+
+    private static List<DataCheckEntry> probe(IutSource source, Options options, Listener listener, LongSupplier clock,
+            StopSignal stop) throws IutException {
+        Prober p = new Prober(source, options, clock, stop);
         try {
-            p.iut = source.open();
-            p.info = p.iut.hello();
+            try {
+                p.iut = stop.guard(source.open());
+                p.info = p.iut.hello();
+            } catch (IutException e) {
+                if (e.kind() != IutException.Kind.STOPPED) {
+                    throw e;
+                }
+                return notMeasured(stopped(stop));
+            }
             Table11[] rows = Table11.values();
             for (int i = 0; i < rows.length; i++) {
                 Table11 row = rows[i];
+                DataCheckEntry entry;
                 if (!options.rows().contains(row)) {
-                    p.done.add(p.entry(row, "", DataCheckEntry.NOT_MEASURED, "", "not selected for this run"));
-                    continue;
+                    entry = p.entry(row, "", DataCheckEntry.NOT_MEASURED, "", "not selected for this run");
+                } else if (stop.stopped()) {
+                    entry = p.entry(row, "", DataCheckEntry.NOT_MEASURED, "", stopped(stop));
+                } else {
+                    listener.row(row, i + 1, rows.length);
+                    long now = clock.getAsLong();
+                    long rowsLeft = Arrays.stream(rows, i, rows.length).filter(options.rows()::contains).count();
+                    long rowDeadline = now + Math.max(0, (p.deadline - now) / rowsLeft);
+                    int cuts = stop.cuts();
+                    p.limitStopped = null;
+                    entry = p.measure(row, rowDeadline);
+                    boolean cut = stop.cuts() != cuts || p.limitStopped != null;
+                    if (cut && !(LIMIT_ROWS.contains(row) && Boolean.TRUE.equals(p.limitStopped))) {
+                        // a stop cut this row short: what it recorded since is fclcert's doing, not the IUT's
+                        entry = p.entry(row, "", DataCheckEntry.NOT_MEASURED, entry.method(), stopped(stop)
+                                + " during this row");
+                    }
                 }
-                listener.row(row, i + 1, rows.length);
-                long now = clock.getAsLong();
-                long rowsLeft = Arrays.stream(rows, i, rows.length).filter(options.rows()::contains).count();
-                long rowDeadline = now + Math.max(0, (p.deadline - now) / rowsLeft);
-                p.done.add(p.measure(row, rowDeadline));
+                p.done.add(entry);
+                listener.measured(entry);
             }
             return List.copyOf(p.done);
         } finally {
@@ -137,6 +185,23 @@ public final class Prober {
             }
         }
     }
+
+    private static String stopped(StopSignal stop) {
+        return "not measured: the probe was stopped: " + stop.reason();
+    }
+
+    /**
+     * The rows measured by growing a size ({@link #limit}), whose entry stays "at least" the last size that worked
+     * when a stop cuts them short.
+     */
+    private static final Set<Table11> LIMIT_ROWS = EnumSet.complementOf(EnumSet.of(Table11.DATA_TYPES,
+            Table11.LINE_COMMENTS, Table11.EXECUTION_TIME, Table11.MEMORY, Table11.DEGREE_RESOLUTION,
+            Table11.IDENTIFIER_LENGTH));
+    /**
+     * Set by {@link #limit} when a stop ended it: true when a size had worked (its entry then says "at least" that
+     * size, and why it stopped), false when none had; null when no stop ended it.
+     */
+    private Boolean limitStopped;
 
     /** Every row "not measured", with the reason (the implementation could not be probed at all). */
     public static List<DataCheckEntry> notMeasured(String why) {
@@ -205,13 +270,14 @@ public final class Prober {
             case PROTOCOL -> "broke the protocol";
             case GAVE_UP -> "gave up (restart budget used up)";
             case INFRA -> "could not be reached";
+            case STOPPED -> "was stopped by fclcert";
         };
         return new Attempt(Result.FAULT, what + " (" + shorten(e.getMessage()) + ")");
     }
 
     private void reopen() throws IutException {
         iut.close();
-        iut = source.open();
+        iut = stop.guard(source.open());
         iut.hello();
     }
 
@@ -329,6 +395,7 @@ public final class Prober {
         int firstFail = -1;
         Attempt failure = null;
         boolean budgetHit = false;
+        boolean stopped = false;
         long n = min;
         long lastNanos = 0;   // how long the last attempt took; the first attempt of a row always runs
         while (true) {
@@ -338,8 +405,13 @@ public final class Prober {
                 break;
             }
             long t0 = clock.getAsLong();
-            Attempt a = attemptSize(family, (int) n);
+            int cuts = stop.cuts();
+            Attempt a = stop.stopped() ? null : attemptSize(family, (int) n);
             lastNanos = Math.max(1, clock.getAsLong() - t0);
+            if (a == null || stop.cuts() != cuts) {
+                stopped = true;   // the attempt did not run, or the stop cut it short: it says nothing
+                break;
+            }
             if (a.ok()) {
                 lastOk = (int) n;
                 if (n >= cap) {
@@ -352,7 +424,7 @@ public final class Prober {
                 break;
             }
         }
-        while (!budgetHit && firstFail > 0 && firstFail - Math.max(lastOk, min - 1) > 1) {
+        while (!budgetHit && !stopped && firstFail > 0 && firstFail - Math.max(lastOk, min - 1) > 1) {
             // bisection sizes are below the failing one: the last attempt bounds the next
             if (clock.getAsLong() + lastNanos > rowDeadline) {
                 budgetHit = true;
@@ -360,8 +432,13 @@ public final class Prober {
             }
             int mid = (Math.max(lastOk, min - 1) + firstFail) >>> 1;
             long t0 = clock.getAsLong();
-            Attempt a = attemptSize(family, mid);
+            int cuts = stop.cuts();
+            Attempt a = stop.stopped() ? null : attemptSize(family, mid);
             lastNanos = Math.max(1, clock.getAsLong() - t0);
+            if (a == null || stop.cuts() != cuts) {
+                stopped = true;
+                break;
+            }
             if (a.ok()) {
                 lastOk = mid;
             } else {
@@ -369,7 +446,13 @@ public final class Prober {
                 failure = a;
             }
         }
-        return limitEntry(row, min, cap, lastOk, firstFail, failure, budgetHit, fullMethod);
+        if (stopped) {
+            limitStopped = lastOk > 0;
+            return limitEntry(row, min, cap, lastOk, firstFail, failure, "the probe was stopped: " + stop.reason()
+                    + ", during this row", fullMethod);
+        }
+        return limitEntry(row, min, cap, lastOk, firstFail, failure, budgetHit ? "probe budget ran out for this row"
+                : null, fullMethod);
     }
 
     private Attempt attemptSize(IntFunction<Optional<ProbeProgram>> family, int n) {
@@ -382,15 +465,14 @@ public final class Prober {
     }
 
     private DataCheckEntry limitEntry(Table11 row, int min, long cap, int lastOk, int firstFail, Attempt failure,
-            boolean budgetHit, String method) {
+            String cutShort, String method) {
         Long declared = declaredLimit(row);
         String value = lastOk == 0 ? "0" : String.valueOf(lastOk);
         List<String> notes = new ArrayList<>();
         String bound;
-        if (budgetHit) {
+        if (cutShort != null) {
             bound = DataCheckEntry.AT_LEAST;
-            notes.add("probe budget ran out for this row" + (firstFail > 0 ? " (fails at " + firstFail + ": "
-                    + failure.detail() + ")" : ""));
+            notes.add(cutShort + (firstFail > 0 ? " (fails at " + firstFail + ": " + failure.detail() + ")" : ""));
         } else if (firstFail < 0) {
             bound = DataCheckEntry.AT_LEAST;
             notes.add("reached the cap of " + cap + " (--probe-cap)");

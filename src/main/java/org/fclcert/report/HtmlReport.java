@@ -4,6 +4,8 @@ import java.util.List;
 import java.util.Map;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ReferenceTrace;
+import org.fclcert.plot.SetPicture;
 
 /**
  * {@code report.html}: one self-contained page (inline style and script, nothing fetched) with the verdict,
@@ -44,6 +46,7 @@ public final class HtmlReport {
             pre{background:#f3f5f8;padding:8px 10px;overflow:auto;font-size:.85em;border-radius:4px}
             .cmd{font-family:ui-monospace,monospace;font-size:.85em;background:#1d2327;color:#e8eaed;padding:6px 9px;border-radius:4px;display:block;overflow:auto}
             .small{font-size:.85em;color:#555}.hidden{display:none}
+            ul.trace{margin:4px 0 8px;font-size:.9em}figure.set{margin:8px 0;overflow:auto}figure.set svg{max-width:100%;height:auto}
             """;
 
     private static final String SCRIPT = """
@@ -137,6 +140,21 @@ public final class HtmlReport {
                     .append(Texts.html(Report.SEMANTIC_AXIS)).append("</b> (").append(Texts.html(r.semantic()
                     .presentAs())).append(" layout).</p>\n");
         }
+        // a partial run tests a few rows: those lead, the untested ones are folded away
+        List<Report.FeatureRow> untested = rows.stream().filter(f -> Texts.folded(r, f)).toList();
+        List<Report.FeatureRow> shown = rows.stream().filter(f -> !untested.contains(f)).toList();
+        if (!shown.isEmpty()) {
+            featureRows(shown, semantic);
+        }
+        if (!untested.isEmpty()) {
+            out.append("<details class=\"untested\"><summary>").append(untested.size()).append(" of ").append(rows.size())
+                    .append(" rows not tested in this run (partial selection)</summary>\n");
+            featureRows(untested, semantic);
+            out.append("</details>\n");
+        }
+    }
+
+    private void featureRows(List<Report.FeatureRow> rows, boolean semantic) {
         out.append("<table><tr><th>Language element</th><th>Feature</th><th>")
                 .append(semantic ? "Language verdict" : "Verdict").append("</th><th>Passed</th>")
                 .append("<th>Not passed</th>")
@@ -286,6 +304,8 @@ public final class HtmlReport {
                 .append(Texts.html(String.join(", ", c.tests()))).append("</span></summary>\n<p>")
                 .append(Texts.html(c.message())).append("</p>\n");
         comparison(c);
+        reference(c);
+        presented(c);
         Double maxError = c.evidence().maxError();
         c.verdict().notes().forEach(n -> out.append("<p class=\"small\">Note: ").append(Texts.html(n)).append("</p>\n"));
         out.append("<p class=\"small\">Tolerance: ").append(Texts.html(c.setup().tolerance())).append(" · max measured error: ")
@@ -307,12 +327,17 @@ public final class HtmlReport {
     }
 
     private void comparison(CaseResult c) {
-        CaseResult.Step step = c.evidence().step();
+        comparison(c, c.evidence());
+    }
+
+    /** The step's inputs and expected against actual, of the language axis or of the semantic one. */
+    private void comparison(CaseResult c, CaseResult.Evidence evidence) {
+        CaseResult.Step step = evidence.step();
         if (step != null) {
             out.append("<p>Step ").append(step.number()).append(", inputs: <code>")
                     .append(Texts.html(Texts.describe(step.inputs()))).append("</code></p>\n");
         }
-        CaseResult.Mismatch mismatch = c.evidence().mismatch();
+        CaseResult.Mismatch mismatch = evidence.mismatch();
         if (mismatch instanceof CaseResult.Mismatch.Outputs outputs) {
             Map<String, Double> expected = outputs.expected();
             Map<?, ?> actual = outputs.actual();
@@ -324,6 +349,62 @@ public final class HtmlReport {
         } else if (mismatch != null) {
             out.append("<table>").append(row("expected", mismatch.expected())).append(row("actual", mismatch.actual()))
                     .append("</table>\n");
+            c.expectedRejection().ifPresent(want -> c.programLine(want.line()).ifPresent(text -> out.append(
+                    "<p>Line ").append(want.line()).append(", where the error is: <code>").append(Texts.html(text))
+                    .append("</code></p>\n")));
+        }
+    }
+
+    /** The semantic axis of a presented case: how the case fared written in the library's layout, and why not. */
+    private void presented(CaseResult c) {
+        CaseResult.Presented p = c.presented();
+        if (p == null) {
+            return;
+        }
+        out.append("<p><b>Semantic axis</b> (written in ").append(Texts.html(p.dialect()))
+                .append("'s layout): <span class=\"st ").append(p.status().word()).append("\">").append(p.status().word())
+                .append("</span> ").append(Texts.html(p.message())).append("</p>\n");
+        if (p.status() == org.fclcert.harness.PresentedStatus.FAILED
+                || p.status() == org.fclcert.harness.PresentedStatus.ERRORED) {
+            comparison(c, p.evidence());
+            reference(c.id() + " (" + p.dialect() + " layout)", p.evidence());
+        }
+    }
+
+    /** How many outputs of one case get a picture of their accumulated set. */
+    static final int PICTURES_PER_CASE = 3;
+
+    /**
+     * What the reference evaluator did at the failing step, and for each output with a wrong value its accumulated
+     * set with the standard's value and the implementation's marked (inline SVG, nothing fetched).
+     */
+    private void reference(CaseResult c) {
+        reference(c.id(), c.evidence());
+    }
+
+    private void reference(String caseId, CaseResult.Evidence evidence) {
+        ReferenceTrace t = evidence.reference();
+        if (t == null) {
+            return;
+        }
+        out.append("<p>fclcert's reference evaluator at step ").append(t.step()).append(":</p><ul class=\"trace\">");
+        t.lines().forEach(l -> out.append("<li>").append(Texts.html(l)).append("</li>"));
+        out.append("</ul>\n");
+        if (!(evidence.mismatch() instanceof CaseResult.Mismatch.Outputs outputs)) {
+            return;
+        }
+        int drawn = 0;
+        for (Map.Entry<String, Double> want : outputs.expected().entrySet()) {
+            Object got = lookup(outputs.actual(), want.getKey());
+            ReferenceTrace.OutputValue o = t.output(want.getKey());
+            if (o == null || o.set().isEmpty() || want.getValue() == null || got.equals(want.getValue())
+                    || drawn++ >= PICTURES_PER_CASE) {
+                continue;
+            }
+            String svg = SetPicture.svg(caseId + ", step " + t.step() + ": accumulated set of " + o.variable(),
+                    o.variable(), o.singletons(), o.set(), want.getValue(), got instanceof Double d ? d : null);
+            out.append("<figure class=\"set\">").append(svg.substring(svg.indexOf("<svg")))
+                    .append("</figure>\n");
         }
     }
 

@@ -15,6 +15,6 @@ public final class JsonReport {
     }
 
     public static Report read(Path file) throws IOException {
-        return Json.mapper().readValue(file.toFile(), Report.class);
+        return Json.mapper().readValue(org.fclcert.model.Limits.readFile(file), Report.class);
     }
 }

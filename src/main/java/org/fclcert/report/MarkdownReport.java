@@ -8,6 +8,7 @@ import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ExportStatus;
 import org.fclcert.harness.PresentedStatus;
+import org.fclcert.harness.ReferenceTrace;
 
 /**
  * {@code report.md}: the compliance statement in the shape clause 6.1 asks for — the Basic Level verdict
@@ -50,16 +51,16 @@ public final class MarkdownReport {
     private void header() {
         line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
-        line("IEC 61131-7 (clause 6.1), measured by fclcert " + r.toolkit().version() + " on " + r.generatedAt()
-                + ".");
+        line("IEC 61131-7 (clause 6.1), measured by fclcert " + Texts.cell(r.toolkit().version()) + " on "
+                + r.generatedAt() + ".");
         line("");
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));
         }
-        line("- Corpus: `" + r.corpus().dir() + "`, " + r.corpus().cases() + " cases, sha256 `" + r.corpus().sha256()
-                + "`");
+        line("- Corpus: `" + code(r.corpus().dir()) + "`, " + r.corpus().cases() + " cases, sha256 `"
+                + code(r.corpus().sha256()) + "`");
         Report.Summary s = r.summary();
         line("- Cases run: " + s.cases() + ": " + s.passed() + " passed, " + s.failed() + " failed, " + s.errored()
                 + " errored, " + s.skipped() + " skipped");
@@ -68,15 +69,15 @@ public final class MarkdownReport {
                     + (r.rejections().doubtful() ? " (" + Report.REJECTION_CAVEAT + ")" : ""));
         }
         if (!r.run().selection().whole()) {
-            line("- Selection: " + selection() + " (a partial run: verdicts cover only the cases run)");
+            line("- Selection: " + Texts.cell(selection()) + " (a partial run: verdicts cover only the cases run)");
         }
         if (!r.run().complete()) {
             line("- **Incomplete run**: some selected cases were not run; they are reported as skipped.");
         }
-        r.run().problems().forEach(p -> line("- Results file problem: " + p));
+        r.run().problems().forEach(p -> line("- Results file problem: " + Texts.cell(p)));
         line("");
         line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
-                + r.basicLevel().reason() + ").");
+                + Texts.cell(r.basicLevel().reason()) + ").");
         line("");
         if (r.semantic() != null) {
             line("Two verdicts per feature row: **" + Report.LANGUAGE_AXIS + "**; **" + Report.SEMANTIC_AXIS + "**.");
@@ -84,6 +85,14 @@ public final class MarkdownReport {
             line("- " + r.semantic().sentence());
             line("");
         }
+    }
+
+    /**
+     * Text inside a code span: a results file read back (report --from) may hold anything where a path or digest
+     * stands, and a backtick or line break would end the span.
+     */
+    private static String code(String s) {
+        return s == null ? "" : s.replaceAll("[`\\p{Cntrl}]", "?");
     }
 
     private String selection() {
@@ -140,13 +149,26 @@ public final class MarkdownReport {
     }
 
     private void featureTable(int table) {
-        if (r.semantic() != null) {
-            semanticFeatureTable(table);
-            return;
+        List<Report.FeatureRow> folded = rows(table).stream().filter(f -> Texts.folded(r, f)).toList();
+        List<Report.FeatureRow> shown = rows(table).stream().filter(f -> !folded.contains(f)).toList();
+        if (!shown.isEmpty()) {
+            if (r.semantic() != null) {
+                semanticFeatureTable(shown);
+            } else {
+                languageFeatureTable(shown);
+            }
         }
+        if (!folded.isEmpty()) {
+            line("Not tested in this run (partial selection): " + folded.stream().map(Report.FeatureRow::id)
+                    .collect(java.util.stream.Collectors.joining(", ")) + ".");
+            line("");
+        }
+    }
+
+    private void languageFeatureTable(List<Report.FeatureRow> rows) {
         line("| Language element | Feature | Verdict | Passed | Not passed |");
         line("| --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
                     + String.join(", ", f.notPassed()) + " |");
@@ -160,12 +182,12 @@ public final class MarkdownReport {
     }
 
     /** Both axes side by side: the language verdict (the standard's text) and the semantic one (the layout). */
-    private void semanticFeatureTable(int table) {
+    private void semanticFeatureTable(List<Report.FeatureRow> rows) {
         String layout = r.semantic().presentAs();
         line("| Language element | Feature | Language verdict | Passed | Not passed | Semantic verdict (" + layout
                 + " layout) | Passed | Not passed | Not presentable |");
         line("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
-        for (Report.FeatureRow f : rows(table)) {
+        for (Report.FeatureRow f : rows) {
             Report.Semantic sem = f.semantic();
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
                     + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
@@ -196,6 +218,10 @@ public final class MarkdownReport {
             java.util.Optional.ofNullable(p.evidence().mismatch()).ifPresentOrElse(m -> b.append(" — expected ").append(Texts.cell(Texts.describe(
                     m.expected()))).append(", got ").append(Texts.cell(Texts.describe(m.actual()))), () -> { });
             line(b.toString());
+            if (p.evidence().reference() != null) {
+                line("  - fclcert's reference evaluator at step " + p.evidence().reference().step() + ":");
+                p.evidence().reference().lines().forEach(l -> line("    - " + Texts.cell(l)));
+            }
             p.notes().forEach(n -> line("  - " + Texts.cell(n)));
         }
         line("");
@@ -351,6 +377,13 @@ public final class MarkdownReport {
         }
         c.mismatch().ifPresent(m -> line("  - expected: " + Texts.cell(Texts.describe(m.expected())) + "; actual: "
                 + Texts.cell(Texts.describe(m.actual()))));
+        c.expectedRejection().ifPresent(want -> c.programLine(want.line()).ifPresent(text ->
+                line("  - line " + want.line() + ", where the error is: `" + text.replace("`", "'") + "`")));
+        ReferenceTrace reference = c.evidence().reference();
+        if (reference != null) {
+            line("  - fclcert's reference evaluator at step " + reference.step() + ":");
+            reference.lines().forEach(l -> line("    - " + Texts.cell(l)));
+        }
         if (c.tests().size() > 1) {
             line("  - also evidence for: " + String.join(", ", c.tests().subList(1, c.tests().size())));
         }
@@ -358,7 +391,7 @@ public final class MarkdownReport {
         if (stderr != null) {
             line("  - its last stderr line: `" + stderr.replace("`", "'") + "`");
         }
-        line("  - reproduce: `" + Texts.repro(r, c.id()) + "` (transcript: `requests/"
+        line("  - reproduce: `" + code(Texts.repro(r, c.id())) + "` (transcript: `requests/"
                 + c.id().replaceAll("[^A-Za-z0-9._-]+", "-") + ".requests.jsonl`)");
     }
 

@@ -18,6 +18,7 @@ import org.fclcert.harness.PlannedCase;
 import org.fclcert.harness.PresentedStatus;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunHeader;
+import org.fclcert.harness.Runner;
 import org.fclcert.model.Feature;
 
 /** Builds the verdicts of clause 6.1 from case results (complete or not). */
@@ -46,7 +47,7 @@ public final class ReportBuilder {
     static final String NOT_RUN = "not run: the run ended before this case";
 
     private static boolean isUnrun(CaseResult c) {
-        return NOT_RUN.equals(c.message());
+        return NOT_RUN.equals(c.message()) || c.message() != null && c.message().startsWith(Runner.STOPPED);
     }
 
     /** Planned order, the last result per id, and a skipped entry for every planned case with no result. */
@@ -54,7 +55,11 @@ public final class ReportBuilder {
         Map<String, CaseResult> byId = new LinkedHashMap<>();
         results.forEach(r -> byId.put(r.id(), r));
         List<CaseResult> ordered = new ArrayList<>();
+        Set<String> placed = new java.util.HashSet<>();
         for (PlannedCase p : header.selection().planned()) {
+            if (!placed.add(p.id())) {
+                continue;   // a damaged or forged header that plans a case twice: each case is reported once
+            }
             CaseResult r = byId.remove(p.id());
             ordered.add(r != null ? r : CaseResult.skipped(p, NOT_RUN));
         }

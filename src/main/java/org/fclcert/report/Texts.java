@@ -102,8 +102,21 @@ final class Texts {
         return "'" + s.replace("'", "'\\''") + "'";
     }
 
+    /**
+     * True for a Table 8/9/10 row that a partial run (a selection) did not test on either axis: the reports
+     * show the rows it tested and fold these away.
+     */
+    static boolean folded(Report r, Report.FeatureRow f) {
+        return !r.run().selection().whole() && f.status() == FeatureStatus.NOT_TESTED
+                && (f.semantic() == null || f.semantic().status() == FeatureStatus.NOT_TESTED);
+    }
+
     /** The command that reruns one case against the same implementation and corpus. */
     static String repro(Report report, String caseId) {
+        String rerun = report.toolkit().rerun();
+        if (rerun != null) {
+            return rerun.replace(org.fclcert.harness.RunHeader.Toolkit.CASE, caseId);
+        }
         StringBuilder b = new StringBuilder("./fclcert certify --iut ").append(shellQuote(report.iut().spec()));
         if (report.iut().classpath() != null) {
             b.append(" --classpath ").append(shellQuote(report.iut().classpath()));
@@ -168,9 +181,11 @@ final class Texts {
         String spec = r.iut().spec();
         String command = r.iut().command();
         String how = spec == null || spec.isBlank() ? command : spec;
-        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `" + how + "`";
+        // a results file read back may hold anything here: no backtick may end the span, the command is escaped
+        String out = own.apply(r.iut().name()) + " " + own.apply(r.iut().version()) + ", reached as `"
+                + String.valueOf(how).replaceAll("[`\\p{Cntrl}]", "?") + "`";
         if (command != null && !command.isBlank() && !command.equals(how)) {
-            out += " (" + command + ")";
+            out += " (" + own.apply(command) + ")";
         }
         return out;
     }

@@ -410,7 +410,8 @@ final class ModelBuilder {
         String text = word.getText().toUpperCase(Locale.ROOT);
         for (E value : type.getEnumConstants()) {
             boolean nonStandard = value instanceof AccumulationMethod a && !a.standard()   // PROBOR, SUM: dialect readers only
-                    || value instanceof AndAlgorithm x && !x.standard() || value instanceof OrAlgorithm y && !y.standard();
+                    || value instanceof AndAlgorithm x && !x.standard() || value instanceof OrAlgorithm y && !y.standard()
+                    || value instanceof ActivationMethod m && !m.standard();
             if (value.name().equals(text) && !nonStandard) {
                 return Optional.of(new Located<>(value, at(ctx.start)));
             }

@@ -16,9 +16,9 @@ import org.fclcert.model.SourceLocation;
  */
 final class ReaderDiagnostics {
     /** Errors reported before the rest are summarised in one FCL-S099 error. */
-    static final int MAX_ERRORS = 25;
+    static final int MAX_ERRORS = org.fclcert.model.Limits.MAX_ERRORS_PER_FILE;
     /** Warnings of one code reported before the rest are summarised in one warning. */
-    static final int MAX_WARNINGS_PER_CODE = 25;
+    static final int MAX_WARNINGS_PER_CODE = org.fclcert.model.Limits.MAX_WARNINGS_PER_CODE;
     /** Errors kept at most; past this many the reader stops (memory stays bounded on any input). */
     static final int STOP_AFTER_ERRORS = 1_000;
 

@@ -197,6 +197,12 @@ final class BlockContext {
     }
 
     /** Whether the output has point (or shape) terms rather than singletons. */
+    /** Whether an output is defuzzified by Tsukamoto's method (its terms inverted, no fuzzy set). */
+    boolean tsukamoto(String output) {
+        return fb.defuzzification(output).flatMap(Defuzzification::method)
+                .map(m -> m.value() == org.fclcert.model.DefuzzificationMethod.TSUKAMOTO).orElse(false);
+    }
+
     boolean pointTerms(String output) {
         return terms(output).stream().anyMatch(t -> !(t.function() instanceof MembershipFunction.Singleton));
     }

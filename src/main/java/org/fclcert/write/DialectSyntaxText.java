@@ -19,6 +19,7 @@ final class DialectSyntaxText {
             case O_FFLL_NO_DEFAULT -> "written as DEFAULT := 0";
             case O_FFLL_NO_METHOD -> "written as METHOD : CoG";
             case O_DECLARATION_WITHOUT_COLON -> "written with ':'";
+            case O_SPACED_ASSIGN -> "written as ':='";
             case O_VAR_RETAIN -> "left out (it has no effect on evaluation)";
             case O_SHAPE_SINGLETONS -> "written as a singleton";
             case O_SHAPE_DISCRETE -> "written as its points";

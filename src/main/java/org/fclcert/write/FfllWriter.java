@@ -53,6 +53,7 @@ public final class FfllWriter implements DialectWriter {
             if (i > 0) {
                 out.append('\n');
             }
+            OutputConditions.check(program, program.functionBlocks().get(i), findings, null);
             new Block(new BlockContext(program.functionBlocks().get(i), findings)).write(out);
         }
         return new Written(Dialect.FFLL, out.toString(), findings.losses(), findings.differences());
@@ -180,6 +181,10 @@ public final class FfllWriter implements DialectWriter {
             if (m == DefuzzificationMethod.COGSS) {
                 cx.findings.lost(at, WriterCode.METHOD, "FFLL has no COGSS; '" + name + "' is written with CoGS");
                 m = DefuzzificationMethod.COGS;
+            } else if (m == DefuzzificationMethod.TSUKAMOTO) {
+                cx.findings.lost(at, WriterCode.METHOD, "FFLL has no Tsukamoto method; '" + name + "' is written with"
+                        + " CoG");
+                m = DefuzzificationMethod.COG;
             }
             out.append(IN).append("METHOD: ").append(m.keyword()).append(";\n");
             if (m == DefuzzificationMethod.COG && cx.pointTerms(d.variable())) {
@@ -215,7 +220,13 @@ public final class FfllWriter implements DialectWriter {
             OrAlgorithm or = rb.or().map(Located::value).orElse(null);
             AccumulationMethod accu = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
             out.append(IN).append("AND: ").append(and.name()).append(";\n");
-            rb.activation().ifPresent(a -> out.append(IN).append("ACT: ").append(a.value().name()).append(";\n"));
+            rb.activation().ifPresent(a -> {
+                if (!a.value().standard()) {
+                    cx.findings.lost(a.location(), WriterCode.OPERATOR, "FFLL has no ACT " + a.value() + "; rule block '"
+                            + rb.name() + "' is written with MIN");
+                }
+                out.append(IN).append("ACT: ").append(a.value().standard() ? a.value().name() : "MIN").append(";\n");
+            });
             if (!accu.standard()) {
                 cx.findings.lost(rb.accumulation().get().location(), WriterCode.ACCUMULATION, "FFLL has no ACCU "
                         + accu + "; rule block '" + rb.name() + "' is written with MAX");

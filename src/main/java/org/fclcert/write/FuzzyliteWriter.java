@@ -19,6 +19,7 @@ import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Program;
 import org.fclcert.model.RuleBlock;
+import org.fclcert.model.ShapeKind;
 import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
@@ -56,6 +57,7 @@ public final class FuzzyliteWriter implements DialectWriter {
                 findings.differs(fb.location(), WriterCode.FIRST_BLOCK_ONLY, "fuzzylite builds only the first function"
                         + " block of a program; '" + fb.name() + "' is written but fuzzylite does not build it");
             }
+            OutputConditions.check(program, fb, findings, Boolean.FALSE);
             functionBlock(new BlockContext(fb, findings), out);
         }
         return new Written(Dialect.FUZZYLITE, out.toString(), findings.losses(), findings.differences());
@@ -160,7 +162,20 @@ public final class FuzzyliteWriter implements DialectWriter {
                     "fuzzylite takes number terms as constants: its " + m.keyword() + " of the singletons of '" + name
                             + "' is not the standard's");
         }
-        if (m == DefuzzificationMethod.COGS) {
+        if (m == DefuzzificationMethod.TSUKAMOTO && !d.terms().stream().allMatch(t -> t.function()
+                instanceof MembershipFunction.NamedShape s && s.kind().monotonic())) {
+            cx.findings.lost(d.method().get().location(), WriterCode.METHOD, "fuzzylite applies Tsukamoto's method"
+                    + " only to outputs whose terms are all monotonic shapes (Ramp, Sigmoid, SShape, ZShape, Concave);"
+                    + " '" + name + "' is written with COGS, which fuzzylite then reads otherwise");
+        }
+        if (m == DefuzzificationMethod.TSUKAMOTO && d.terms().stream().anyMatch(t -> t.function()
+                instanceof MembershipFunction.NamedShape s && (s.kind() == ShapeKind.S_SHAPE
+                        || s.kind() == ShapeKind.Z_SHAPE || s.kind() == ShapeKind.CONCAVE))) {
+            cx.findings.differs(d.method().get().location(), WriterCode.TSUKAMOTO_INVERSE, "fuzzylite 6.0 inverts"
+                    + " SShape, ZShape and Concave terms wrongly in Tsukamoto's method (fixed in fuzzylite 7): its '"
+                    + name + "' differs from fclcert's");
+        }
+        if (m == DefuzzificationMethod.COGS || m == DefuzzificationMethod.TSUKAMOTO) {
             for (Term t : d.terms()) {
                 if (cx.conclusions(d.variable(), t.name()) > 1) {
                     cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.COGS_PER_RULE,
@@ -171,6 +186,7 @@ public final class FuzzyliteWriter implements DialectWriter {
             }
         }
         AccumulationMethod a = accu == null ? AccumulationMethod.MAX : accu.value();
+        // fuzzylite's names: ASUM for PROBOR, the others (MAX, BSUM, NSUM, SUM, ESUM, HSUM, DSUM, NMAX) as the model's
         out.append(IN).append("ACCU : ").append(a == AccumulationMethod.PROBOR ? "ASUM" : a.name()).append(";\n");
         if (a == AccumulationMethod.NSUM) {
             cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite computes ACCU NSUM of '" + name
@@ -203,7 +219,7 @@ public final class FuzzyliteWriter implements DialectWriter {
         }
         // fuzzylite needs an activation even for singletons (MIN, fclcert's reading of a block without ACT)
         out.append(IN).append("ACT : ").append(rb.activation().map(a -> a.value().name()).orElse("MIN")).append(";\n");
-        boolean actMin = rb.activation().map(a -> a.value() == ActivationMethod.MIN).orElse(true);
+        ActivationMethod act = rb.activation().map(Located::value).orElse(ActivationMethod.MIN);
         for (RuleLines.Line line : lines) {
             String condition = LibraryConditions.fuzzylite(line.condition(), cx, and, or, line.rule().name());
             StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : if ").append(condition)
@@ -212,7 +228,7 @@ public final class FuzzyliteWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, actMin, line, s, "fuzzylite");
+                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
             }
             line.group().weight().ifPresent(w -> r.append(" with ").append(w));
             out.append(r).append('\n');

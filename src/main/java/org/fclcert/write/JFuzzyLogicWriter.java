@@ -1,8 +1,10 @@
 package org.fclcert.write;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
@@ -11,6 +13,7 @@ import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.MembershipFunction.NamedShape;
+import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Program;
 import org.fclcert.model.RuleBlock;
 import org.fclcert.model.SourceLocation;
@@ -45,6 +48,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             if (i > 0) {
                 out.append('\n');
             }
+            OutputConditions.check(program, program.functionBlocks().get(i), findings, Boolean.TRUE);
             BlockContext cx = new BlockContext(program.functionBlocks().get(i), findings);
             cx.spelling = n -> n.startsWith("_") || RESERVED.contains(n.toUpperCase(java.util.Locale.ROOT)) ? "u" + n : n;
             functionBlock(cx, out);
@@ -171,6 +175,10 @@ public final class JFuzzyLogicWriter implements DialectWriter {
             cx.findings.lost(d.method().get().location(), WriterCode.METHOD, "jFuzzyLogic has no COGSS; '" + name
                     + "' is written with COGS");
             m = DefuzzificationMethod.COGS;
+        } else if (m == DefuzzificationMethod.TSUKAMOTO) {
+            cx.findings.lost(d.method().get().location(), WriterCode.METHOD, "jFuzzyLogic has no Tsukamoto method; '"
+                    + name + "' is written with COG");
+            m = DefuzzificationMethod.COG;
         }
         out.append(IN).append("METHOD : ").append(LibraryText.method(m)).append(";\n");
         if (cx.pointTerms(d.variable()) && LibraryText.sampled(m)) {
@@ -195,27 +203,58 @@ public final class JFuzzyLogicWriter implements DialectWriter {
         out.append("END_DEFUZZIFY\n\n");
     }
 
+    /** jFuzzyLogic's names of the AND and OR algorithms it has, and the OR it couples with each AND. */
+    private static final Map<AndAlgorithm, String> JFL_AND = Map.of(AndAlgorithm.MIN, "MIN", AndAlgorithm.PROD, "PROD",
+            AndAlgorithm.BDIF, "BDIF", AndAlgorithm.DPROD, "DMIN", AndAlgorithm.NMIN, "NIPMIN", AndAlgorithm.HPROD, "HAMACHER");
+    private static final Map<OrAlgorithm, String> JFL_OR = Map.of(OrAlgorithm.MAX, "MAX", OrAlgorithm.ASUM, "ASUM",
+            OrAlgorithm.BSUM, "BSUM", OrAlgorithm.DSUM, "DMAX", OrAlgorithm.NMAX, "NIPMAX", OrAlgorithm.ESUM, "EINSTEIN");
+    private static final Map<AndAlgorithm, OrAlgorithm> JFL_PARTNER = Map.of(AndAlgorithm.MIN, OrAlgorithm.MAX,
+            AndAlgorithm.PROD, OrAlgorithm.ASUM, AndAlgorithm.BDIF, OrAlgorithm.BSUM, AndAlgorithm.DPROD, OrAlgorithm.DSUM,
+            AndAlgorithm.NMIN, OrAlgorithm.NMAX, AndAlgorithm.HPROD, OrAlgorithm.ESUM);
+
     private static void ruleBlock(BlockContext cx, RuleBlock rb, StringBuilder out) {
         out.append("RULEBLOCK ").append(cx.spelling.apply(rb.name())).append('\n');
-        if (rb.and().isPresent() && rb.or().isPresent() && rb.and().get().value().pair() != rb.or().get().value()) {
-            cx.findings.lost(rb.or().get().location(), WriterCode.OPERATOR, "jFuzzyLogic couples AND and OR (declaring"
-                    + " one sets the other to its pair of Table 3): AND " + rb.and().get().value() + " with OR "
-                    + rb.or().get().value() + " cannot be said; written: AND " + rb.and().get().value() + " and OR "
-                    + rb.and().get().value().pair());
-            out.append(IN).append("AND : ").append(rb.and().get().value().name()).append(";\n");
-            out.append(IN).append("OR : ").append(rb.and().get().value().pair().name()).append(";\n");
-        } else {
-            rb.and().ifPresent(a -> out.append(IN).append("AND : ").append(a.value().name()).append(";\n"));
-            rb.or().ifPresent(o -> out.append(IN).append("OR : ").append(o.value().name()).append(";\n"));
+        AndAlgorithm and = rb.and().map(Located::value).orElse(null);
+        OrAlgorithm or = rb.or().map(Located::value).orElse(null);
+        if (and != null && JFL_AND.get(and) == null || and == null && or != null && JFL_OR.get(or) == null) {
+            var at = and != null ? rb.and().get().location() : rb.or().get().location();
+            cx.findings.lost(at, WriterCode.OPERATOR, "jFuzzyLogic has no " + (and != null ? "AND " + and : "OR " + or)
+                    + "; rule block '" + rb.name() + "' is written with AND MIN");
+            and = AndAlgorithm.MIN;
+            or = null;
         }
-        rb.activation().ifPresent(a -> out.append(IN).append("ACT : ").append(a.value().name()).append(";\n"));
+        if (and != null && or != null && JFL_PARTNER.get(and) != or) {
+            cx.findings.lost(rb.or().get().location(), WriterCode.OPERATOR, "jFuzzyLogic couples AND and OR (declaring"
+                    + " one sets the other to its partner): AND " + and + " with OR " + or + " cannot be said; written:"
+                    + " AND " + and + " and OR " + JFL_PARTNER.get(and));
+            or = JFL_PARTNER.get(and);
+        }
+        if (and != null) {
+            out.append(IN).append("AND : ").append(JFL_AND.get(and)).append(";\n");
+        }
+        if (or != null) {
+            out.append(IN).append("OR : ").append(JFL_OR.get(or)).append(";\n");
+        }
+        rb.activation().ifPresent(a -> {
+            if (!a.value().standard()) {
+                cx.findings.lost(a.location(), WriterCode.OPERATOR, "jFuzzyLogic has no ACT " + a.value()
+                        + "; rule block '" + rb.name() + "' is written with MIN");
+            }
+            out.append(IN).append("ACT : ").append(a.value().standard() ? a.value().name() : "MIN").append(";\n");
+        });
         AccumulationMethod a = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
+        if (a.otherNorm().isPresent()) {
+            cx.findings.lost(rb.accumulation().get().location(), WriterCode.ACCUMULATION, "jFuzzyLogic has no ACCU "
+                    + a + "; rule block '" + rb.name() + "' is written with MAX");
+            a = AccumulationMethod.MAX;
+        }
         out.append(IN).append("ACCU : ").append(a.name()).append(";\n");
         if (a == AccumulationMethod.NSUM) {
             cx.findings.differs(rb.accumulation().get().location(), WriterCode.NSUM, "jFuzzyLogic computes ACCU NSUM"
                     + " of rule block '" + rb.name() + "' as BSUM");
         }
-        boolean actMin = rb.activation().map(x -> x.value() == org.fclcert.model.ActivationMethod.MIN).orElse(true);
+        org.fclcert.model.ActivationMethod act = rb.activation().map(Located::value)
+                .filter(org.fclcert.model.ActivationMethod::standard).orElse(org.fclcert.model.ActivationMethod.MIN);
         for (RuleLines.Line line : RuleLines.of(cx, rb, false)) {
             StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : IF ")
                     .append(LibraryConditions.jfuzzylogic(line.condition(), cx, line.rule().name())).append(" THEN ");
@@ -223,7 +262,7 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 Subconclusion s = line.group().parts().get(i);
                 r.append(i == 0 ? "" : ", ").append(cx.variable(s.variable())).append(" IS ")
                         .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, actMin, line, s, "jFuzzyLogic");
+                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "jFuzzyLogic");
             }
             line.group().weight().ifPresent(w -> r.append(" WITH ").append(w));
             out.append(r).append(";\n");

@@ -80,13 +80,14 @@ final class LibraryText {
         return order;
     }
 
-    /** The method keyword both libraries read (upper case; MoM is spelled MM). */
+    /** The method keyword both libraries read (upper case; MoM is spelled MM, Tsukamoto's method is fuzzylite's COGS). */
     static String method(DefuzzificationMethod m) {
-        return m == DefuzzificationMethod.MOM ? "MM" : m.keyword().toUpperCase(Locale.ROOT);
+        return m == DefuzzificationMethod.MOM ? "MM" : m == DefuzzificationMethod.TSUKAMOTO ? "COGS"
+                : m.keyword().toUpperCase(Locale.ROOT);
     }
 
     static boolean sampled(DefuzzificationMethod m) {
-        return m != DefuzzificationMethod.COGS && m != DefuzzificationMethod.COGSS;
+        return m != DefuzzificationMethod.COGS && m != DefuzzificationMethod.COGSS && m != DefuzzificationMethod.TSUKAMOTO;
     }
 
     static boolean singleton(MembershipFunction f) {

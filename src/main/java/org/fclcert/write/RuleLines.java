@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.fclcert.model.Condition;
+import org.fclcert.model.ActivationMethod;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
 import org.fclcert.model.Subconclusion;
@@ -60,14 +61,18 @@ final class RuleLines {
     }
 
     /**
-     * Both libraries multiply a rule's degree by its weight before ACT MIN (min(w·d, μ)) where the standard
-     * weighs the activated set; the text is the same, the result differs, so the writer names it.
+     * Both libraries multiply a rule's degree by its weight before activation (T(w·d, μ)) where the standard
+     * weighs the activated set (w·T(d, μ)); the two agree for ACT PROD only. The text is the same, the result
+     * differs, so the writer names it.
      */
-    static void noteWeightBeforeActivation(BlockContext cx, boolean actMin, Line line, Subconclusion s, String library) {
-        if (actMin && line.group().value() != 1 && cx.pointTerms(s.variable())) {
+    static void noteWeightBeforeActivation(BlockContext cx, ActivationMethod act, Line line, Subconclusion s,
+            String library) {
+        if (act != ActivationMethod.PROD && line.group().value() != 1 && cx.pointTerms(s.variable())
+                && !cx.tsukamoto(s.variable())) {
+            String t = act.name();
             cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, library + " multiplies the"
-                    + " degree of rule " + line.rule().name() + " by its weight before ACT MIN (min(w·d, μ));"
-                    + " fclcert weighs the activated set (w·min(d, μ), semantics.md point 3)");
+                    + " degree of rule " + line.rule().name() + " by its weight before ACT " + t + " (" + t
+                    + "(w·d, μ)); fclcert weighs the activated set (w·" + t + "(d, μ), semantics.md point 3)");
         }
     }
 }

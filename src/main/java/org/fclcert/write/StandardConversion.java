@@ -174,10 +174,11 @@ public final class StandardConversion {
                         "a hedge in a conclusion (applied to the rule's degree): standard conclusions have none"));
                 continue;
             }
-            if (u.feature() == Feature.O_OUTPUT_CONDITION) {
+            if (u.feature() == Feature.O_OUTPUT_CONDITION || u.feature() == Feature.O_OUTPUT_VALUE_CONDITION) {
                 findings.add(new Finding(u.feature().id(), u.location(), new Kind.NotExpressible("kept as read"),
-                        "a condition on an output's term (the degree it has reached so far): standard conditions"
-                                + " read inputs only (5.2.4)"));
+                        "a condition on an output's term (" + (u.feature() == Feature.O_OUTPUT_CONDITION ? "the degree"
+                        + " it has reached so far" : "its degree at the output's value when the evaluation begins")
+                        + "): standard conditions read inputs only (5.2.4)"));
                 continue;
             }
             findings.add(new Finding(u.feature().id(), u.location(), new Kind.Exact(),
@@ -192,7 +193,7 @@ public final class StandardConversion {
      */
     private static Program unpairedOperators(Program program, List<Finding> findings) {
         program = otherNorms(program, findings);
-        Set<SourceLocation> at = new java.util.HashSet<>();
+        Set<SourceLocation> at = new java.util.TreeSet<>();     // by place: SourceLocation.equals ignores it
         program.dialectFeatures().stream().filter(u -> u.feature() == Feature.O_UNPAIRED_OPERATORS)
                 .forEach(u -> at.add(u.location()));
         if (at.isEmpty()) {
@@ -233,7 +234,10 @@ public final class StandardConversion {
         return new Program(program.sourceName(), blocks, program.dialectFeatures());
     }
 
-    /** AND / OR outside Table 3 (Einstein, Hamacher, drastic, nilpotent): not expressible; MIN / MAX written. */
+    /**
+     * AND / OR outside Table 3 (Einstein, Hamacher, drastic, nilpotent): not expressible; MIN / MAX written. ACT
+     * by a t-norm outside Table 4: MIN written, exact where the block activates singletons only.
+     */
     private static Program otherNorms(Program program, List<Finding> findings) {
         List<FunctionBlock> blocks = new ArrayList<>();
         boolean changed = false;
@@ -256,7 +260,18 @@ public final class StandardConversion {
                     or = Optional.of(new Located<>(org.fclcert.model.OrAlgorithm.MAX, or.get().location()));
                     changed = true;
                 }
-                rbs.add(new RuleBlock(rb.name(), and, or, rb.activation(), rb.accumulation(), rb.rules(), rb.location()));
+                var act = rb.activation();
+                if (act.isPresent() && !act.get().value().standard()) {
+                    // on singletons every t-norm gives the rule's degree: T(d, 1) = d
+                    boolean exact = concludesOnlySingletons(fb, rb);
+                    findings.add(new Finding(Feature.O_ACT_OTHER_NORM.id(), act.get().location(), exact ? new Kind.Exact()
+                            : new Kind.NotExpressible("ACT : MIN"), "ACT " + act.get().value() + " of rule block "
+                            + rb.name() + (exact ? " written as MIN: it activates singletons only" : " is not an"
+                            + " algorithm of Table 4")));
+                    act = Optional.of(new Located<>(org.fclcert.model.ActivationMethod.MIN, act.get().location()));
+                    changed = true;
+                }
+                rbs.add(new RuleBlock(rb.name(), and, or, act, rb.accumulation(), rb.rules(), rb.location()));
             }
             blocks.add(new FunctionBlock(fb.name(), fb.variables(), fb.fuzzifications(), fb.defuzzifications(), rbs,
                     fb.options(), fb.location()));
@@ -503,9 +518,9 @@ public final class StandardConversion {
     // ---------------------------------------------------------------- accumulation
 
     /**
-     * ACCU PROBOR and SUM (Open Level): no method of Table 5 computes them. Not expressible; the converted
-     * program uses MAX for PROBOR and BSUM for SUM (each equal to it where at most one contribution is
-     * non-zero, and BSUM where the sum stays at most 1).
+     * ACCU PROBOR, SUM and the other s-norms (Open Level): no method of Table 5 computes them. Not expressible;
+     * the converted program uses MAX for PROBOR and the others, BSUM for SUM (each equal to it where at most one
+     * contribution is non-zero, and BSUM where the sum stays at most 1).
      */
     private static Program accumulations(Program program, Options options, List<Finding> findings) {
         List<FunctionBlock> blocks = new ArrayList<>();
@@ -514,8 +529,7 @@ public final class StandardConversion {
             for (RuleBlock rb : fb.ruleBlocks()) {
                 Optional<Located<AccumulationMethod>> accu = rb.accumulation();
                 if (accu.isPresent() && !accu.get().value().standard() && oneContributionPerSingleton(fb, rb)) {
-                    String id = accu.get().value() == AccumulationMethod.SUM ? Feature.O_ACCU_SUM.id()
-                            : Feature.O_ACCU_PROBOR.id();
+                    String id = accumulationFeature(accu.get().value());
                     findings.add(new Finding(id, accu.get().location(), new Kind.Exact(), "ACCU " + accu.get().value()
                             + " of rule block " + rb.name() + " written as MAX: it concludes only singleton outputs,"
                             + " each term by one rule, so no degrees are ever accumulated"));
@@ -524,7 +538,7 @@ public final class StandardConversion {
                     AccumulationMethod m = accu.get().value();
                     AccumulationMethod replacement = m == AccumulationMethod.SUM ? AccumulationMethod.BSUM
                             : AccumulationMethod.MAX;
-                    String id = m == AccumulationMethod.SUM ? Feature.O_ACCU_SUM.id() : Feature.O_ACCU_PROBOR.id();
+                    String id = accumulationFeature(m);
                     findings.add(new Finding(id, accu.get().location(), new Kind.NotExpressible("ACCU : "
                             + replacement), "ACCU " + m + " of rule block " + rb.name() + " has no equivalent among"
                             + " the methods of Table 5; the converted program uses " + replacement
@@ -538,6 +552,18 @@ public final class StandardConversion {
                     ruleBlocks, fb.options(), fb.location()));
         }
         return new Program(program.sourceName(), blocks, program.dialectFeatures());
+    }
+
+    private static String accumulationFeature(AccumulationMethod m) {
+        return (m == AccumulationMethod.SUM ? Feature.O_ACCU_SUM : m == AccumulationMethod.PROBOR ? Feature.O_ACCU_PROBOR
+                : Feature.O_ACCU_OTHER_NORM).id();
+    }
+
+    /** Whether every output the rule block concludes has singleton (or Takagi–Sugeno) terms only. */
+    private static boolean concludesOnlySingletons(FunctionBlock fb, RuleBlock rb) {
+        return rb.rules().stream().flatMap(r -> r.conclusion().stream()).allMatch(c -> fb.defuzzification(c.variable())
+                .map(d -> d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton
+                        || t.function() instanceof MembershipFunction.Computed)).orElse(true));
     }
 
     /**
@@ -572,7 +598,8 @@ public final class StandardConversion {
 
     /**
      * Defuzzification methods outside Table 1. MoM has no standard equivalent (CoG, CoA, LM and RM all
-     * give other values on a plateau), nor has COGSS (Σ u·μ without the division): not expressible; the
+     * give other values on a plateau), nor has COGSS (Σ u·μ without the division) or Tsukamoto's method (no
+     * standard method inverts a term): not expressible; the
      * converted program uses CoG (CoGS on singletons), the method FFLL itself falls back to.
      */
     private static Program methods(Program program, Options options, List<Finding> findings) {
@@ -587,6 +614,7 @@ public final class StandardConversion {
                             ? DefuzzificationMethod.COGS : DefuzzificationMethod.COG;
                     DefuzzificationMethod m = method.get().value();
                     String what = m == DefuzzificationMethod.COGSS ? "O-COGSS, the weighted sum of singletons"
+                            : m == DefuzzificationMethod.TSUKAMOTO ? "O-TSUKAMOTO, Tsukamoto's method"
                             : "O-MOM, mean of maximum";
                     findings.add(new Finding("METHOD " + m.keyword(), method.get().location(),
                             new Kind.NotExpressible("METHOD : " + replacement.keyword()),

@@ -26,13 +26,15 @@ public enum WriterCode implements DiagnosticCode {
     TYPE("FCL-X113", "a data type the library does not declare"),
     SAMPLED("FCL-X201", "the library samples this defuzzification instead of computing it exactly"),
     NSUM("FCL-X202", "the library computes ACCU NSUM as BSUM"),
-    WEIGHT_BEFORE_ACTIVATION("FCL-X203", "the library folds a weight into the rule's degree before ACT MIN"),
+    WEIGHT_BEFORE_ACTIVATION("FCL-X203", "the library folds a weight into the rule's degree before an ACT other than PROD"),
     COGS_PER_RULE("FCL-X204", "the library's CoGS counts each rule, not each term"),
     FIRST_BLOCK_ONLY("FCL-X205", "the library builds only the first function block"),
     IGNORED_BY_LIBRARY("FCL-X206", "a setting the library ignores or replaces by its own"),
     LEFT_OUT("FCL-X207", "a part without effect on evaluation that the library's FCL has no place for, left out"),
     NOT_LOADED("FCL-X208", "a construct the library is known not to load"),
-    VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x");
+    VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x"),
+    TSUKAMOTO_INVERSE("FCL-X210", "the library inverts a term otherwise in Tsukamoto's method (fuzzylite 6.0: SShape,"
+            + " ZShape, Concave)");
 
     private final String code;
     private final String meaning;

@@ -37,8 +37,8 @@ import org.openjdk.jmh.infra.Blackhole;
  * Throughput of {@code fclcert fuzz}, one operation = one generated program: {@code generate} (generate, write,
  * strict read and check), {@code referenceSide} (that, plus loading on the reference, drawing and judging the
  * fair steps and evaluating them) and {@code againstIut} (that, plus loading the text on the implementation
- * and evaluating every step there). Basic Level programs, so that the Python example IUT (Basic Level only)
- * accepts them. Vectors per program are counted in the {@code vectors} auxiliary counter. Run as
+ * and evaluating every step there), with the screened or the exact fairness judge. Basic Level programs, so that
+ * the Python example IUT (Basic Level only) accepts them. Vectors per program are counted in the {@code vectors} auxiliary counter. Run as
  * docs/performance.md describes, with {@code FuzzBenchmark} as the pattern.
  */
 @BenchmarkMode(Mode.Throughput)
@@ -53,6 +53,10 @@ public class FuzzBenchmark {
 
     @Param({"reference", "process:python3 examples/iut/basic_iut.py"})
     public String spec;
+
+    /** The fairness judge: {@code screened} (the default of fclcert fuzz) or {@code exact} (the exact judge alone). */
+    @Param({"screened", "exact"})
+    public String judge;
 
     private final CanonicalWriter writer = new CanonicalWriter();
     private ProgramGenerator generator;
@@ -85,7 +89,8 @@ public class FuzzBenchmark {
     @Setup(Level.Trial)
     public void setUp() throws Exception {
         generator = new ProgramGenerator(new FuzzSettings(ConformanceLevel.byWord(level), java.util.Set.of()));
-        vectors = new VectorGenerator(new org.fclcert.fuzz.ExactFairness());
+        vectors = new VectorGenerator(judge.equals("exact") ? new org.fclcert.fuzz.ExactFairness()
+                : new org.fclcert.fuzz.ScreenedFairness());
         iut = Iuts.open(spec, IutOptions.defaults());
     }
 

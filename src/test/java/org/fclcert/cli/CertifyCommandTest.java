@@ -85,7 +85,7 @@ class CertifyCommandTest {
         CaseResult crashed = result(r, "B-FB-002");
         assertTrue(crashed.message().startsWith("step 1 of 2: the implementation crashed"), crashed.message());
         assertTrue(crashed.evidence().error().contains("fatal: fifth evaluation, giving up"), crashed.evidence().error());
-        assertEquals("accepted a program the standard rejects: FCL-S001 at line 14", result(r, "B-FB-901").message());
+        assertEquals("accepted a program the standard rejects: FCL-S035 at line 15", result(r, "B-FB-901").message());
         assertEquals("fake", r.iut().name());
         assertEquals(List.of("B-FB"), r.claims().claimed());
         assertEquals(List.of("B-FB (partial)"), r.claims().notRealised());

@@ -233,4 +233,17 @@ class CheckCommandTest {
         Cli standard = Cli.run("check", "examples/broken.fcl");
         assertTrue(standard.errLines().stream().noneMatch(l -> l.contains("looks like")), standard.err());
     }
+
+    @Test
+    void controlCharactersOfAProgramNeverReachTheTerminalRaw(@TempDir Path dir) {
+        // a dialect reader takes a block name verbatim, ESC and all, and quotes it in its warning
+        Path file = Cli.write(dir, "esc.fcl", "FUNCTION_BLOCK f\u001b]0;pwned\u0007 x\nEND_FUNCTION_BLOCK\n");
+        for (String dialect : List.of("strict", "jfuzzylogic", "fuzzylite", "ffll")) {
+            Cli c = Cli.run("check", "--dialect", dialect, file.toString());
+            String all = c.out() + c.err();
+            assertTrue(all.chars().noneMatch(ch -> ch == 0x1b || ch == 0x07), dialect + ": " + all);
+        }
+        Cli jfl = Cli.run("check", "--dialect", "jfuzzylogic", file.toString());
+        assertTrue((jfl.out() + jfl.err()).contains("the block name 'f\\e]0' as written"), jfl.out() + jfl.err());
+    }
 }

@@ -61,8 +61,11 @@ class HostileIutTest {
     /** Certifies with the hostile mode, asserts the run ended normally and the five outputs agree; returns the report. */
     private Report certify(String mode, String... more) throws Exception {
         List<String> args = new ArrayList<>(List.of("certify", "--iut", HOSTILE + mode, "--corpus", CORPUS,
-                "--out", dir.toString(), "--no-probe", "--timeout", "5s"));
+                "--out", dir.toString(), "--no-probe"));
         args.addAll(List.of(more));
+        if (!args.contains("--timeout")) {
+            args.addAll(List.of("--timeout", "5s"));
+        }
         int exit = Main.run(args.toArray(String[]::new));
         assertEquals(0, exit, () -> "exit " + exit + "; stderr: " + err);
         for (String f : List.of("results.jsonl", "report.json", "report.md", "report.html", "junit.xml")) {
@@ -183,6 +186,61 @@ class HostileIutTest {
             assertEquals(ExportStatus.FAILED, c.export().status(), id);
             assertTrue(c.export().message().contains("no text field 'fcl'"), c.export().message());
         }
+    }
+
+    /** Every process listed in {@code pids} (one pid a line) has ended. */
+    private static void noSurvivors(Path pids) throws Exception {
+        List<Long> all = Files.readAllLines(pids).stream().map(Long::valueOf).toList();
+        assertFalse(all.isEmpty());
+        for (long pid : all) {
+            var handle = ProcessHandle.of(pid);
+            if (handle.isPresent()) {
+                handle.get().onExit().get(5, java.util.concurrent.TimeUnit.SECONDS);
+            }
+            assertTrue(ProcessHandle.of(pid).map(h -> !h.isAlive()).orElse(true), "process " + pid + " survives");
+        }
+    }
+
+    @Test
+    void childrenOutlivingTheImplementationSurviveNeitherCertifyNorProbe() throws Exception {
+        // issue 18 item 5: the IUT exits at each eval, its child keeps stdout open; one survivor per restart was
+        // left (6 after a certify, 34 after a probe)
+        Path pids = dir.resolve("pids");
+        Report r = certify("orphan " + pids, "--timeout", "1s");
+        assertEquals(CaseStatus.ERRORED, result(r, "B-FB-001").status());
+        assertTrue(Files.readAllLines(pids).size() >= 2, "restarted, a child each time");
+        noSurvivors(pids);
+        Path probed = dir.resolve("probe-pids");
+        int exit = Main.run("probe", "--iut", HOSTILE + "orphan " + probed, "--timeout", "1s", "--cap", "4",
+                "--budget", "6s");
+        assertEquals(0, exit, err.toString(StandardCharsets.UTF_8));
+        assertTrue(Files.readAllLines(probed).size() >= 2, "restarted, a child each time");
+        noSurvivors(probed);
+    }
+
+    @Test
+    void anImplementationNamingItselfLikeACommittedReportNeverWritesThere(@TempDir Path checkout) throws Exception {
+        // issue 18 item 7: without --out, 'reference' and 'fuzzylite 6.0' wrote over reports/<name>/; a 300-character
+        // name failed with "File name too long"
+        Path committed = checkout.resolve("reports/reference/report.md");
+        Files.createDirectories(committed.getParent());
+        Files.writeString(committed, "committed\n");
+        String script = Path.of("src/test/resources/iut/hostile.py").toAbsolutePath().toString();
+        String corpus = Path.of(CORPUS).toAbsolutePath().toString();
+        Map<String, String> expected = Map.of("reference", "reference", "fuzzylite 6.0", "fuzzylite-6.0",
+                "n".repeat(300), "n".repeat(64));
+        for (Map.Entry<String, String> e : expected.entrySet()) {
+            Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                    System.getProperty("java.class.path"), "org.fclcert.cli.Main", "certify", "--no-probe", "--corpus",
+                    corpus, "--iut", "process:python3 " + script + " name '" + e.getKey() + "'")
+                    .directory(checkout.toFile()).redirectErrorStream(true).start();
+            String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertEquals(0, p.waitFor(), text);
+            Path written = checkout.resolve("fclcert-reports").resolve(e.getValue());
+            assertTrue(Files.exists(written.resolve("report.md")), e.getValue() + ": " + text);
+            assertTrue(text.contains("Reports: fclcert-reports/" + e.getValue() + "/report.md"), text);
+        }
+        assertEquals("committed\n", Files.readString(committed), "the committed report is untouched");
     }
 
     @Test

@@ -158,6 +158,156 @@ class DialectSemanticsTest {
         }
     }
 
+    private static final String OTHER_NORMS = "FUNCTION_BLOCK s\nVAR_INPUT\n  x: REAL;\nEND_VAR\nVAR_OUTPUT\n  y: REAL;\n"
+            + "END_VAR\nFUZZIFY x\n  RANGE := (0.000 .. 10.000);\n  TERM lo := Triangle 0 0 10;\n  TERM hi := Triangle 0 10 10;\n"
+            + "END_FUZZIFY\nDEFUZZIFY y\n  RANGE := (0.000 .. 20.000);\n  TERM a := %s;\n  TERM b := %s;\n  METHOD : COG;\n"
+            + "  ACCU : %s;\n  DEFAULT := nan;\nEND_DEFUZZIFY\nRULEBLOCK\n  ACT : %s;\n  RULE 1 : if x is lo then y is a\n"
+            + "  RULE 2 : if x is hi then y is b\nEND_RULEBLOCK\nEND_FUNCTION_BLOCK\n";
+
+    /** The t-norms and s-norms by their textbook formulas, written here independently of the evaluator. */
+    private static double t(String norm, double a, double b) {
+        return switch (norm) {
+            case "BDIF" -> Math.max(0, a + b - 1);
+            case "EPROD" -> a * b / (2 - (a + b - a * b));
+            case "HPROD" -> a + b == 0 ? 0 : a * b / (a + b - a * b);
+            case "NMIN" -> a + b > 1 ? Math.min(a, b) : 0;
+            default -> throw new IllegalArgumentException(norm);
+        };
+    }
+
+    private static double s(String norm, double a, double b) {
+        return switch (norm) {
+            case "ESUM" -> (a + b) / (1 + a * b);
+            case "HSUM" -> a * b == 1 ? 1 : (a + b - 2 * a * b) / (1 - a * b);
+            case "NMAX" -> a + b < 1 ? Math.max(a, b) : 1;
+            default -> throw new IllegalArgumentException(norm);
+        };
+    }
+
+    /**
+     * fuzzylite's ACT and ACCU by other norms (O-ACT-OTHER-NORM, O-ACCU-OTHER-NORM): the accumulated set
+     * S(w·T(d1, μa), w·T(d2, μb)), its CoG against a 10⁶-sample midpoint rule of that formula, on smooth terms
+     * (Gaussian, bell) and on triangles (points: the kinks of BDIF and NMIN split the integration).
+     */
+    @Test
+    void fuzzyliteOtherActivationsAndAccumulationsAgreeWithADenseMidpointRule() throws EvaluationException {
+        int n = 1_000_000;
+        double h = 20.0 / n;
+        String[][] terms = {{"Gaussian 6 2", "Bell 14 3 2"}, {"Triangle 2 6 10", "Triangle 10 14 18"}};
+        for (String[] term : terms) {
+            boolean smooth = term[0].startsWith("Gaussian");
+            for (String act : List.of("BDIF", "EPROD", "HPROD", "NMIN")) {
+                for (String accu : List.of("ESUM", "HSUM", "NMAX")) {
+                    FunctionBlockInstance f = load(true, String.format(OTHER_NORMS, term[0], term[1], accu, act));
+                    for (double x : new double[] {3, 6.5}) {
+                        double dLo = 1 - x / 10;
+                        double dHi = x / 10;
+                        double area = 0;
+                        double moment = 0;
+                        for (int i = 0; i < n; i++) {
+                            double u = (i + 0.5) * h;
+                            double ma = smooth ? Math.exp(-(u - 6) * (u - 6) / 8) : Math.max(0, 1 - Math.abs(u - 6) / 4);
+                            double mb = smooth ? 1 / (1 + Math.pow(Math.abs((u - 14) / 3), 4))
+                                    : Math.max(0, 1 - Math.abs(u - 14) / 4);
+                            double m = s(accu, s(accu, 0, t(act, dLo, ma)), t(act, dHi, mb));
+                            area += m * h;
+                            moment += u * m * h;
+                        }
+                        f.set("x", x);
+                        f.evaluate();
+                        String what = term[0] + " " + act + " " + accu + " x=" + x;
+                        // NMIN and NMAX jump: the midpoint rule is off by up to a sample step per jump
+                        double tol = act.equals("NMIN") || accu.equals("NMAX") ? 1e-5 : 1e-6;
+                        assertEquals(moment / area, f.get("y"), moment / area * tol, what);
+                    }
+                }
+            }
+        }
+    }
+
+    /** Einstein sum of singletons: (a + b) / (1 + ab) per term; the activation does not change a singleton. */
+    @Test
+    void einsteinSumOfSingletons() throws EvaluationException {
+        String second = "  RULE 2 : if x is b then y is one\n";
+        FunctionBlockInstance f = load(true, fuzzylite("Ramp 0 2.5", "x is a", "ESUM", second).replace("ACT : MIN",
+                "ACT : EPROD"));
+        f.set("x", 2);                                      // degrees 0.8 and 0.4 on 'one'
+        f.evaluate();
+        assertEquals(1.2 / 1.32, f.get("y"), 1e-15);      // COGSS = the degree of 'one' = 1.2 / (1 + 0.32)
+    }
+
+    private static final String TSUKAMOTO = """
+            FUNCTION_BLOCK tsukamoto
+            VAR_INPUT
+              x: REAL;
+            END_VAR
+            VAR_OUTPUT
+              r: REAL;
+              s: REAL;
+              z: REAL;
+            END_VAR
+            FUZZIFY x
+              RANGE := (0.000 .. 10.000);
+              TERM lo := Ramp 10.000 0.000;
+              TERM hi := Ramp 0.000 10.000;
+            END_FUZZIFY
+            DEFUZZIFY r
+              RANGE := (0.000 .. 1.000);
+              TERM a := Ramp 0.000 1.000;
+              TERM b := Ramp 1.000 0.200;
+              METHOD : COGS;
+              DEFAULT := nan;
+            END_DEFUZZIFY
+            DEFUZZIFY s
+              RANGE := (0.000 .. 10.000);
+              TERM a := Sigmoid 5.000 2.000;
+              TERM b := SShape 0.000 10.000;
+              METHOD : COGS;
+              DEFAULT := nan;
+            END_DEFUZZIFY
+            DEFUZZIFY z
+              RANGE := (0.000 .. 10.000);
+              TERM a := ZShape 0.000 10.000;
+              TERM b := Concave 4.000 5.000;
+              METHOD : COGS;
+              DEFAULT := nan;
+            END_DEFUZZIFY
+            RULEBLOCK
+              RULE 1 : if x is lo then r is a and s is a and z is a
+              RULE 2 : if x is hi then r is b and s is b and z is b
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /**
+     * Tsukamoto's method (fuzzylite's COGS on monotonic terms, O-TSUKAMOTO): each term inverted at its degree, the
+     * weighted average of those points; by hand.
+     */
+    @Test
+    void tsukamotoInvertsEachMonotonicTermAtItsDegree() throws EvaluationException {
+        FunctionBlockInstance f = load(true, TSUKAMOTO);
+        f.set("x", 2);                                      // lo 0.8, hi 0.2
+        f.evaluate();
+        // r: rising ramp 0→1 at 0.8: 0.8; falling ramp 1→0.2 at 0.2: 1 + 0.2·(0.2 − 1) = 0.84
+        assertEquals((0.8 * 0.8 + 0.2 * 0.84) / 1.0, f.get("r"), 1e-15);
+        // s: sigmoid 1/(1+e^(−2(u−5))) = 0.8 at u = 5 − ln(1/0.8 − 1)/2 = 5 + ln 2; S shape 0..10 at 0.2 (≤ ½):
+        // 2(u/10)² = 0.2, u = 10·√0.1
+        assertEquals(0.8 * (5 + Math.log(2)) + 0.2 * 10 * Math.sqrt(0.1), f.get("s"), 1e-12);
+        // z: Z shape 0..10 at 0.8 (≥ ½): 1 − 2(u/10)² = 0.8, u = 10·√0.1; Concave 4 5 (rising) at 0.2:
+        // (5 − 4)/(10 − 4 − u) = 0.2, u = 1
+        assertEquals(0.8 * 10 * Math.sqrt(0.1) + 0.2 * 1, f.get("z"), 1e-12);
+        f.set("x", 10);                                     // hi alone, at 1: the falling ramp's end 0.2, the S
+        f.evaluate();                                       // shape's end 10, the Concave's end 5
+        assertEquals(0.2, f.get("r"), 1e-15);
+        assertEquals(10, f.get("s"), 1e-12);
+        assertEquals(5, f.get("z"), 1e-12);
+        f.set("x", 0);                                      // lo alone, at 1: a sigmoid never reaches 1, so the
+        f.evaluate();                                       // RANGE's end beyond its rise; Z shape 1 up to 0
+        assertEquals(1, f.get("r"), 1e-15);
+        assertEquals(10, f.get("s"), 0);
+        assertEquals(0, f.get("z"), 1e-12);
+    }
+
     @Test
     void smoothMaximaByHand() throws EvaluationException {
         // x = 3: rule 1 degree 0.7 clips gauss(6, 2): plateau where exp(-(u-6)²/8) ≥ 0.7, i.e.

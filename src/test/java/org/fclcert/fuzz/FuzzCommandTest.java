@@ -33,6 +33,9 @@ class FuzzCommandTest {
         assertEquals(0, j.at("/counts/findings").asLong());
         assertEquals(0, j.at("/counts/generatorBugs").asLong());
         assertTrue(j.at("/counts/vectors").asLong() >= 60, j.toString());
+        // where the time went: the reference side is most of a run against the reference in process
+        assertTrue(j.at("/time/referenceSeconds").asDouble() > j.at("/time/implementationSeconds").asDouble(), j.toString());
+        assertEquals(0.0, j.at("/time/shrinkSeconds").asDouble(), j.toString());
         assertTrue(Files.readString(dir.resolve("fuzz.md")).contains("**60 programs"), Files.readString(dir.resolve("fuzz.md")));
         // not a terminal: a progress line every few seconds at most, and the summary on stdout
         assertTrue(out.toString().contains("60 programs"), out.toString());
@@ -107,12 +110,67 @@ class FuzzCommandTest {
     }
 
     @Test
+    void presentAsSendsEachProgramInTheLibrarysLayout_andCountsWhatItCannotSay(@TempDir Path dir) throws Exception {
+        String iut = "java:org.fclcert.fuzz.SpiFakes$FuzzyliteLayoutOnly";
+        assertEquals(1, run("fuzz", "--iut", iut, "--present-as", "fuzzylite", "--feature", "E-ACCU-NSUM", "--max-findings",
+                "1", "--budget", "60s", "--out", dir.toString()), err.toString());
+        JsonNode j = json(dir);
+        assertEquals("fuzzylite", j.at("/run/presentAs").asText());
+        JsonNode f = j.at("/findings/0");
+        assertEquals("E-ACCU-NSUM", f.get("feature").asText(), j.toString());
+        assertEquals("wrong-value", f.get("kind").asText());
+        // the case is standard FCL for the corpus; the text as sent is beside it, in fuzzylite's layout
+        String id = f.get("id").asText();
+        assertTrue(Files.readString(dir.resolve(id + ".fcl")).contains("ACCU : NSUM;"));
+        String sent = Files.readString(dir.resolve("as-fuzzylite").resolve(id + ".fcl"));
+        assertTrue(sent.contains("  ACCU : NSUM;\n") && sent.contains("  METHOD : COG"), sent);
+        assertTrue(Files.readString(dir.resolve(id + ".fcl")).contains("in fuzzylite's layout (as-fuzzylite/" + id + ".fcl)"));
+        assertTrue(out.toString().contains("sent in fuzzylite's layout; "), out.toString());
+        assertTrue(Files.readString(dir.resolve("fuzz.md")).contains("Programs were sent in fuzzylite's layout"));
+    }
+
+    @Test
+    void theReferenceInALibrarysLayoutFindsNothing_whatTheWriterCannotSayIsSkippedWithItsReason(@TempDir Path dir)
+            throws Exception {
+        for (String layout : new String[] {"fuzzylite", "jfuzzylogic"}) {
+            Path out = dir.resolve(layout);
+            assertEquals(0, run("fuzz", "--iut", "reference", "--present-as", layout, "--programs", "150", "--budget", "2m",
+                    "--out", out.toString()), err.toString());
+            JsonNode j = json(out);
+            assertEquals(layout, j.at("/run/presentAs").asText());
+            assertEquals(0, j.at("/counts/findings").asLong());
+            assertEquals(0, j.get("presentationFaults").size(), j.toString());
+            long skipped = j.at("/counts/notPresentable").asLong();
+            long sent = j.at("/counts/programs").asLong();
+            assertTrue(sent > 20 && skipped > 0, j.toString());
+            // every reason is a loss the writer names (FCL-X1nn), and they add up
+            long sum = 0;
+            for (var e : (Iterable<java.util.Map.Entry<String, JsonNode>>) () -> j.get("notPresentable").fields()) {
+                assertTrue(e.getKey().matches("FCL-X1\\d\\d"), e.getKey());
+                sum += e.getValue().asLong();
+            }
+            assertEquals(skipped, sum);
+        }
+        // standard FCL, the default for the reference, is the layout of no library
+        assertEquals(0, run("fuzz", "--iut", "reference", "--programs", "5", "--out", dir.resolve("none").toString()));
+        assertEquals("none", json(dir.resolve("none")).at("/run/presentAs").asText());
+    }
+
+    @Test
+    void anImplementationThatReadsOnlyItsOwnLayoutRejectsStandardFcl(@TempDir Path dir) throws Exception {
+        assertEquals(1, run("fuzz", "--iut", "java:org.fclcert.fuzz.SpiFakes$FuzzyliteLayoutOnly", "--present-as", "none",
+                "--programs", "10", "--budget", "60s", "--out", dir.toString()), err.toString());
+        assertEquals("rejected", json(dir).at("/findings/0/kind").asText());
+    }
+
+    @Test
     void badUsageAndAnImplementationThatCannotRun_exit2(@TempDir Path dir) {
         assertEquals(2, run("fuzz", "--iut", "nonsense", "--out", dir.toString()));
         assertTrue(err.toString().contains("unknown implementation under test"), err.toString());
         assertEquals(2, run("fuzz", "--iut", "reference", "--budget", "soon", "--out", dir.toString()));
         assertEquals(2, run("fuzz", "--iut", "reference", "--feature", "O-HEDGE-VERY", "--out", dir.toString()));
         assertEquals(2, run("fuzz", "--iut", "reference", "--level", "basic", "--feature", "E-ACCU-NSUM", "--out", dir.toString()));
+        assertEquals(2, run("fuzz", "--iut", "reference", "--present-as", "fuzzy", "--out", dir.toString()));
         assertEquals(2, run("fuzz", "--iut", "process:/nonexistent/iut", "--budget", "5s", "--out", dir.toString()));
         assertTrue(err.toString().contains("cannot run process:/nonexistent/iut"), err.toString());
     }

@@ -11,6 +11,8 @@ import org.fclcert.iut.spi.FclInstance;
 import org.fclcert.iut.spi.FclLoadResult;
 import org.fclcert.iut.spi.FclProgram;
 import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
 
 /** Java SPI implementations for the command-line tests ({@code --iut java:CLASS}), on the reference evaluator. */
 public final class SpiFakes {
@@ -33,9 +35,14 @@ public final class SpiFakes {
             return fcl.replace("ACCU : NSUM", "ACCU : BSUM");
         }
 
+        /** The program as this implementation reads it. */
+        protected Analysis analyze(String fcl) {
+            return Analysis.analyze(StrictReader.openLevel(), "in.fcl", rewrite(fcl));
+        }
+
         @Override
         public FclLoadResult load(String fcl) {
-            Analysis a = Analysis.analyze(StrictReader.openLevel(), "in.fcl", rewrite(fcl));
+            Analysis a = analyze(fcl);
             if (a.program().isEmpty()) {
                 return FclLoadResult.rejected(a.diagnostics().get(0).message(), a.diagnostics().get(0).location().line());
             }
@@ -55,6 +62,25 @@ public final class SpiFakes {
                     }
                 }
             });
+        }
+    }
+
+    /**
+     * Reads only fuzzylite's layout (a text the strict reader reads is refused, as fuzzylite refuses standard FCL)
+     * and computes NSUM as BSUM: what {@code --present-as fuzzylite} is for.
+     */
+    public static final class FuzzyliteLayoutOnly extends NsumAsBsum {
+        @Override
+        public String name() {
+            return "fuzzylite-layout-only";
+        }
+
+        @Override
+        protected Analysis analyze(String fcl) {
+            if (!Analysis.analyze(StrictReader.openLevel(), "in.fcl", fcl).hasErrors()) {
+                return Analysis.analyze(StrictReader.openLevel(), "in.fcl", "not fuzzylite's layout");
+            }
+            return Analysis.analyze(DialectReaders.reader(Dialect.FUZZYLITE), "in.fcl", rewrite(fcl));
         }
     }
 

@@ -10,17 +10,17 @@ import java.time.Duration;
  * where it can ({@code scripts/ensure-fuzzylite}); in CI (the environment variable {@code CI} set) a missing
  * fuzzylite fails the tests loudly, elsewhere they are skipped with the reason.
  */
-final class Fuzzylite {
+public final class Fuzzylite {
     private static Boolean installed;
     private static String why = "";
 
     private Fuzzylite() {}
 
-    static IutOptions options() {
+    public static IutOptions options() {
         return IutOptions.defaults().withTimeout(Duration.ofSeconds(20));
     }
 
-    static synchronized void assumeInstalled() {
+    public static synchronized void assumeInstalled() {
         if (installed == null) {
             try (ImplementationUnderTest iut = Iuts.open("fuzzylite", options())) {
                 iut.hello();

@@ -164,6 +164,49 @@ class FuzzyliteIutTest {
         }
     }
 
+    /** A program of ours in fuzzylite's layout: Einstein ACT and ACCU, and a Tsukamoto output of a ramp and a sigmoid. */
+    static String mixer() throws java.io.IOException {
+        return Files.readString(Path.of("src/test/resources/org/fclcert/syntax/dialect/fuzzylite/einstein-tsukamoto.fcl"));
+    }
+
+    /**
+     * fuzzylite and fclcert's reading of Einstein norms and Tsukamoto's method agree: the Tsukamoto output exactly
+     * (by hand), the Einstein-activated CoG to fuzzylite's 100-sample integration (the midpoint rule written here).
+     */
+    @Test
+    void einsteinNormsAndTsukamotoAsFclcertReadsThem() throws Exception {
+        org.fclcert.check.Analysis a = org.fclcert.check.Analysis.analyze(org.fclcert.syntax.dialect.DialectReaders
+                .reader(org.fclcert.syntax.dialect.Dialect.FUZZYLITE), "mixer.fcl", mixer());
+        org.fclcert.eval.FunctionBlockInstance ours = org.fclcert.eval.Evaluator.load(a.program().orElseThrow(
+                () -> new AssertionError(a.diagnostics()))).newInstance();
+        try (ImplementationUnderTest iut = fuzzylite()) {
+            assertEquals(new LoadOutcome.Loaded(List.of("mixer")), iut.load(mixer()));
+            // x = 2.5: lo 0.75, hi 0.25. valve: the falling ramp 1 → 0 is 0.75 at 0.25, the sigmoid
+            // 1/(1 + e^(−12(u − 0.5))) is 0.25 at 0.5 − ln 3 / 12: (0.75·0.25 + 0.25·(0.5 − ln 3/12)) / 1
+            double valve = 0.75 * 0.25 + 0.25 * (0.5 - Math.log(3) / 12);
+            Map<String, Double> theirs = iut.eval("mixer", Map.of("x", 2.5));
+            ours.set("x", 2.5);
+            ours.evaluate();
+            assertEquals(valve, theirs.get("valve"), EXACT);
+            assertEquals(valve, ours.get("valve"), EXACT);
+            // heat: EPROD(d, triangle) on each triangle (they do not overlap, so ESUM leaves each as it is), its
+            // CoG by a 10⁶-sample midpoint rule; fuzzylite samples 100 points: agreement to a sample step's order
+            double area = 0;
+            double moment = 0;
+            int n = 1_000_000;
+            for (int i = 0; i < n; i++) {
+                double u = (i + 0.5) * 20.0 / n;
+                double mu = Math.max(0, 1 - Math.abs(u - (u < 10 ? 5 : 15)) / 5);
+                double d = u < 10 ? 0.75 : 0.25;
+                double c = d * mu / (2 - (d + mu - d * mu));
+                area += c;
+                moment += u * c;
+            }
+            assertEquals(moment / area, ours.get("heat"), 1e-6);
+            assertEquals(moment / area, theirs.get("heat"), 0.02);
+        }
+    }
+
     @Test
     void aRuleFuzzyliteCannotReadIsDroppedSilentlyAndShowsAsAWrongValue() throws IutException {
         try (ImplementationUnderTest iut = fuzzylite()) {

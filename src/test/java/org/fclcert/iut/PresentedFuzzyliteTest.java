@@ -61,6 +61,11 @@ class PresentedFuzzyliteTest {
         assertEquals(950.0 / 14, values.actual().get("valve"), 1e-9);
         assertNotNull(p.program(), "the written text of a failed presentation is kept");
         assertTrue(p.program().contains("COGS"), p.program());
+        // the reference's trace at that step says why: closed takes max(1/8, 1/12), not their sum
+        assertEquals(List.of("rules fired: RULE 1 at 0.875 → valve IS inlet; RULE 2 at 0.125 → valve IS closed;"
+                + " RULE 3 at 0.0833333 → valve IS closed; RULE 4 at 0.0833333 → valve IS drainage",
+                "valve = 73.0769, defuzzified from the singletons -100 (degree 0.0833333), 0 (degree 0.125),"
+                + " 100 (degree 0.875)"), p.evidence().reference().lines());
 
         // WITH 0.5 then MIN: 0.5*ta (area 10 at 20) and tb clipped at 0.5 (area 15 at 80): CoG 1400/25 = 56;
         // fuzzylite clips ta at 0.5*1 (a trapezoid of area 15): (300 + 1200)/30 = 50 (its CoG samples the set)
@@ -89,8 +94,10 @@ class PresentedFuzzyliteTest {
                 out.resolve("again"));
         assertEquals(report.semantic(), again.semantic());
         assertEquals(cogsRow.semantic(), row(again, "B-COGS").semantic());
-        assertEquals(values, again.cases().stream().filter(c -> c.id().equals("B-COGS-001")).findFirst().orElseThrow()
-                .presented().evidence().mismatch());
+        CaseResult.Presented back = again.cases().stream().filter(c -> c.id().equals("B-COGS-001")).findFirst()
+                .orElseThrow().presented();
+        assertEquals(values, back.evidence().mismatch());
+        assertEquals(p.evidence().reference(), back.evidence().reference());
     }
 
     private static Report.FeatureRow row(Report r, String id) {

@@ -18,11 +18,11 @@ import javax.imageio.ImageIO;
  * Headless Chromium from Debian's package, as a person's browser: renders a file to a PNG of the given
  * size. Installed by scripts/ensure-chromium; absent, a test skips with the reason, or fails with CI set.
  */
-final class Chromium {
+public final class Chromium {
     private Chromium() {
     }
 
-    static Path executable() {
+    public static Path executable() {
         for (String candidate : List.of("/usr/bin/chromium", "/usr/bin/chromium-browser")) {
             if (Files.isExecutable(Path.of(candidate))) {
                 return Path.of(candidate);
@@ -38,11 +38,17 @@ final class Chromium {
     }
 
     /** Renders {@code svg} (written to {@code dir}) at width x height CSS pixels, scale 1, and reads the PNG. */
-    static BufferedImage render(Path dir, String name, String svg, int width, int height)
+    public static BufferedImage render(Path dir, String name, String svg, int width, int height)
+            throws IOException, InterruptedException {
+        return render(dir, name + ".svg", svg, width, height, name);
+    }
+
+    /** Renders a page ({@code fileName}: its extension says what it is, .html or .svg) as {@link #render}. */
+    public static BufferedImage render(Path dir, String fileName, String content, int width, int height, String name)
             throws IOException, InterruptedException {
         Path chromium = executable();
-        Path file = dir.resolve(name + ".svg");
-        Files.writeString(file, svg, StandardCharsets.UTF_8);
+        Path file = dir.resolve(fileName);
+        Files.writeString(file, content, StandardCharsets.UTF_8);
         Path png = dir.resolve(name + ".png");
         Path profile = Files.createTempDirectory(dir, "profile");
         Process p = new ProcessBuilder(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
@@ -71,7 +77,7 @@ final class Chromium {
     }
 
     /** True when some pixel within {@code r} of (x, y) is within {@code tolerance} per channel of rgb. */
-    static boolean colourNear(BufferedImage image, double x, double y, int r, String rgb, int tolerance) {
+    public static boolean colourNear(BufferedImage image, double x, double y, int r, String rgb, int tolerance) {
         int want = Integer.parseInt(rgb.substring(1), 16);
         for (int dx = -r; dx <= r; dx++) {
             for (int dy = -r; dy <= r; dy++) {
@@ -86,7 +92,7 @@ final class Chromium {
         return false;
     }
 
-    static boolean close(int a, int b, int tolerance) {
+    public static boolean close(int a, int b, int tolerance) {
         for (int shift = 0; shift <= 16; shift += 8) {
             if (Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff)) > tolerance) {
                 return false;

@@ -12,6 +12,7 @@ import java.util.Set;
 import java.util.stream.Collectors;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
+import org.fclcert.iut.StopSignal;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -226,5 +227,34 @@ class ProberTest {
         Prober.probe(slowLoads, new Prober.Options(100_000, budget, EnumSet.of(Table11.RULES_PER_BLOCK)),
                 Prober.Listener.NONE, () -> now[0]);
         assertTrue(now[0] <= budget.toNanos(), "simulated time used: " + now[0] / 1e9 + " s of " + budget);
+    }
+    @Test
+    void aStopKeepsWhatTheRowUnderWayEstablishedAndMeasuresNoMore() throws Exception {
+        // stopped from inside the third load of the inputs row: sizes 1 and 2 worked, size 4 was cut short
+        StopSignal stop = new StopSignal();
+        boolean[] inInputs = {false};
+        int[] loads = {0};
+        Prober.IutSource source = () -> new org.fclcert.harness.fakes.EvaluatorIut() {
+            @Override
+            protected java.util.Optional<org.fclcert.iut.LoadOutcome> veto(String fcl, org.fclcert.check.Analysis a) {
+                if (inInputs[0] && ++loads[0] == 3) {
+                    stop.stop("stopped by the test");
+                }
+                return java.util.Optional.empty();
+            }
+        };
+        Prober.Listener listener = (row, index, total) -> inInputs[0] = row == Table11.INPUTS;
+        List<DataCheckEntry> list = Prober.probe(source, new Prober.Options(64, Duration.ofMinutes(2),
+                EnumSet.of(Table11.DATA_TYPES, Table11.INPUTS, Table11.OUTPUTS)), listener, stop);
+        Map<String, DataCheckEntry> rows = list.stream().collect(Collectors.toMap(DataCheckEntry::id, e -> e));
+        assertEquals(String.join(", ", Prober.DATA_TYPES), rows.get("data-types").value(), "measured before the stop");
+        DataCheckEntry inputs = rows.get("max-input-variables");
+        assertEquals("2", inputs.value());
+        assertEquals(DataCheckEntry.AT_LEAST, inputs.bound());
+        assertTrue(inputs.note().startsWith("the probe was stopped: stopped by the test, during this row"), inputs.note());
+        DataCheckEntry outputs = rows.get("max-output-variables");
+        assertEquals(DataCheckEntry.NOT_MEASURED, outputs.bound());
+        assertEquals("not measured: the probe was stopped: stopped by the test", outputs.note());
+        assertEquals("not selected for this run", rows.get("max-nesting-depth").note());
     }
 }

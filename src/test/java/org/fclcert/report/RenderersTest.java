@@ -125,6 +125,60 @@ class RenderersTest {
         assertTrue(json.contains("\"dataCheckList\" : [ ]"), "present and empty until the probes fill it");
     }
 
+    @Test
+    void anAcceptedInvalidProgramShowsTheLineWhereItsErrorIs() {
+        CaseResult accepted = MadeResults.made("B-FB-901", "basic", List.of(), List.of(), CaseStatus.FAILED,
+                "accepted a program the standard rejects: FCL-S001 at line 3", "reject: FCL-S001 at line 3", "accepted",
+                org.fclcert.harness.ExportStatus.NOT_RUN, "FUNCTION_BLOCK fb\nVAR_INPUT\n    x : REAL; `END_VAR\n");
+        Report r = ReportBuilder.build(Results.header(1, List.of(accepted), List.of()), List.of(accepted), List.of(),
+                List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(r).contains("  - line 3, where the error is: `x : REAL; 'END_VAR`\n"),
+                MarkdownReport.render(r));
+        assertTrue(HtmlReport.render(r).contains("<p>Line 3, where the error is: <code>x : REAL; `END_VAR</code></p>"));
+    }
+
+    @Test
+    void aRunFromMavenIsReproducedWithMaven(@TempDir Path dir) throws Exception {
+        CaseResult failed = Results.result("B-COGS-002", "basic", CaseStatus.FAILED, List.of("B-COGS"));
+        org.fclcert.harness.RunHeader cli = Results.header(1, List.of(failed), List.of());
+        org.fclcert.harness.RunHeader maven = new org.fclcert.harness.RunHeader(cli.iut(),
+                new org.fclcert.harness.RunHeader.Toolkit("0.1.0-test", "mvn verify -Dfclcert.cases={case}"),
+                cli.corpus(), cli.selection(), cli.startedAt());
+        Report r = ReportBuilder.build(maven, List.of(failed), List.of(), List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(r).contains("  - reproduce: `mvn verify -Dfclcert.cases=B-COGS-002`"));
+        assertTrue(HtmlReport.render(r).contains("<code class=\"cmd\">mvn verify -Dfclcert.cases=B-COGS-002</code>"));
+        Report back = JsonReport.read(ReportFiles.writeAll(r, dir).get(0));
+        assertEquals("mvn verify -Dfclcert.cases={case}", back.toolkit().rerun());
+        // the command line's own runs keep theirs, and their JSON has no rerun
+        Report plain = ReportBuilder.build(cli, List.of(failed), List.of(), List.of(), java.time.Instant.EPOCH);
+        assertTrue(MarkdownReport.render(plain).contains("reproduce: `./fclcert certify --iut 'process:python3 fake.py'"));
+        assertFalse(Files.readString(ReportFiles.writeAll(plain, dir.resolve("cli")).get(0)).contains("rerun"));
+    }
+
+    @Test
+    void aCaseShowsItsSemanticAxisWithTheReferencesTraceAndPicture() {
+        org.fclcert.harness.ReferenceTrace trace = new org.fclcert.harness.ReferenceTrace(1,
+                List.of(new org.fclcert.harness.ReferenceTrace.RuleDegree("r", "1", 0.5, List.of("y IS hi"))),
+                List.of(new org.fclcert.harness.ReferenceTrace.OutputValue("y", 100, "defuzzified", true,
+                        List.of(List.of(0.0, 0.0), List.of(100.0, 0.5)))));
+        CaseResult rejected = MadeResults.made("B-COGS-001", "basic", List.of("B-COGS"), List.of(), CaseStatus.FAILED,
+                "rejected a program the standard accepts", "load and evaluate", "rejected",
+                org.fclcert.harness.ExportStatus.NOT_RUN, "FUNCTION_BLOCK fb\nEND_FUNCTION_BLOCK\n")
+                .withPresented(new CaseResult.Presented("fuzzylite", org.fclcert.harness.PresentedStatus.FAILED,
+                        "step 1 of 1: y = 60.0 where 100.0 is expected", List.of(), new CaseResult.Evidence(
+                        new CaseResult.Step(1, java.util.Map.of("x", 0.5)), new CaseResult.Mismatch.Outputs(
+                        java.util.Map.of("y", 100.0), java.util.Map.of("y", 60.0)), null, 40.0, trace), "text"));
+        Report r = ReportBuilder.build(Results.header(1, List.of(rejected), List.of()).presentedAs("fuzzylite"),
+                List.of(rejected), List.of(), List.of(), java.time.Instant.EPOCH);
+        String html = HtmlReport.render(r);
+        assertTrue(html.contains("<p><b>Semantic axis</b> (written in fuzzylite's layout): <span class=\"st failed\">"
+                + "failed</span> step 1 of 1: y = 60.0 where 100.0 is expected</p>"), html);
+        assertTrue(html.contains("<li>rules fired: RULE 1 at 0.5 → y IS hi</li>"));
+        assertTrue(html.contains("<title>B-COGS-001 (fuzzylite layout), step 1: accumulated set of y</title>"), html);
+        assertTrue(MarkdownReport.render(r).contains("    - y = 100, defuzzified from the singletons 100 (degree 0.5)"),
+                MarkdownReport.render(r));
+    }
+
     private static int count(String text, String what) {
         int n = 0;
         for (int i = text.indexOf(what); i >= 0; i = text.indexOf(what, i + 1)) {

@@ -7,8 +7,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import java.util.List;
 import org.fclcert.check.Analysis;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.LoadedProgram;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Program;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.FclReader;
 import org.fclcert.syntax.StrictReader;
 import org.fclcert.syntax.dialect.Dialect;
@@ -21,7 +27,8 @@ import org.fclcert.write.StandardConversion;
  * exception": a reader returns diagnostics and never throws nor reports an internal error (FCL-S999);
  * what the strict reader and the checks accept is written by fmt as text that reads back clean to the
  * same model (so it evaluates identically) and is a fixed point; what a dialect reader accepts converts
- * to a program that reads back strictly without errors. {@code mvn verify} replays the committed inputs
+ * to a program that reads back strictly without errors and, where convert says it is exact, evaluates like the
+ * source. {@code mvn verify} replays the committed inputs
  * under {@code src/test/resources/org/fclcert/robust/ReaderFuzzTestInputs/<method>/}; how to fuzz for a
  * budget is in docs/fuzzing-readers.md.
  */
@@ -66,11 +73,74 @@ class ReaderFuzzTest {
         if (a.program().isEmpty() || a.hasErrors()) {
             return;
         }
-        Program converted = new StandardConversion().convert(a.program().get()).program();
-        String standard = new CanonicalWriter().write(converted);
+        StandardConversion.Result conversion = new StandardConversion().convert(a.program().get());
+        String standard = new CanonicalWriter().write(conversion.program());
         Analysis back = Analysis.analyze(new StrictReader(), "converted.fcl", standard);
         assertFalse(back.hasErrors(), () -> dialect + ": converted program is not valid standard FCL: "
                 + back.diagnostics() + "\n" + standard);
+        if (conversion.exact()) {
+            assertEvaluatesAlike(a.program().get(), back.program().orElseThrow(), standard);
+        }
+    }
+
+    /** Inputs every input of the first block is set to, in turn: in and out of typical ranges, on term corners. */
+    private static final double[] PROBES = {-1, 0, 0.25, 0.5, 1, 2.5, 10, 100};
+
+    /**
+     * The first function block of both programs, fed the same inputs in the same order, fails alike or gives the
+     * same outputs (within 1e-9, relative): what convert says is exact must evaluate like the source.
+     */
+    private static void assertEvaluatesAlike(Program source, Program converted, String text) {
+        LoadedProgram a = Evaluator.load(source);
+        LoadedProgram b = Evaluator.load(converted);
+        FunctionBlockInstance x = a.newInstance();
+        FunctionBlockInstance y = b.newInstance();
+        List<Variable> inputs = source.functionBlocks().get(0).variables(VariableKind.INPUT);
+        List<Variable> outputs = source.functionBlocks().get(0).variables(VariableKind.OUTPUT);
+        for (double v : PROBES) {
+            String left = outcome(x, inputs, outputs, v);
+            String right = outcome(y, inputs, outputs, v);
+            assertTrue(alike(left, right), () -> "at " + v + ": the source gives " + left + ", the conversion "
+                    + right + "\n" + text);
+        }
+    }
+
+    private static String outcome(FunctionBlockInstance fb, List<Variable> inputs, List<Variable> outputs, double v) {
+        try {
+            for (Variable in : inputs) {
+                fb.set(in.name(), v);
+            }
+            fb.evaluate();
+            StringBuilder sb = new StringBuilder();
+            for (Variable out : outputs) {
+                sb.append(fb.get(out.name())).append(' ');
+            }
+            return sb.toString();
+        } catch (EvaluationException e) {
+            return "refused";
+        }
+    }
+
+    private static boolean alike(String left, String right) {
+        String[] l = left.split(" ");
+        String[] r = right.split(" ");
+        if (l.length != r.length) {
+            return false;
+        }
+        for (int i = 0; i < l.length; i++) {
+            if (l[i].equals(r[i])) {
+                continue;
+            }
+            if (l[i].equals("refused") || r[i].equals("refused")) {
+                return false;
+            }
+            double p = Double.parseDouble(l[i]);
+            double q = Double.parseDouble(r[i]);
+            if (!(Math.abs(p - q) <= 1e-9 * Math.max(1, Math.abs(p)))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static void assertNoInternalError(List<Diagnostic> diagnostics) {

@@ -209,6 +209,31 @@ class DialectWritersTest {
                 && d.location().line() == 9 && d.message().contains("no OR")), ffll.notExpressible().toString());
     }
 
+
+    /**
+     * fuzzylite's Einstein ACT/ACCU and Tsukamoto's method: its writer says them (read back, equal on the grid);
+     * jFuzzyLogic and FFLL cannot, and name each loss where it was written.
+     */
+    @Test
+    void otherNormsAndTsukamotoAreFuzzyliteOnly() throws Exception {
+        String text = Files.readString(Path.of("src/test/resources/org/fclcert/syntax/dialect/fuzzylite/einstein-tsukamoto.fcl"));
+        Analysis a = Analysis.analyze(DialectReaders.reader(Dialect.FUZZYLITE), "m.fcl", text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        Written fl = DialectWriters.writer(Dialect.FUZZYLITE).write(p);
+        assertTrue(fl.exact(), fl.notExpressible()::toString);
+        assertTrue(fl.text().contains("  ACT : EPROD;\n") && fl.text().contains("  ACCU : ESUM;\n")
+                && fl.text().contains("  TERM open := Sigmoid 0.5 12.0;\n"), fl.text());
+        RoundTrip rt = DialectWriters.readBackAndCompare(p, fl);
+        assertTrue(rt.equal(), rt.summary());
+        for (Dialect d : List.of(Dialect.JFUZZYLOGIC, Dialect.FFLL)) {
+            Written w = DialectWriters.writer(d).write(p);
+            List<Diagnostic> lost = w.notExpressible();
+            assertTrue(lost.stream().anyMatch(x -> x.code().equals("FCL-X107") && x.location().line() == 33), d + " " + lost);
+            assertTrue(lost.stream().anyMatch(x -> x.code().equals("FCL-X108") && x.location().line() == 20), d + " " + lost);
+            assertTrue(lost.stream().anyMatch(x -> x.code().equals("FCL-X110") && x.location().line() == 27), d + " " + lost);
+        }
+    }
+
     @Test
     void strictHasNoLibraryWriter() {
         assertThrows(IllegalArgumentException.class, () -> DialectWriters.writer(Dialect.STRICT));

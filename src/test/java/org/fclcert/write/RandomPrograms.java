@@ -93,7 +93,7 @@ final class RandomPrograms {
 
     private RuleBlock ruleBlock() {
         return new RuleBlock(name("rb"), optional(0.7, () -> pick(Arrays.stream(AndAlgorithm.values()).filter(AndAlgorithm::standard).toArray(AndAlgorithm[]::new))),
-                optional(0.4, () -> pick(Arrays.stream(OrAlgorithm.values()).filter(OrAlgorithm::standard).toArray(OrAlgorithm[]::new))), optional(0.4, () -> pick(ActivationMethod.values())),
+                optional(0.4, () -> pick(Arrays.stream(OrAlgorithm.values()).filter(OrAlgorithm::standard).toArray(OrAlgorithm[]::new))), optional(0.4, () -> pick(Arrays.stream(ActivationMethod.values()).filter(ActivationMethod::standard).toArray(ActivationMethod[]::new))),
                 optional(0.8, () -> pick(Arrays.stream(AccumulationMethod.values()).filter(AccumulationMethod::standard).toArray(AccumulationMethod[]::new))), list(0, 5, this::rule), AT);
     }
 

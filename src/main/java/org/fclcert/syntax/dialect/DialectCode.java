@@ -71,7 +71,7 @@ public enum DialectCode implements DiagnosticCode {
     NAMES_DIFFER_IN_CASE("FCL-W303", Severity.WARNING, "IEC 61131-3 B.1.1",
             "two spellings of one name that differ only in case: one name in FCL, two in jFuzzyLogic"),
     SUPPLIED_SETTING("FCL-W304", Severity.WARNING, "5.2.3, 5.2.4",
-            "a setting left out that the library supplies (jFuzzyLogic: ACCU SUM, METHOD CoG, DEFAULT NC)"),
+            "a setting left out that the library supplies (jFuzzyLogic: ACCU SUM, METHOD CoG, DEFAULT NC, AND MIN)"),
     LOCK_PREVIOUS("FCL-W305", Severity.WARNING, "5.2.3",
             "LOCK : PREVIOUS read as DEFAULT NC: before the first result fclcert gives the initial value"),
     COGS_PER_RULE("FCL-W306", Severity.WARNING, "Table 5",
@@ -80,15 +80,21 @@ public enum DialectCode implements DiagnosticCode {
             "the library computes NSUM as BSUM; fclcert normalises (Table 5)"),
     TOLERATED("FCL-W308", Severity.WARNING, "5.4",
             "a construct the library tolerates and the standard does not (text after END_FUNCTION_BLOCK, a block"
-                    + " name that is no identifier, AND/OR outside the pairs of Table 3); read as the library reads it"),
+                    + " name that is no identifier, a repeated rule name, AND/OR outside the pairs of Table 3); read as"
+                    + " the library reads it"),
     IMPLIED_RANGE("FCL-W309", Severity.WARNING, "5.2.3",
             "an output without RANGE that needs one: the library defuzzifies over the span of its terms, read as that"
                     + " RANGE"),
     WEIGHT_BEFORE_ACTIVATION("FCL-W310", Severity.WARNING, "5.2.4",
             "fuzzylite multiplies a rule's degree by its WITH weight before activation (and hedges); fclcert weighs"
-                    + " the activated set, which differs under ACT MIN on fuzzy-set outputs"),
+                    + " the activated set, which differs under any ACT but PROD on fuzzy-set outputs"),
     FIRST_PLATEAU("FCL-W311", Severity.WARNING, "Table 10",
-            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point");
+            "fuzzylite's MM takes the middle of the first plateau of maximum; fclcert the mean of every maximal point"),
+    TSUKAMOTO_INVERSE("FCL-W312", Severity.WARNING, "Table 10",
+            "fuzzylite 6.0 inverts SShape, ZShape and Concave terms wrongly in Tsukamoto's method; fclcert exactly"),
+    OUTPUT_AT_START("FCL-W313", Severity.WARNING, "5.2.4",
+            "jFuzzyLogic reads an output in a condition at its value when the evaluation begins (its DEFAULT), so rule"
+                    + " blocks do not chain; read so");
 
     private final String code;
     private final Severity severity;

@@ -20,6 +20,7 @@ import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
 import org.fclcert.model.Literal;
 import org.fclcert.model.Located;
+import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
@@ -39,10 +40,12 @@ import org.fclcert.syntax.dialect.DialectLexer.Token;
  * of the grammar they share, asking its {@link LibraryDialect} wherever they differ. Builds the model
  * directly, records every non-standard construct as an Open Level feature where it was written, and
  * reports every mistake as a located diagnostic; after an error it skips to the end of the statement.
- * Every loop consumes a token or stops, so no text makes it hang. Rules are read by {@link DialectRuleParser}.
+ * Every loop consumes a token or stops, so no text makes it hang. Rules are read by {@link DialectRuleParser},
+ * terms by {@link DialectTermParser}; what remains here (a little over 700 lines) is the grammar of blocks,
+ * declarations and settings the libraries share, which reads best in one place.
  */
 final class DialectParser {
-    static final int MAX_ERRORS = 25;   // also FfllModel's cap
+    static final int MAX_ERRORS = org.fclcert.model.Limits.MAX_ERRORS_PER_FILE;   // also FfllModel's cap
     static final int MAX_NESTING = 200;
 
     final LibraryDialect dialect;
@@ -110,6 +113,8 @@ final class DialectParser {
     final List<RuleBlock> ruleBlocks = new ArrayList<>();
     /** The DEFUZZIFY blocks as read, with what the model does not hold (fuzzylite ACCU, COGS places). */
     final List<Output> outputs = new ArrayList<>();
+    /** The variable of the FUZZIFY or DEFUZZIFY block being read. */
+    String openBlock = "";
     /** jFuzzyLogic: ranges written after a declaration, by variable key. */
     final java.util.Map<String, Range> declaredRanges = new java.util.HashMap<>();
 
@@ -118,8 +123,12 @@ final class DialectParser {
         this.dialect = dialect;
         this.library = dialect.library();
         this.tokens = lexer.tokens;
+        // after the last END_FUNCTION_BLOCK the libraries read nothing, characters they could not lex included
+        Token end = tokens.stream().filter(t -> t.is("END_FUNCTION_BLOCK")).reduce((a, b) -> b).orElse(null);
         for (DialectLexer.Problem pr : lexer.problems) {
-            error(pr.line(), pr.column(), pr.code(), pr.message());
+            if (end == null || pr.line() < end.line() || pr.line() == end.line() && pr.column() < end.column()) {
+                error(pr.line(), pr.column(), pr.code(), pr.message());
+            }
         }
         for (DialectLexer.Comment c : lexer.comments) {
             features.add(new FeatureUse(Feature.O_COMMENT_STYLE, at(c.line(), c.column())));
@@ -463,6 +472,7 @@ final class DialectParser {
     private void fuzzify() {
         Token start = expectKeyword("FUZZIFY");
         String variable = name();
+        openBlock = variable;
         List<Term> terms = new ArrayList<>();
         Optional<Range> declaredRange = Optional.empty();
         while (!stopped) {
@@ -488,7 +498,8 @@ final class DialectParser {
                 next();
             }
         }
-        fuzzifications.add(new Fuzzification(variable, terms, at(start), declaredRange));
+        fuzzifications.add(new Fuzzification(variable, Repeated.terms(this, variable, terms, dialect.firstOfRepeatedTerms()),
+                at(start), declaredRange));
     }
 
     /** Whether the block ends at t: at its {@code end} keyword (consumed), or where that is missing (reported). */
@@ -533,6 +544,7 @@ final class DialectParser {
     private void defuzzify() {
         Token start = expectKeyword("DEFUZZIFY");
         Output out = new Output(name(), at(start));
+        openBlock = out.variable;
         while (!stopped) {
             Token t = peek();
             int from = p;
@@ -558,6 +570,9 @@ final class DialectParser {
                 next();
             }
         }
+        List<Term> distinct = new ArrayList<>(Repeated.terms(this, out.variable, out.terms, dialect.firstOfRepeatedTerms()));
+        out.terms.clear();
+        out.terms.addAll(distinct);
         dialect.finishOutput(this, out);
         outputs.add(out);
         defuzzifications.add(new Defuzzification(out.variable, out.range, out.terms, out.method, out.defaultValue,
@@ -656,7 +671,13 @@ final class DialectParser {
                     block.or = Optional.of(new Located<>(algorithm(OrAlgorithm.class, dialect.orNames()), at(t)));
                     block.lastOperator = "OR";
                 } else if (isKeyword(t, "ACT")) {
-                    block.act = Optional.of(new Located<>(algorithm(ActivationMethod.class, "MIN, PROD"), at(t)));
+                    Token w = peek(2);
+                    ActivationMethod act = algorithm(ActivationMethod.class, dialect.activationNames());
+                    if (!act.standard() && !dialect.otherActivations()) {
+                        error(w, DialectCode.UNSUPPORTED, "'" + w.text() + "' is not an algorithm " + library
+                                + " reads for ACT (" + dialect.activationNames() + ")");
+                    }
+                    block.act = Optional.of(new Located<>(act, at(t)));
                 } else if (isKeyword(t, "ACCU")) {
                     block.accu = accumulation();
                 } else if (isKeyword(t, "RULE")) {
@@ -675,9 +696,11 @@ final class DialectParser {
             }
         }
         dialect.finishRuleBlock(this, block);
-        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu, block.rules,
+        ruleBlocks.add(new RuleBlock(block.name, block.and, block.or, block.act, block.accu,
+                Repeated.rules(this, rules.relabelled(block.rules)),
                 block.start));
     }
+
 
     private <E extends Enum<E>> E algorithm(Class<E> type, String allowed) {
         Token kw = next();

@@ -22,6 +22,8 @@ final class DialectRuleParser {
     private final LibraryDialect dialect;
     /** For one-line dialects: the line the current rule is on; tokens on later lines end it. 0 outside rules. */
     private int ruleLine;
+    /** Rules of the current block labelled by a number that is no rule number of the standard, with the label. */
+    private final java.util.Map<Rule, Token> oddLabels = new java.util.IdentityHashMap<>();
 
     DialectRuleParser(DialectParser parser) {
         this.p = parser;
@@ -69,9 +71,11 @@ final class DialectRuleParser {
         try {
             Token n = ruleToken();
             String ruleName;
+            Token oddLabel = null;
             if (n != null && n.kind() == Kind.NUMBER) {
                 p.next();
                 ruleName = n.text().replaceFirst("^[+]?0*(?=\\d)", "");
+                oddLabel = ruleName.matches("\\d+") ? null : n;
             } else if (n != null && n.kind() == Kind.WORD) {
                 ruleName = p.next().text();
             } else {
@@ -96,10 +100,52 @@ final class DialectRuleParser {
             } else {
                 throw p.fail(end, "';' at the end of the rule");
             }
-            return new Rule(ruleName, condition, conclusion, p.at(kw));
+            Rule rule = new Rule(ruleName, condition, conclusion, p.at(kw));
+            if (oddLabel != null) {
+                oddLabels.put(rule, oddLabel);
+            }
+            return rule;
         } finally {
             ruleLine = 0;
         }
+    }
+
+    /**
+     * The block's rules, those labelled by a number other than an unsigned integer ({@code RULE 1.5},
+     * {@code 1.0E2}, {@code -3}, {@code 1e309}) given the smallest rule number no other rule of the block uses.
+     * jFuzzyLogic's grammar takes any of its numbers as a rule's label and keeps it as text, fuzzylite skips the
+     * label: to both it only names the rule, so renumbering changes no meaning, and the standard's rule number
+     * (5.4) is what fmt and convert can write.
+     */
+    List<Rule> relabelled(List<Rule> rules) {
+        if (oddLabels.isEmpty()) {
+            return rules;
+        }
+        java.util.Set<java.math.BigInteger> used = new java.util.HashSet<>();
+        for (Rule r : rules) {
+            if (!oddLabels.containsKey(r) && r.name().matches("\\d+")) {
+                used.add(new java.math.BigInteger(r.name()));
+            }
+        }
+        List<Rule> out = new ArrayList<>(rules.size());
+        java.math.BigInteger next = java.math.BigInteger.ONE;
+        for (Rule r : rules) {
+            Token label = oddLabels.get(r);
+            if (label == null) {
+                out.add(r);
+                continue;
+            }
+            while (used.contains(next)) {
+                next = next.add(java.math.BigInteger.ONE);
+            }
+            used.add(next);
+            p.warn(p.at(label), DialectCode.TOLERATED, p.library + " takes any number as a rule's label ('RULE "
+                    + label.text() + "'), where the standard numbers rules with unsigned integers (5.4); the label"
+                    + " only names the rule: read as RULE " + next);
+            out.add(new Rule(next.toString(), r.condition(), r.conclusion(), r.location()));
+        }
+        oddLabels.clear();
+        return out;
     }
 
     private Condition orCondition(int depth) {

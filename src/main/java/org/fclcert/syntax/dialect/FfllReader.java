@@ -89,19 +89,22 @@ public final class FfllReader implements DialectReader {
         List<FeatureUse> uses = new ArrayList<>(result.program().map(Program::dialectFeatures).orElse(tokens.features()));
         uses.addAll(tokens.momMethods());
         uses.sort(Comparator.comparing(FeatureUse::location));
-        return uses.stream().map(u -> new Giveaway(construct(u.feature()), u.location().line(), weight(u.feature())))
-                .toList();
+        // FFLL loads no program without RANGE comments (FCL-D118): then what is merely left out (METHOD, DEFAULT,
+        // a block name), which jFuzzyLogic's users leave out too, is no sign of FFLL
+        boolean ranged = uses.stream().anyMatch(u -> u.feature() == Feature.O_RANGE_COMMENT);
+        return uses.stream().filter(u -> ranged || weight(u.feature()) > 1)
+                .map(u -> new Giveaway(construct(u.feature()), u.location().line(), weight(u.feature()))).toList();
     }
 
     /**
      * How specific an FFLL construct is: ACCUM, term-only rules, output terms in FUZZIFY, END_FUZZIFY closing
-     * DEFUZZIFY and RANGE comments only FFLL writes (3); a declaration without ':' and RETAIN are rarer slips (2);
-     * what is merely missing (DEFAULT, METHOD) or MoM, which other libraries write too, weighs 1.
+     * DEFUZZIFY, RANGE comments and ': =' only FFLL writes (3); a declaration without ':' and RETAIN are rarer slips
+     * (2); what is merely missing (DEFAULT, METHOD, a block name) or MoM, which other libraries write too, weighs 1.
      */
     private static int weight(Feature f) {
         return switch (f) {
             case O_ACCUM, O_FFLL_TERM_ONLY_CONDITION, O_FFLL_TERM_ONLY_CONCLUSION, O_FFLL_OUTPUT_FUZZIFY, O_END_FUZZIFY,
-                    O_RANGE_COMMENT -> 3;
+                    O_RANGE_COMMENT, O_SPACED_ASSIGN -> 3;
             case O_DECLARATION_WITHOUT_COLON, O_VAR_RETAIN -> 2;
             default -> 1;
         };
@@ -155,6 +158,8 @@ public final class FfllReader implements DialectReader {
             case O_DECLARATION_WITHOUT_COLON -> "declaration without ':'";
             case O_VAR_RETAIN -> "RETAIN";
             case O_MOM -> "METHOD: MoM";
+            case O_UNNAMED_BLOCK -> "FUNCTION_BLOCK without a name";
+            case O_SPACED_ASSIGN -> "': ='";
             default -> f.id();
         };
     }

@@ -30,7 +30,9 @@ import org.fclcert.syntax.ReaderOptions;
  *   <li>{@code VAR_INPUT RETAIN} / {@code NON_RETAIN}: the qualifier is dropped (O-VAR-RETAIN);</li>
  *   <li>{@code (* RANGE(lo .. hi) *)} in a declaration is kept as that variable's range (O-RANGE-COMMENT);
  *       a declaration without one gets FCL-D118 (FFLL does not load it);</li>
- *   <li>END_FUZZIFY closing a DEFUZZIFY is recorded (O-END-FUZZIFY; the builder accepts it).</li>
+ *   <li>END_FUZZIFY closing a DEFUZZIFY is recorded (O-END-FUZZIFY; the builder accepts it);</li>
+ *   <li>{@code FUNCTION_BLOCK} without a name gets the name {@code function_block} (O-UNNAMED-BLOCK), and
+ *       {@code : =} becomes {@code :=} (O-SPACED-ASSIGN), as FFLL's API sample writes them.</li>
  * </ul>
  */
 final class FfllTokens implements ReaderOptions.TokenFilter {
@@ -108,6 +110,30 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                 case FclLexer.FUNCTION_BLOCK -> {
                     fbRanges = new HashMap<>();
                     ranges.add(fbRanges);
+                    Token next = next(tokens, i);
+                    if (next != null && next.getType() != FclLexer.IDENT && next.getType() != FclLexer.ANY) {
+                        // FFLL's API sample: FUNCTION_BLOCK without a name; read as 'function_block'
+                        features.add(new FeatureUse(Feature.O_UNNAMED_BLOCK, report.at(t)));
+                        out.add(t);
+                        CommonToken name = new CommonToken(t);
+                        name.setType(FclLexer.IDENT);
+                        name.setText("function_block");
+                        out.add(name);
+                        continue;
+                    }
+                }
+                case FclLexer.COLON -> {
+                    Token next = next(tokens, i);
+                    if (next != null && next.getType() == FclLexer.EQUALS) {
+                        // FFLL's API sample: TERM x : = (...), the ':=' with a blank inside
+                        features.add(new FeatureUse(Feature.O_SPACED_ASSIGN, report.at(t)));
+                        CommonToken assign = new CommonToken(t);
+                        assign.setType(FclLexer.ASSIGN);
+                        assign.setText(":=");
+                        out.add(assign);
+                        i = tokens.indexOf(next);
+                        continue;
+                    }
                 }
                 case FclLexer.OPTIONS, FclLexer.OPTION -> inOptions = true;
                 case FclLexer.VAR_INPUT, FclLexer.VAR_OUTPUT, FclLexer.VAR -> {

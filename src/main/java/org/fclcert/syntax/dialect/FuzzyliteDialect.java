@@ -23,7 +23,9 @@ import org.fclcert.model.Names;
 import org.fclcert.model.Point;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
+import org.fclcert.model.ShapeKind;
 import org.fclcert.model.SourceLocation;
+import org.fclcert.model.Term;
 import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
@@ -182,8 +184,22 @@ class FuzzyliteDialect extends LibraryDialect {
             case "NSUM" -> AccumulationMethod.NSUM;
             case "SUM" -> AccumulationMethod.SUM;
             case "ASUM" -> AccumulationMethod.PROBOR;
+            case "ESUM" -> AccumulationMethod.ESUM;
+            case "HSUM" -> AccumulationMethod.HSUM;
+            case "DSUM" -> AccumulationMethod.DSUM;
+            case "NMAX" -> AccumulationMethod.NMAX;
             default -> null;
         });
+    }
+
+    @Override
+    boolean otherActivations() {
+        return true;
+    }
+
+    @Override
+    String activationNames() {
+        return "MIN, PROD, BDIF, EPROD, HPROD, DPROD, NMIN";
     }
 
     @Override
@@ -203,7 +219,7 @@ class FuzzyliteDialect extends LibraryDialect {
 
     @Override
     String accumulationNames() {
-        return "MAX, BSUM, NSUM, ASUM, SUM";
+        return "MAX, BSUM, NSUM, ASUM, SUM, ESUM, HSUM, DSUM, NMAX";
     }
 
     @Override
@@ -326,12 +342,78 @@ class FuzzyliteDialect extends LibraryDialect {
 
     @Override
     void finishOutput(DialectParser p, DialectParser.Output out) {
+        tsukamoto(p, out);
+        emptyRangeOfAWeightedAverage(p, out);
         if (out.keepPrevious != null) {
             p.warn(out.keepPrevious, DialectCode.LOCK_PREVIOUS, "keeping the previous value is read as DEFAULT NC:"
                     + " fuzzylite keeps the previous result but gives the DEFAULT before the first one, fclcert the"
                     + " initial value (0)");
             out.defaultValue = Optional.of(new DefaultValue.NoChange(out.keepPrevious));
         }
+    }
+
+    /**
+     * fuzzylite's weighted averages infer their kind from the output's first term: a monotonic shape (Ramp,
+     * Sigmoid, SShape, ZShape, Concave) makes COGS Tsukamoto's method, each term inverted at its degree. Read as
+     * {@link DefuzzificationMethod#TSUKAMOTO} when every term is monotonic; fuzzylite's 6.0 inverses of SShape,
+     * ZShape and Concave are wrong on part of their range (fixed in 7), which FCL-W312 says at the term.
+     */
+    private static void tsukamoto(DialectParser p, DialectParser.Output out) {
+        if (out.method.isEmpty() || out.terms.isEmpty() || !monotonicShape(out.terms.get(0))) {
+            return;
+        }
+        Located<DefuzzificationMethod> m = out.method.get();
+        if (m.value() != DefuzzificationMethod.COGS) {
+            if (m.value() == DefuzzificationMethod.COGSS) {
+                p.error(m.location().line(), m.location().column(), DialectCode.UNSUPPORTED, "COGSS on the monotonic"
+                        + " terms of '" + out.variable + "' is fuzzylite's weighted sum of Tsukamoto points, which"
+                        + " fclcert does not evaluate (COGS, their weighted average, it does)");
+            }
+            return;
+        }
+        for (Term t : out.terms) {
+            if (!monotonicShape(t)) {
+                p.error(t.location().line(), t.location().column(), DialectCode.UNSUPPORTED, "term '" + t.name()
+                        + "' of '" + out.variable + "' is not monotonic: fuzzylite's COGS here is Tsukamoto's method"
+                        + " (its first term is monotonic), which inverts every term at its degree");
+                return;
+            }
+        }
+        out.method = Optional.of(new Located<>(DefuzzificationMethod.TSUKAMOTO, m.location()));
+        List<String> wrong = new ArrayList<>();
+        for (Term t : out.terms) {
+            ShapeKind k = ((MembershipFunction.NamedShape) t.function()).kind();
+            if (k == ShapeKind.S_SHAPE || k == ShapeKind.Z_SHAPE || k == ShapeKind.CONCAVE) {
+                wrong.add("'" + t.name() + "'");
+            }
+        }
+        if (!wrong.isEmpty()) {
+            p.warn(m.location(), DialectCode.TSUKAMOTO_INVERSE, "fuzzylite 6.0 inverts SShape (above degree 0.5),"
+                    + " ZShape (below 0.5) and Concave terms wrongly in Tsukamoto's method (fixed in fuzzylite 7), here "
+                    + String.join(", ", wrong) + " of '" + out.variable + "'; fclcert inverts them exactly");
+        }
+    }
+
+    /**
+     * {@code RANGE := (0 .. 0)} on an output defuzzified by a weighted average of singletons or Takagi–Sugeno terms
+     * (fuzzylite's importer of Matlab files writes it): fuzzylite never uses that RANGE, the standard wants min &lt;
+     * max (FCL-C023). Read without it, with FCL-W308.
+     */
+    private static void emptyRangeOfAWeightedAverage(DialectParser p, DialectParser.Output out) {
+        boolean average = out.method.map(m -> m.value() == DefuzzificationMethod.COGS
+                || m.value() == DefuzzificationMethod.COGSS).orElse(false);
+        if (average && out.range.isPresent() && !(out.range.get().min().value() < out.range.get().max().value())
+                && out.terms.stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton
+                        || t.function() instanceof MembershipFunction.Computed)) {
+            p.warn(out.range.get().location(), DialectCode.TOLERATED, "RANGE of '" + out.variable + "' is empty:"
+                    + " fuzzylite's weighted average never uses it, so it is left out; the standard wants the minimum"
+                    + " below the maximum (5.2.3)");
+            out.range = Optional.empty();
+        }
+    }
+
+    private static boolean monotonicShape(Term t) {
+        return t.function() instanceof MembershipFunction.NamedShape s && s.kind().monotonic();
     }
 
     @Override
@@ -358,21 +440,24 @@ class FuzzyliteDialect extends LibraryDialect {
     /** FCL-W310 at each weighted rule whose weight fclcert applies after ACT MIN to a fuzzy-set output. */
     private static void weights(DialectParser p, FunctionBlock fb) {
         for (RuleBlock rb : fb.ruleBlocks()) {
-            boolean min = rb.activation().map(a -> a.value() == org.fclcert.model.ActivationMethod.MIN).orElse(true);
+            // fuzzylite activates by T(term, weight x degree): the same as fclcert's weight x T(term, degree) for PROD only
+            boolean notProd = rb.activation().map(a -> a.value() != org.fclcert.model.ActivationMethod.PROD).orElse(true);
+            String act = rb.activation().map(a -> a.value().name()).orElse("MIN");
             for (Rule r : rb.rules()) {
                 for (Subconclusion s : r.conclusion()) {
                     boolean weighted = s.weight().map(w -> !(w instanceof Literal l) || l.value() != 1).orElse(false);
-                    boolean fuzzySet = fb.defuzzification(s.variable()).map(d -> d.terms().stream().anyMatch(t ->
+                    boolean fuzzySet = fb.defuzzification(s.variable()).map(d -> d.method().map(m -> m.value()
+                            != DefuzzificationMethod.TSUKAMOTO).orElse(true) && d.terms().stream().anyMatch(t ->
                             !(t.function() instanceof MembershipFunction.Singleton)
                                     && !(t.function() instanceof MembershipFunction.Computed))).orElse(false);
                     if (weighted && !s.hedges().isEmpty()) {
                         p.warn(s.location(), DialectCode.WEIGHT_BEFORE_ACTIVATION, "rule " + r.name() + ": fuzzylite"
                                 + " hedges the weighted degree of '" + s.variable() + "', h(weight x degree); fclcert"
                                 + " weighs the hedged degree, weight x h(degree), so the results differ");
-                    } else if (min && weighted && fuzzySet) {
+                    } else if (notProd && weighted && fuzzySet) {
                         p.warn(s.location(), DialectCode.WEIGHT_BEFORE_ACTIVATION, "rule " + r.name() + ": fuzzylite"
-                                + " activates '" + s.variable() + "' by MIN(term, weight x degree); fclcert weighs the"
-                                + " activated set, weight x MIN(term, degree), so the results differ");
+                                + " activates '" + s.variable() + "' by " + act + "(term, weight x degree); fclcert"
+                                + " weighs the activated set, weight x " + act + "(term, degree), so the results differ");
                     }
                 }
             }
@@ -391,7 +476,8 @@ class FuzzyliteDialect extends LibraryDialect {
             for (Rule r : rb.rules()) {
                 walk(r.condition(), c -> {
                     if (c instanceof org.fclcert.model.Condition.TermSubcondition t && !t.any()
-                            && outputs.contains(Names.key(t.variable()))) {
+                            && outputs.contains(Names.key(t.variable())) && fb.defuzzification(t.variable())
+                            .map(d -> d.terms().stream().anyMatch(x -> Names.same(x.name(), t.term()))).orElse(false)) {
                         p.feature(Feature.O_OUTPUT_CONDITION, t.location());
                     }
                 });
@@ -413,8 +499,8 @@ class FuzzyliteDialect extends LibraryDialect {
     }
 
     private static boolean weightedAverage(DialectParser.Output o) {
-        return o.method.map(m -> m.value() == DefuzzificationMethod.COGS || m.value() == DefuzzificationMethod.COGSS)
-                .orElse(false);
+        return o.method.map(m -> m.value() == DefuzzificationMethod.COGS || m.value() == DefuzzificationMethod.COGSS
+                || m.value() == DefuzzificationMethod.TSUKAMOTO).orElse(false);
     }
 
     /**
@@ -461,7 +547,7 @@ class FuzzyliteDialect extends LibraryDialect {
     /** FCL-W306 when a term of a weighted-average output is concluded by several rules and not summed. */
     private static void cogsPerRule(DialectParser p, FunctionBlock fb) {
         for (DialectParser.Output o : p.outputs) {
-            if (!weightedAverage(o) || o.method.get().value() != DefuzzificationMethod.COGS) {
+            if (!weightedAverage(o) || o.method.get().value() == DefuzzificationMethod.COGSS) {
                 continue;
             }
             Map<String, Integer> count = new HashMap<>();
@@ -479,8 +565,9 @@ class FuzzyliteDialect extends LibraryDialect {
             if (!summed && count.values().stream().anyMatch(c -> c > 1)) {
                 SourceLocation at = o.method.get().location();
                 p.warn(at, DialectCode.COGS_PER_RULE, "fuzzylite's COGS counts every rule's degree"
-                        + " separately; here a term is concluded by several rules, so fuzzylite's result differs from"
-                        + " fclcert's (which accumulates per term first, Table 5)");
+                        + " separately" + (o.method.get().value() == DefuzzificationMethod.TSUKAMOTO ? " (and inverts"
+                        + " each term at each rule's degree)" : "") + "; here a term is concluded by several rules, so"
+                        + " fuzzylite's result differs from fclcert's (which accumulates per term first, Table 5)");
             }
         }
     }

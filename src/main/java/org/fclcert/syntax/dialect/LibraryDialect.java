@@ -88,6 +88,30 @@ abstract class LibraryDialect {
         return upper;
     }
 
+    /** Whether a point or a linear shape's parameter may be a variable's name (jFuzzyLogic, as the standard: 5.2.2). */
+    boolean variablesAsPoints() {
+        return false;
+    }
+
+    /** Which of several terms of one name the library uses: the first (fuzzylite), else the last (jFuzzyLogic). */
+    boolean firstOfRepeatedTerms() {
+        return true;
+    }
+
+    /** A variable's name written as a point or parameter ({@link #variablesAsPoints()}). */
+    void pointVariable(DialectParser p, Token name) {
+    }
+
+    /** Whether ACT takes t-norms outside Table 4 (fuzzylite: BDIF, EPROD, HPROD, DPROD, NMIN). */
+    boolean otherActivations() {
+        return false;
+    }
+
+    /** The ACT algorithms the dialect names, for messages. */
+    String activationNames() {
+        return "MIN, PROD";
+    }
+
     /** The AND and OR algorithms the dialect names, for messages. */
     abstract String andNames();
 

@@ -181,4 +181,50 @@ class FfllReaderTest {
                 .map(Diagnostic::code).collect(Collectors.toSet()));
         assertTrue(ffll.diagnostics().stream().noneMatch(Diagnostic::isError));
     }
+    /**
+     * FFLL's API sample writes FUNCTION_BLOCK without a name and ': =' with a blank inside: read as 'function_block' and
+     * ':=' (O-UNNAMED-BLOCK, O-SPACED-ASSIGN); a DEFUZZIFY of a variable never declared stays the standard's error.
+     */
+    @Test
+    void theApiSamplesUnnamedBlockAndSpacedAssign() throws EvaluationException {
+        String text = """
+                FUNCTION_BLOCK
+                VAR_INPUT
+                  good REAL; (* RANGE(0 .. 10) *)
+                END_VAR
+                VAR_OUTPUT
+                  fight REAL; (* RANGE(0 .. 10) *)
+                END_VAR
+                FUZZIFY good
+                  TERM yes : = (0, 0) (5, 1) (10, 1);
+                END_FUZZIFY
+                FUZZIFY fight
+                  TERM hard : = (0, 0) (10, 1) (10, 0);
+                END_FUZZIFY
+                DEFUZZIFY fight
+                  METHOD: CoG;
+                END_DEFUZZIFY
+                RULEBLOCK first
+                  AND: MIN;
+                  ACCUM: MAX;
+                  RULE 1: IF yes THEN hard;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = Analysis.analyze(new FfllReader(), "api.fcl", text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        assertEquals("function_block", p.functionBlocks().get(0).name());
+        List<String> uses = p.dialectFeatures().stream().map(FfllReaderTest::at).toList();
+        assertTrue(uses.containsAll(List.of("O-UNNAMED-BLOCK@1:1", "O-SPACED-ASSIGN@9:12", "O-SPACED-ASSIGN@12:13")),
+                uses::toString);
+        // good = 2.5: yes 0.5 clips the ramp (0, 0) (10, 1) at 0.5 over [0, 10] (its vertical edge at 10):
+        // area 5·0.5/2 + 5·0.5 = 3.75, moment ∫0..5 u·u/10 + ∫5..10 0.5u = 125/30 + 18.75 → CoG 6.1111
+        FunctionBlockInstance x = Evaluator.load(p).newInstance();
+        x.set("good", 2.5);
+        x.evaluate();
+        assertEquals((125.0 / 30 + 18.75) / 3.75, x.get("fight"), 1e-12);
+        Analysis undeclared = Analysis.analyze(new FfllReader(), "api.fcl", text.replace("DEFUZZIFY fight",
+                "DEFUZZIFY attack"));
+        assertTrue(codes(undeclared).contains("FCL-C001@14:1"), codes(undeclared)::toString);
+    }
 }
