@@ -143,6 +143,31 @@ final class ClassFile {
             local(DLOAD, b);
         }
 
+        /**
+         * Pushes x &lt;= pivot ? (x − a) / rise : (d − x) / fall for the double local x (never NaN): the one
+         * edge of a term with two that matters at x.
+         */
+        void edgeQuotient(int x, double pivot, double a, double rise, double d, double fall) {
+            int load = x <= 255 ? 2 : 4;
+            local(DLOAD, x);
+            doubleConstWide(pivot);
+            op(DCMPG);
+            op(IFGT);
+            u2(3 + load + 3 + 1 + 3 + 1 + 3);   // past the rising quotient and its goto
+            local(DLOAD, x);
+            doubleConstWide(a);
+            op(DSUB);
+            doubleConstWide(rise);
+            op(DDIV);
+            op(GOTO);
+            u2(3 + 3 + load + 1 + 3 + 1);       // past the falling quotient
+            doubleConstWide(d);
+            local(DLOAD, x);
+            op(DSUB);
+            doubleConstWide(fall);
+            op(DDIV);
+        }
+
         /** Stores value into local acc when it is greater (acc = acc &lt; value ? value : acc). */
         void raise(int acc, int value) {
             if (compact) {

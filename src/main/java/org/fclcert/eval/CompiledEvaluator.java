@@ -87,9 +87,13 @@ public final class CompiledEvaluator {
     private final boolean[] integerSlot;
     private final double[] minSlot;
     private final double[] maxSlot;
-    /** Per input: the range a value is stored in without further checks (NaN where every value is checked). */
-    private final double[] directMin;
-    private final double[] directMax;
+    /**
+     * Per input: the bound b such that a value with |value| &lt;= b is stored without further checks (real types
+     * are symmetric; NaN where every value is checked, and NaN or ±∞ values fail the one compare).
+     */
+    private final double[] directBound;
+    /** Input i is in slot i for every i (inputs are declared first), so a store needs no indirection. */
+    private final boolean inputsFirst;
 
     // fuzzification
     private TermDegrees terms;
@@ -165,14 +169,16 @@ public final class CompiledEvaluator {
             maxSlot[s] = plan.types[s].max();
         }
         boolean flat = flat(plan);
-        this.directMin = new double[nIn];
-        this.directMax = new double[nIn];
+        this.directBound = new double[nIn];
+        boolean first = true;
         for (int i = 0; i < nIn; i++) {
-            // NaN bounds send every value to setInputChecked: integer inputs (rounded) and the wrapped instance
-            boolean direct = !integerSlot[inputSlots[i]] && flat;
-            directMin[i] = direct ? minSlot[inputSlots[i]] : Double.NaN;
-            directMax[i] = direct ? maxSlot[inputSlots[i]] : Double.NaN;
+            // a NaN bound sends every value to setInputChecked: integer inputs (rounded) and the wrapped instance
+            int s = inputSlots[i];
+            boolean direct = !integerSlot[s] && flat && minSlot[s] == -maxSlot[s];
+            directBound[i] = direct ? maxSlot[s] : Double.NaN;
+            first &= s == i;
         }
+        this.inputsFirst = first;
         if (flat) {
             this.fallback = null;
             compileTerms();
@@ -581,8 +587,8 @@ public final class CompiledEvaluator {
      * rounded half away from zero and range-checked).
      */
     public void setInput(int index, double value) throws EvaluationException {
-        if (value >= directMin[index] && value <= directMax[index]) {
-            values[inputSlots[index]] = value;   // the common case: a real in range (NaN fails both compares)
+        if (Math.abs(value) <= directBound[index]) {
+            values[inputSlots[index]] = value;   // the common case: a real in range
         } else {
             setInputChecked(index, value);
         }
@@ -597,9 +603,21 @@ public final class CompiledEvaluator {
             throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
         }
         final double[] v = this.values;
+        final double[] bound = directBound;
+        if (inputsFirst) {
+            for (int i = 0; i < values.length; i++) {
+                double x = values[i];
+                if (Math.abs(x) <= bound[i]) {
+                    v[i] = x;
+                } else {
+                    setInputChecked(i, x);
+                }
+            }
+            return;
+        }
         for (int i = 0; i < values.length; i++) {
             double x = values[i];
-            if (x >= directMin[i] && x <= directMax[i]) {
+            if (Math.abs(x) <= bound[i]) {
                 v[inputSlots[i]] = x;
             } else {
                 setInputChecked(i, x);

@@ -25,6 +25,8 @@ final class TermDegrees {
     private final double[] uniRise;
     private final double[] uniD;
     private final double[] uniFall;
+    /** Per unimodal term: where its rising edge reaches 1 (b). */
+    private final double[] uniTop;
     /** Per unimodal term: its rising edge ends where its falling edge starts (b = c, a triangle). */
     private final boolean[] peak;
     /** uni[0, risingEnd) only rise, uni[risingEnd, fallingEnd) only fall, the rest have both edges. */
@@ -58,6 +60,7 @@ final class TermDegrees {
         uniRise = new double[uni];
         uniD = new double[uni];
         uniFall = new double[uni];
+        uniTop = new double[uni];
         peak = new boolean[uni];
         singleTerm = new int[single];
         singleSlot = new int[single];
@@ -81,6 +84,7 @@ final class TermDegrees {
                     uniA[u] = e.a;
                     uniRise[u] = e.rise;
                     uniD[u] = e.d;
+                    uniTop[u] = e.b;
                     peak[u] = e.b == e.c;
                     uniFall[u++] = e.fall;
                 }
@@ -154,24 +158,27 @@ final class TermDegrees {
             boolean rises = k < risingEnd || k >= fallingEnd;
             boolean falls = k >= risingEnd;
             int to = local[uniTerm[k]];
-            if (rises) {
+            if (rises && falls) {
+                // one division instead of two and their minimum: up to b the rising quotient is at most 1 and the
+                // falling one at least 1 (rounding is monotonic and rise = b − a, fall = d − c as computed here),
+                // beyond b the other way round or, on a plateau, both above 1, which the rule's clamp makes 1
+                loadValue(c, uniSlot[k]);
+                c.local(ClassFile.DSTORE, tmp);
+                c.edgeQuotient(tmp, uniTop[k], uniA[k], uniRise[k], uniD[k], uniFall[k]);
+                c.local(ClassFile.DSTORE, to);
+            } else if (rises) {
                 loadValue(c, uniSlot[k]);
                 c.doubleConst(uniA[k]);
                 c.op(ClassFile.DSUB);
                 c.doubleConst(uniRise[k]);
                 c.op(ClassFile.DDIV);
-                c.local(ClassFile.DSTORE, falls ? tmp : to);
-            }
-            if (falls) {
+                c.local(ClassFile.DSTORE, to);
+            } else {
                 c.doubleConst(uniD[k]);
                 loadValue(c, uniSlot[k]);
                 c.op(ClassFile.DSUB);
                 c.doubleConst(uniFall[k]);
                 c.op(ClassFile.DDIV);
-                c.local(ClassFile.DSTORE, rises ? tmp + 2 : to);
-            }
-            if (rises && falls) {
-                c.pick(tmp, tmp + 2, true);
                 c.local(ClassFile.DSTORE, to);
             }
         }

@@ -161,6 +161,14 @@ class CompiledEvaluatorAgreementTest {
         assertEquals("FCL-V002", assertThrows(EvaluationException.class,
                 () -> fast.setInputs(Double.POSITIVE_INFINITY)).code());
         assertThrows(IllegalArgumentException.class, () -> fast.setInputs(1, 2));
+        // a REAL holds at most Float.MAX_VALUE (about 3.4E38) either way; the value before stays
+        assertEquals("FCL-V004", assertThrows(EvaluationException.class, () -> fast.setInputs(-1e39)).code());
+        assertEquals("FCL-V004", assertThrows(EvaluationException.class, () -> fast.setInput(x, 1e39)).code());
+        assertEquals("FCL-V002", assertThrows(EvaluationException.class,
+                () -> fast.setInput(x, Double.NEGATIVE_INFINITY)).code());
+        assertEquals(7.5, fast.input(x), 0.0);
+        fast.setInput(x, -Float.MAX_VALUE);
+        assertEquals(-Float.MAX_VALUE, fast.input(x), 0.0);
     }
 
     /**
