@@ -28,6 +28,7 @@ final class Scope {
     private final FunctionBlock block;
     /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
     private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
+    private List<OperandUse> operandUses;
 
     /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
     private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
@@ -118,6 +119,14 @@ final class Scope {
             }
             return h ^ (h >>> 16);
         }
+    }
+
+    /** {@link OperandUse#all} of this block, built once per check run (five rules walk it). */
+    List<OperandUse> operandUses() {
+        if (operandUses == null) {
+            operandUses = OperandUse.all(block);
+        }
+        return operandUses;
     }
 
     /** The subconditions of the rule's condition in source order ({@link Conditions#subconditions}), memoised. */
