@@ -92,7 +92,7 @@ final class ModelBuilder {
     /**
      * Builds a function block item as soon as the fast parse (which stops at the first error, so that every
      * item it completes is whole) has read it, and drops its subtree: a program of 100 000 FUZZIFY blocks
-     * never holds their trees all at once. Called for each completed item by the reader's parse listener.
+     * never holds their trees all at once. Called for each completed item by the parser ({@code FclParser.itemParsed}).
      */
     void buildItemEarly(FbItemContext ctx) {
         earlyItems.put(ctx, item(ctx));

@@ -117,33 +117,6 @@ public final class StrictReader implements FclReader {
         return new Outcome(diagnostics.hasErrors() ? Optional.empty() : Optional.of(program), Optional.empty());
     }
 
-    /** Hands each function-block item and variable declaration the fast parse completes to the builder. */
-    private record EarlyBuild(ModelBuilder builder) implements org.antlr.v4.runtime.tree.ParseTreeListener {
-        @Override
-        public void exitEveryRule(org.antlr.v4.runtime.ParserRuleContext ctx) {
-            if (ctx.exception != null) {
-                return;     // the fast pass bailed out: rules on the stack are exited unfinished
-            }
-            if (ctx instanceof FclParser.FbItemContext item) {
-                builder.buildItemEarly(item);
-            } else if (ctx instanceof FclParser.VarDeclarationContext declaration) {
-                builder.buildDeclarationEarly(declaration);
-            }
-        }
-
-        @Override
-        public void enterEveryRule(org.antlr.v4.runtime.ParserRuleContext ctx) {
-        }
-
-        @Override
-        public void visitTerminal(org.antlr.v4.runtime.tree.TerminalNode node) {
-        }
-
-        @Override
-        public void visitErrorNode(org.antlr.v4.runtime.tree.ErrorNode node) {
-        }
-    }
-
     /** The tree, whether it is whole, and after a syntax error every token (which the repair needs). */
     private record Parsed(FclParser.ProgramContext tree, boolean complete, List<Token> tokens) {
     }
@@ -187,13 +160,14 @@ public final class StrictReader implements FclReader {
             ModelBuilder builder) {
         FclParser parser = new FclParser(new TableTokenStream(table));
         parser.removeErrorListeners();
-        parser.addParseListener(reservedNames);
+        parser.keywordName = reservedNames;
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
         // this pass stops at the first error, so every rule, item and declaration it completes is whole: build
         // each at once and drop its subtree, so that a large program's trees are never all held
         parser.ruleParsed = builder::buildEarly;
-        parser.addParseListener(new EarlyBuild(builder));
+        parser.itemParsed = builder::buildItemEarly;
+        parser.declarationParsed = builder::buildDeclarationEarly;
         ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
             return new Parsed(parser.program(), true, List.of());
@@ -203,7 +177,7 @@ public final class StrictReader implements FclReader {
             parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
             parser.removeErrorListeners();
             reservedNames.reset();
-            parser.addParseListener(reservedNames);
+            parser.keywordName = reservedNames;
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);
