@@ -114,7 +114,10 @@ final class Scope {
         private static int hash(String name) {
             int h = 0;
             for (int i = 0; i < name.length(); i++) {
-                h = 31 * h + Character.toLowerCase(Character.toUpperCase(name.charAt(i)));
+                char c = name.charAt(i);
+                // ASCII (every FCL identifier) folds by itself; other letters as equalsIgnoreCase folds them
+                h = 31 * h + (c < 0x80 ? (c >= 'A' && c <= 'Z' ? c + ('a' - 'A') : c)
+                        : Character.toLowerCase(Character.toUpperCase(c)));
             }
             return h ^ (h >>> 16);
         }
