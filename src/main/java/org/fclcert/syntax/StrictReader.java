@@ -29,6 +29,8 @@ public final class StrictReader implements FclReader {
      */
     private static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
+    /** Texts up to this many characters keep their token objects (a few MB at most) instead of a TokenTable's compact form. */
+    private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;
 
@@ -78,7 +80,9 @@ public final class StrictReader implements FclReader {
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
-        TokenTable table = new TokenTable();
+        // the compact table pays off for large texts (issue 18); a small text's tokens are kept as the lexer
+        // made them, rather than made a second time when the parser asks for them
+        TokenTable table = body.length() <= SMALL_TEXT ? TokenTable.keepingTokens() : new TokenTable();
         if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
             List<Token> lexed = new java.util.ArrayList<>();
             Token t;
