@@ -29,7 +29,7 @@ public final class StrictReader implements FclReader {
      */
     private static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
-    /** Texts up to this many characters keep their token objects (a few MB at most) instead of a TokenTable's compact form. */
+    /** Texts up to this many characters keep their token objects (a few MB at most), not the compact form. */
     private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;

@@ -50,6 +50,11 @@ final class TokenTable {
         return new TokenTable(new ArrayList<>());
     }
 
+    /** Whether the token objects themselves are kept ({@link #keepingTokens()}). */
+    boolean keepsTokens() {
+        return kept != null;
+    }
+
     int size() {
         return kept != null ? kept.size() : count;
     }
