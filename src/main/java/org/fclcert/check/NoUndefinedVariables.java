@@ -38,7 +38,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
                 checkRule(scope, rule, sink);
             }
         }
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : scope.operandUses()) {
             if (use.operand() instanceof VariableRef ref) {
                 need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
             }

@@ -28,13 +28,14 @@ final class Scope {
     private final FunctionBlock block;
     /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
     private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
+    private List<OperandUse> operandUses;
 
     /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
     private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
 
     /**
      * The scope of this block, built once per check run rather than once per rule (a block is immutable,
-     * and so is a scope after construction, so sharing it is invisible).
+     * and a scope only adds what it works out from the block, the same each time, so sharing it is invisible).
      */
     static Scope of(FunctionBlock block) {
         WeakReference<Scope> ref = LAST.get();
@@ -121,6 +122,14 @@ final class Scope {
             }
             return h ^ (h >>> 16);
         }
+    }
+
+    /** Every operand of the block ({@link OperandUse#all}), made once for the five rules that look at them. */
+    List<OperandUse> operandUses() {
+        if (operandUses == null) {
+            operandUses = OperandUse.all(block);
+        }
+        return operandUses;
     }
 
     /** The subconditions of the rule's condition in source order ({@link Conditions#subconditions}), memoised. */
