@@ -82,7 +82,9 @@ public final class StrictReader implements FclReader {
         TokenSource source = lexer;
         // the compact table pays off for large texts (issue 18); a small text's tokens are kept as the lexer
         // made them, rather than made a second time when the parser asks for them
-        TokenTable table = body.length() <= SMALL_TEXT ? TokenTable.keepingTokens() : new TokenTable();
+        // (FCL averages five or more characters a token: the corpus's densest files have five)
+        TokenTable table = body.length() <= SMALL_TEXT ? TokenTable.keepingTokens(body.length() / 5 + 16)
+                : new TokenTable();
         if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
             List<Token> lexed = new java.util.ArrayList<>();
             Token t;
