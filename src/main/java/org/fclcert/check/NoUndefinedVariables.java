@@ -38,7 +38,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
                 checkRule(scope, rule, sink);
             }
         }
-        for (OperandUse use : Scope.of(block).operandUses()) {
+        for (OperandUse use : scope.operandUses()) {
             if (use.operand() instanceof VariableRef ref) {
                 need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
             }

@@ -29,13 +29,15 @@ final class Scope {
     /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
     private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
     private List<OperandUse> operandUses;
+    private String hashedName;
+    private int hashedHash;
 
     /** The last scope built on this thread, held weakly: every rule of one check run asks for the same block. */
     private static final ThreadLocal<WeakReference<Scope>> LAST = new ThreadLocal<>();
 
     /**
      * The scope of this block, built once per check run rather than once per rule (a block is immutable,
-     * and so is a scope after construction, so sharing it is invisible).
+     * and a scope only adds what it works out from the block, the same each time, so sharing it is invisible).
      */
     static Scope of(FunctionBlock block) {
         WeakReference<Scope> ref = LAST.get();
@@ -61,7 +63,7 @@ final class Scope {
      * so that a lookup neither upper-cases nor allocates, and one slot pair per name (a block may declare
      * 100 000 names).
      */
-    private static final class NameMap<V> {
+    private final class NameMap<V> {
         private String[] names = new String[16];
         private Object[] values = new Object[16];
         private int size;
@@ -87,7 +89,7 @@ final class Scope {
 
         private void insert(String name, Object value) {
             int mask = names.length - 1;
-            int at = hash(name) & mask;
+            int at = hashOf(name) & mask;
             while (names[at] != null) {
                 at = (at + 1) & mask;
             }
@@ -99,7 +101,7 @@ final class Scope {
         @SuppressWarnings("unchecked")
         V get(String name) {
             int mask = names.length - 1;
-            for (int at = hash(name) & mask; names[at] != null; at = (at + 1) & mask) {
+            for (int at = hashOf(name) & mask; names[at] != null; at = (at + 1) & mask) {
                 if (Names.same(names[at], name)) {
                     return (V) values[at];
                 }
@@ -115,18 +117,33 @@ final class Scope {
         private static int hash(String name) {
             int h = 0;
             for (int i = 0; i < name.length(); i++) {
-                h = 31 * h + Character.toLowerCase(Character.toUpperCase(name.charAt(i)));
+                char c = name.charAt(i);
+                // ASCII (every FCL identifier) folds by itself; other letters as equalsIgnoreCase folds them
+                h = 31 * h + (c < 0x80 ? (c >= 'A' && c <= 'Z' ? c + ('a' - 'A') : c)
+                        : Character.toLowerCase(Character.toUpperCase(c)));
             }
             return h ^ (h >>> 16);
         }
     }
 
-    /** {@link OperandUse#all} of this block, built once per check run (five rules walk it). */
+    /** Every operand of the block ({@link OperandUse#all}), made once for the five rules that look at them. */
     List<OperandUse> operandUses() {
         if (operandUses == null) {
             operandUses = OperandUse.all(block);
         }
         return operandUses;
+    }
+
+    /**
+     * {@link NameMap#hash} of the name asked about last: checking one use asks several maps about the same name,
+     * and the reader shares one String per spelling (a scope is used on one thread only).
+     */
+    private int hashOf(String name) {
+        if (name != hashedName) {
+            hashedHash = NameMap.hash(name);
+            hashedName = name;
+        }
+        return hashedHash;
     }
 
     /** The subconditions of the rule's condition in source order ({@link Conditions#subconditions}), memoised. */
@@ -190,6 +207,11 @@ final class Scope {
 
     /** Whether one of the terms is named {@code term} (case-insensitive). */
     static boolean hasTerm(List<Term> terms, String term) {
+        for (Term t : terms) {
+            if (t.name() == term) {
+                return true;    // the reader shares one String per spelling: most uses are the very name defined
+            }
+        }
         for (Term t : terms) {
             if (Names.same(t.name(), term)) {
                 return true;

@@ -92,7 +92,7 @@ final class ModelBuilder {
     /**
      * Builds a function block item as soon as the fast parse (which stops at the first error, so that every
      * item it completes is whole) has read it, and drops its subtree: a program of 100 000 FUZZIFY blocks
-     * never holds their trees all at once. Called for each completed item by the reader's parse listener.
+     * never holds their trees all at once. Called for each completed item by the parser ({@code FclParser.itemParsed}).
      */
     void buildItemEarly(FbItemContext ctx) {
         earlyItems.put(ctx, item(ctx));
@@ -452,6 +452,19 @@ final class ModelBuilder {
         ctx.children = null;
     }
 
+    /** Digits only, without a leading zero (unless the number is 0): the text BigInteger would give back. */
+    private static boolean plainNumber(String text) {
+        if (text.isEmpty() || text.length() > 1 && text.charAt(0) == '0') {
+            return false;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            if (text.charAt(i) < '0' || text.charAt(i) > '9') {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private Rule rule(FuzzyRuleContext ctx) {
         return new Rule(ruleName(ctx.ruleName()), condition(ctx.condition()), conclusion(ctx.conclusion()),
                 at(ctx.start));
@@ -464,6 +477,9 @@ final class ModelBuilder {
                 diagnostics.error(ctx.start, SyntaxCode.RULE_HEADER, "a rule number has no sign: write 'RULE "
                         + text.substring(1) + ":' (5.4)");
                 text = text.substring(1);
+            }
+            if (plainNumber(text)) {
+                return text;    // already canonical: no BigInteger round trip for the usual rule number
             }
             try {
                 return new BigInteger(text).toString();

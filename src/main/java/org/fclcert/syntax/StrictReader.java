@@ -29,6 +29,8 @@ public final class StrictReader implements FclReader {
      */
     private static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
+    /** Texts up to this many characters keep their token objects (a few MB at most), not the compact form. */
+    private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;
 
@@ -78,7 +80,11 @@ public final class StrictReader implements FclReader {
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
-        TokenTable table = new TokenTable();
+        // the compact table pays off for large texts (issue 18); a small text's tokens are kept as the lexer
+        // made them, rather than made a second time when the parser asks for them
+        // (FCL averages five or more characters a token: the corpus's densest files have five)
+        TokenTable table = body.length() <= SMALL_TEXT ? TokenTable.keepingTokens(body.length() / 5 + 16)
+                : new TokenTable();
         if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
             List<Token> lexed = new java.util.ArrayList<>();
             Token t;
@@ -115,33 +121,6 @@ public final class StrictReader implements FclReader {
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());
         return new Outcome(diagnostics.hasErrors() ? Optional.empty() : Optional.of(program), Optional.empty());
-    }
-
-    /** Hands each function-block item and variable declaration the fast parse completes to the builder. */
-    private record EarlyBuild(ModelBuilder builder) implements org.antlr.v4.runtime.tree.ParseTreeListener {
-        @Override
-        public void exitEveryRule(org.antlr.v4.runtime.ParserRuleContext ctx) {
-            if (ctx.exception != null) {
-                return;     // the fast pass bailed out: rules on the stack are exited unfinished
-            }
-            if (ctx instanceof FclParser.FbItemContext item) {
-                builder.buildItemEarly(item);
-            } else if (ctx instanceof FclParser.VarDeclarationContext declaration) {
-                builder.buildDeclarationEarly(declaration);
-            }
-        }
-
-        @Override
-        public void enterEveryRule(org.antlr.v4.runtime.ParserRuleContext ctx) {
-        }
-
-        @Override
-        public void visitTerminal(org.antlr.v4.runtime.tree.TerminalNode node) {
-        }
-
-        @Override
-        public void visitErrorNode(org.antlr.v4.runtime.tree.ErrorNode node) {
-        }
     }
 
     /** The tree, whether it is whole, and after a syntax error every token (which the repair needs). */
@@ -187,13 +166,14 @@ public final class StrictReader implements FclReader {
             ModelBuilder builder) {
         FclParser parser = new FclParser(new TableTokenStream(table));
         parser.removeErrorListeners();
-        parser.addParseListener(reservedNames);
+        parser.keywordName = reservedNames;
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
         // this pass stops at the first error, so every rule, item and declaration it completes is whole: build
         // each at once and drop its subtree, so that a large program's trees are never all held
         parser.ruleParsed = builder::buildEarly;
-        parser.addParseListener(new EarlyBuild(builder));
+        parser.itemParsed = builder::buildItemEarly;
+        parser.declarationParsed = builder::buildDeclarationEarly;
         ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
             return new Parsed(parser.program(), true, List.of());
@@ -203,7 +183,7 @@ public final class StrictReader implements FclReader {
             parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
             parser.removeErrorListeners();
             reservedNames.reset();
-            parser.addParseListener(reservedNames);
+            parser.keywordName = reservedNames;
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);

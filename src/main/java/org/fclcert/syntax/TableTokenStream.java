@@ -7,29 +7,40 @@ import org.antlr.v4.runtime.TokenStream;
 import org.antlr.v4.runtime.misc.Interval;
 
 /**
- * The parser's view of a {@link TokenTable}: random access by index, each token made when the parser first
- * looks at it and held in a small ring, so that the lookahead the parser is working on is the same object
- * each time it asks. Unlike a buffered token stream it keeps no token the parser has moved past: those the
- * parse tree still refers to live on with the tree, the rest are garbage (a large program never has all
- * its tokens as objects at once).
+ * The parser's view of a {@link TokenTable}: random access by index. From a compact table each token is made
+ * when the parser first looks at it and held in a small ring, so that the lookahead the parser is working on
+ * is the same object each time it asks. Unlike a buffered token stream it keeps no token the parser has moved
+ * past: those the parse tree still refers to live on with the tree, the rest are garbage (a large program
+ * never has all its tokens as objects at once).
  */
 final class TableTokenStream implements TokenStream {
     private static final int RING = 512;
 
     private final TokenTable table;
-    private final Token[] ring = new Token[RING];
-    private final int[] ringIndex = new int[RING];
+    /** Null when the table keeps its token objects: then there is nothing to make, and no ring to set up per read. */
+    private final Token[] ring;
+    private final int[] ringIndex;
     private int p;
 
     TableTokenStream(TokenTable table) {
         this.table = table;
-        java.util.Arrays.fill(ringIndex, -1);
+        if (table.keepsTokens()) {
+            ring = null;
+            ringIndex = null;
+        } else {
+            ring = new Token[RING];
+            ringIndex = new int[RING];
+            java.util.Arrays.fill(ringIndex, -1);
+        }
     }
 
     @Override
     public Token get(int i) {
         if (i < 0 || i >= table.size()) {
             throw new IndexOutOfBoundsException("token index " + i + " out of range 0.." + (table.size() - 1));
+        }
+        if (ring == null) {
+            return table.token(i);
         }
         int slot = i & (RING - 1);
         if (ringIndex[slot] != i) {

@@ -50,6 +50,16 @@ final class TokenTable {
         return new TokenTable(new ArrayList<>());
     }
 
+    /** The same, sized for about {@code expected} tokens (no copies of a growing list). */
+    static TokenTable keepingTokens(int expected) {
+        return new TokenTable(new ArrayList<>(expected));
+    }
+
+    /** Whether the token objects themselves are kept ({@link #keepingTokens()}). */
+    boolean keepsTokens() {
+        return kept != null;
+    }
+
     int size() {
         return kept != null ? kept.size() : count;
     }
