@@ -17,7 +17,7 @@
  */
 grammar Fcl;
 
-options { caseInsensitive = true; }
+options { caseInsensitive = true; contextSuperClass = FclRuleContext; }
 
 @parser::members {
     /**

@@ -43,11 +43,12 @@ import org.openjdk.jmh.annotations.Warmup;
  * <p>At set-up each side's outputs over the cycle are compared with {@link ExactValues} and the largest
  * error is printed ({@code exactness:} lines). Every iteration also prints operations per CPU-second of
  * the benchmark thread ({@code cpu-normalised:}), the stable figure on a shared machine. Run as
- * documented in docs/performance.md; not part of the test suite.
+ * documented in docs/performance.md; not part of the test suite. Eight seconds of warm-up: with three, the
+ * readers of both sides were still speeding up through the measured iterations (the JIT was not done).
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
-@Warmup(iterations = 3, time = 1)
+@Warmup(iterations = 8, time = 1)
 @Measurement(iterations = 5, time = 1)
 @Fork(value = 1, jvmArgsAppend = "-Xmx1g")
 @State(Scope.Thread)
