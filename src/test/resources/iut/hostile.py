@@ -81,10 +81,13 @@ class Hostile(FakeIut):
             sys.stdout.write(body + "\n")
             sys.stdout.flush()
             return
-        super().send(req, body)
         if MODE == "unasked" and req["op"] == "load":
-            sys.stdout.write(json.dumps({"ok": True, "outputs": {"sum": 3.0}}) + "\n")
+            # the load reply and an eval reply nobody asked for in one write, so that both reach fclcert together
+            extra = json.dumps({"ok": True, "outputs": {"sum": 3.0}})
+            sys.stdout.write(json.dumps(dict(body, id=req["id"])) + "\n" + extra + "\n")
             sys.stdout.flush()
+            return
+        super().send(req, body)
 
 
 Hostile().run()

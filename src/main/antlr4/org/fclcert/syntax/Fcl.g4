@@ -17,7 +17,7 @@
  */
 grammar Fcl;
 
-options { caseInsensitive = true; }
+options { caseInsensitive = true; contextSuperClass = FclRuleContext; }
 
 @parser::members {
     /**
@@ -25,6 +25,14 @@ options { caseInsensitive = true; }
      * and drop its subtree at once: a 100 000-rule block then never holds all rule trees in memory.
      */
     java.util.function.Consumer<FuzzyRuleContext> ruleParsed;
+    /** Likewise each function-block item and variable declaration ('@after': not run when the rule throws). */
+    java.util.function.Consumer<FbItemContext> itemParsed;
+    java.util.function.Consumer<VarDeclarationContext> declarationParsed;
+    /**
+     * When set, receives each name spelled as a keyword. Actions on just these rules cost far less than
+     * a parse listener, which the parser calls on entering and leaving every rule.
+     */
+    java.util.function.Consumer<NameContext> keywordName;
 }
 
 program
@@ -36,6 +44,7 @@ functionBlock
     ;
 
 fbItem
+@after { if (itemParsed != null) itemParsed.accept($ctx); }
     : varSection
     | fuzzifyBlock
     | defuzzifyBlock
@@ -50,6 +59,7 @@ varSection
     ;
 
 varDeclaration
+@after { if (declarationParsed != null) declarationParsed.accept($ctx); }
     : name (COMMA name)* COLON typeName (ASSIGN literal)? SEMI
     ;
 
@@ -179,7 +189,7 @@ optionBlock
 // A name is an identifier; keywords are accepted here only to be reported precisely.
 name
     : IDENT
-    | softKeyword
+    | softKeyword { if (keywordName != null) keywordName.accept($ctx); }
     ;
 
 // A word is an identifier or keyword where a keyword is expected (types, algorithms, methods).

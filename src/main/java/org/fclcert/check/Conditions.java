@@ -38,14 +38,25 @@ final class Conditions {
 
     /** The subconditions ({@code v IS t} and bare variables) of the condition, in source order. */
     static List<Condition> subconditions(Condition root) {
+        if (isSubcondition(root)) {
+            return List.of(root);       // the usual shapes without a walk: one subcondition,
+        }
+        List<Condition> operands = root instanceof Condition.And and ? and.operands()
+                : root instanceof Condition.Or or ? or.operands() : null;
+        if (operands != null && operands.stream().allMatch(Conditions::isSubcondition)) {
+            return operands;            // or one AND (OR) over subconditions
+        }
         List<Condition> out = new ArrayList<>();
         for (Node node : nodes(root)) {
-            if (node.condition() instanceof Condition.TermSubcondition
-                    || node.condition() instanceof Condition.VariableSubcondition) {
+            if (isSubcondition(node.condition())) {
                 out.add(node.condition());
             }
         }
         return out;
+    }
+
+    private static boolean isSubcondition(Condition c) {
+        return c instanceof Condition.TermSubcondition || c instanceof Condition.VariableSubcondition;
     }
 
     /** The subconditions of all rules, in source order. */

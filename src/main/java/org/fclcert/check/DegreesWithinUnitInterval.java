@@ -16,7 +16,7 @@ public final class DegreesWithinUnitInterval implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : Scope.of(block).operandUses()) {
             if (use.role() == OperandUse.Role.DEGREE && use.operand() instanceof Literal d
                     && !(d.value() >= 0 && d.value() <= 1)) {
                 sink.report(finding(d.location(), use.where() + " is " + Describe.number(d.value())

@@ -38,7 +38,7 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
         Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
-                for (Condition c : Conditions.subconditions(rule.condition())) {
+                for (Condition c : scope.subconditions(rule)) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {   // 'x is any' names no term
                         check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
                                 () -> Describe.subcondition(t), t.location(), sink);
@@ -64,7 +64,7 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
                     + "' with TERM in its block (5.2.2, 5.2.3)"));
             return;
         }
-        boolean defined = terms.get().stream().anyMatch(x -> Names.same(x.name(), term));
+        boolean defined = Scope.hasTerm(terms.get(), term);
         if (defined || !scope.ownersOfTerm(term, variable, inCondition).isEmpty()) {
             return;
         }

@@ -38,7 +38,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
                 checkRule(scope, rule, sink);
             }
         }
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : scope.operandUses()) {
             if (use.operand() instanceof VariableRef ref) {
                 need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
             }
@@ -46,7 +46,7 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
     }
 
     private void checkRule(Scope scope, Rule rule, DiagnosticSink sink) {
-        for (Condition c : Conditions.subconditions(rule.condition())) {
+        for (Condition c : scope.subconditions(rule)) {
             String variable = c instanceof Condition.TermSubcondition t
                     ? t.variable() : ((Condition.VariableSubcondition) c).variable();
             need(scope, variable, c.location(), () -> Describe.subcondition(c), "VAR_INPUT", sink);

@@ -1,8 +1,8 @@
 package org.fclcert.check;
 
-import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Set;
+import java.util.Map;
 import org.fclcert.model.Condition;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
@@ -33,22 +33,22 @@ public final class NoUnusedTerms implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        Scope scope = new Scope(block);
-        Set<String> inCondition = new HashSet<>();
-        Set<String> inConclusion = new HashSet<>();
+        Scope scope = Scope.of(block);
+        // per FUZZIFY or DEFUZZIFY block (by identity), which of its terms some rule names: no name keys to build
+        Map<Object, boolean[]> used = new IdentityHashMap<>();
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
-                for (Condition c : Conditions.subconditions(rule.condition())) {
+                for (Condition c : scope.subconditions(rule)) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {
                         String[] meant = scope.meant(t.variable(), t.term(), true);
-                        inCondition.add(key(meant[0], meant[1]));
+                        scope.fuzzification(meant[0]).ifPresent(f -> mark(used, f, f.terms(), meant[1]));
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
-                    s.term().ifPresent(t -> {
-                        String[] meant = scope.meant(s.variable(), t, false);
-                        inConclusion.add(key(meant[0], meant[1]));
-                    });
+                    if (s.term().isPresent()) {
+                        String[] meant = scope.meant(s.variable(), s.term().get(), false);
+                        scope.defuzzification(meant[0]).ifPresent(d -> mark(used, d, d.terms(), meant[1]));
+                    }
                 }
             }
         }
@@ -56,26 +56,33 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         // (the terms of a misplaced or repeated block are already covered by that block's error)
         for (Fuzzification f : block.fuzzifications()) {
             if (scope.is(f.variable(), VariableKind.INPUT) && scope.fuzzification(f.variable()).get() == f) {
-                report(f.variable(), f.terms(), inCondition, "subcondition", sink);
+                report(f.variable(), f.terms(), used.get(f), "subcondition", sink);
             }
         }
         for (Defuzzification d : block.defuzzifications()) {
             if (scope.is(d.variable(), VariableKind.OUTPUT) && scope.defuzzification(d.variable()).get() == d) {
-                report(d.variable(), d.terms(), inConclusion, "subconclusion", sink);
+                report(d.variable(), d.terms(), used.get(d), "subconclusion", sink);
             }
         }
     }
 
-    private void report(String variable, List<Term> terms, Set<String> used, String by, DiagnosticSink sink) {
-        for (Term t : terms) {
-            if (!used.contains(key(variable, t.name()))) {
+    /** Marks every term of the block named {@code term} (a repeated term name is its own error). */
+    private static void mark(Map<Object, boolean[]> used, Object owner, List<Term> terms, String term) {
+        boolean[] marks = used.computeIfAbsent(owner, o -> new boolean[terms.size()]);
+        for (int i = 0; i < marks.length; i++) {
+            if (Names.same(terms.get(i).name(), term)) {
+                marks[i] = true;
+            }
+        }
+    }
+
+    private void report(String variable, List<Term> terms, boolean[] used, String by, DiagnosticSink sink) {
+        for (int i = 0; i < terms.size(); i++) {
+            Term t = terms.get(i);
+            if (used == null || !used[i]) {
                 sink.report(finding(t.location(), "term '" + t.name() + "' of '" + variable + "' is never used: no "
                         + by + " names '" + variable + " IS " + t.name() + "'"));
             }
         }
-    }
-
-    private static String key(String variable, String term) {
-        return Names.key(variable) + "\u0000" + Names.key(term);
     }
 }

@@ -16,7 +16,7 @@ public final class NoZeroWeights implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : Scope.of(block).operandUses()) {
             if (use.role() == OperandUse.Role.WEIGHT && use.operand() instanceof Literal w && w.value() == 0) {
                 sink.report(finding(w.location(), "WITH 0: " + use.where()
                         + " is 0, so the subconclusion never has any effect; remove it or use a positive factor"));

@@ -2,7 +2,6 @@ package org.fclcert.check;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.Supplier;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Operand;
@@ -15,11 +14,24 @@ import org.fclcert.model.Term;
 /**
  * A place where a function block takes a constant or a variable: a point's x or degree, a
  * singleton's value, a weighting factor. {@link #where()} names the place for messages; it is
- * worded only when asked, as most operands never appear in a message.
+ * worded only when asked, as most operands never appear in a message, from what the use keeps: the term
+ * and its variable with the point's number (from 1; 0 for a singleton), or the subconclusion with its rule
+ * and rule block.
  */
-record OperandUse(Operand operand, Role role, Supplier<String> place) {
+record OperandUse(Operand operand, Role role, Term term, String variable, int point, Subconclusion subconclusion,
+        Rule rule, RuleBlock ruleBlock) {
     String where() {
-        return place.get();
+        return switch (role) {
+            case WEIGHT -> "the weighting factor of '" + Describe.subconclusion(subconclusion) + "' in rule "
+                    + rule.name() + " of rule block '" + ruleBlock.name() + "'";
+            case SINGLETON -> "the value of singleton " + of();
+            case POINT_X -> "the x of point " + point + " of " + of();
+            case DEGREE -> "the degree of point " + point + " of " + of();
+        };
+    }
+
+    private String of() {
+        return "term '" + term.name() + "' of '" + variable + "'";
     }
 
     enum Role {
@@ -47,9 +59,9 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Subconclusion s : rule.conclusion()) {
-                    s.weight().ifPresent(w -> out.add(new OperandUse(w, Role.WEIGHT,
-                            () -> "the weighting factor of '" + Describe.subconclusion(s) + "' in rule " + rule.name()
-                                    + " of rule block '" + rb.name() + "'")));
+                    if (s.weight().isPresent()) {
+                        out.add(new OperandUse(s.weight().get(), Role.WEIGHT, null, null, 0, s, rule, rb));
+                    }
                 }
             }
         }
@@ -57,9 +69,8 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
     }
 
     private static void addTerm(List<OperandUse> out, Term term, String variable) {
-        String of = "term '" + term.name() + "' of '" + variable + "'";
         if (term.function() instanceof MembershipFunction.Singleton s) {
-            out.add(new OperandUse(s.value(), Role.SINGLETON, () -> "the value of singleton " + of));
+            out.add(new OperandUse(s.value(), Role.SINGLETON, term, variable, 0, null, null, null));
             return;
         }
         if (!(term.function() instanceof MembershipFunction.Points pts)) {
@@ -68,9 +79,8 @@ record OperandUse(Operand operand, Role role, Supplier<String> place) {
         List<Point> points = pts.points();
         for (int i = 0; i < points.size(); i++) {
             Point p = points.get(i);
-            int number = i + 1;
-            out.add(new OperandUse(p.x(), Role.POINT_X, () -> "the x of point " + number + " of " + of));
-            out.add(new OperandUse(p.degree(), Role.DEGREE, () -> "the degree of point " + number + " of " + of));
+            out.add(new OperandUse(p.x(), Role.POINT_X, term, variable, i + 1, null, null, null));
+            out.add(new OperandUse(p.degree(), Role.DEGREE, term, variable, i + 1, null, null, null));
         }
     }
 }

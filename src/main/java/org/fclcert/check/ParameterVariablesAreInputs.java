@@ -21,7 +21,7 @@ public final class ParameterVariablesAreInputs implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : scope.operandUses()) {
             if (use.operand() instanceof VariableRef ref) {
                 scope.variable(ref.name()).filter(v -> v.kind() != VariableKind.INPUT).ifPresent(v ->
                         sink.report(finding(ref.location(), use.where() + " is " + Describe.variable(v)

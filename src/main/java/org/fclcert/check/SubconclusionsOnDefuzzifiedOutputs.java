@@ -37,11 +37,12 @@ public final class SubconclusionsOnDefuzzifiedOutputs implements FunctionBlockRu
     }
 
     private void check(Scope scope, Subconclusion s, Variable v, DiagnosticSink sink) {
-        String element = Describe.subconclusion(s) + ": ";
         if (v.kind() == VariableKind.LOCAL) {
+            String element = Describe.subconclusion(s) + ": ";
             sink.report(finding(s.location(), element + Describe.variable(v) + " has no terms; conclude it as a bare"
                     + " variable ('THEN " + v.name() + "') or use an output with a DEFUZZIFY block (5.2.4)"));
         } else if (v.kind() == VariableKind.OUTPUT && scope.defuzzification(v.name()).isEmpty()) {
+            String element = Describe.subconclusion(s) + ": ";
             sink.report(finding(s.location(), element + Describe.variable(v) + " has no DEFUZZIFY block, so it has no"
                     + " terms; add 'DEFUZZIFY " + v.name() + "' with its terms, METHOD and DEFAULT (5.2.3)"));
         }

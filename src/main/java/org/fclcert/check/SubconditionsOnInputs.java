@@ -47,7 +47,7 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
         Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
-                for (Condition c : Conditions.subconditions(rule.condition())) {
+                for (Condition c : scope.subconditions(rule)) {
                     if (judged.test(c)) {
                         check(scope, c, sink);
                     }
@@ -68,12 +68,11 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
     }
 
     private void checkTerm(Scope scope, Condition.TermSubcondition t, Variable v, DiagnosticSink sink) {
-        String element = Describe.subcondition(t) + ": ";
         if (v.kind() != VariableKind.INPUT) {
-            sink.report(finding(t.location(), element + Describe.variable(v) + " is not an input; 'IS' in a condition"
+            sink.report(finding(t.location(), Describe.subcondition(t) + ": " + Describe.variable(v) + " is not an input; 'IS' in a condition"
                     + " needs an input (VAR_INPUT) with a FUZZIFY block (5.2.2, 5.2.4)"));
         } else if (scope.fuzzification(v.name()).isEmpty()) {
-            sink.report(finding(t.location(), element + Describe.variable(v) + " has no FUZZIFY block, so it has no"
+            sink.report(finding(t.location(), Describe.subcondition(t) + ": " + Describe.variable(v) + " has no FUZZIFY block, so it has no"
                     + " terms; add 'FUZZIFY " + v.name() + "' with its terms (5.2.2)"));
         }
     }

@@ -34,7 +34,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
         Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
-                for (Condition c : Conditions.subconditions(rule.condition())) {
+                for (Condition c : scope.subconditions(rule)) {
                     if (c instanceof Condition.TermSubcondition t && !t.any()) {   // 'x is any' names no term
                         check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
                                 () -> Describe.subcondition(t), t.location(), sink);
@@ -52,8 +52,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
 
     private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
             Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
-        if (terms.isEmpty() || terms.get().isEmpty()
-                || terms.get().stream().anyMatch(x -> Names.same(x.name(), term))) {
+        if (terms.isEmpty() || terms.get().isEmpty() || Scope.hasTerm(terms.get(), term)) {
             return;
         }
         List<String> owners = scope.ownersOfTerm(term, variable, inCondition);

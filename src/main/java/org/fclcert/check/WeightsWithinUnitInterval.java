@@ -16,7 +16,7 @@ public final class WeightsWithinUnitInterval implements FunctionBlockRule {
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        for (OperandUse use : OperandUse.all(block)) {
+        for (OperandUse use : Scope.of(block).operandUses()) {
             if (use.role() == OperandUse.Role.WEIGHT && use.operand() instanceof Literal w
                     && !(w.value() >= 0 && w.value() <= 1)) {
                 sink.report(finding(w.location(), "WITH " + Describe.number(w.value()) + ": " + use.where()

@@ -18,15 +18,24 @@ import org.fclcert.model.Names;
  * {@link #setInput(int, double)}, {@link #evaluate()}, {@link #output(int)}), computing the same exact
  * closed-form results as {@link FunctionBlockInstance}.
  *
- * <p>The block is compiled into flat arrays: the points of every input term, each rule as one opcode
- * (the AND or OR algorithm fused with the rule's shape, e.g. "MIN over these degrees") over indices
- * into a degree array that also holds 1 − μ for negated terms, and each subconclusion as an index
- * into its output's accumulator. {@link #evaluate()} does no name lookup, no virtual call and no
- * allocation. With ACCU MAX the contributions to one output term (same weight and activation) are
- * merged into one activation level before the accumulated set is built, since
- * max(min(l1, μ), min(l2, μ)) = min(max(l1, l2), μ) exactly: the set has the same values and fewer
- * breakpoints, so its CoG, CoA, LM and RM are the reference's up to the rounding of a shorter sum
- * (agreement documented in docs/performance.md and tested in CompiledEvaluatorAgreementTest).
+ * <p>The block is compiled into flat arrays: the input terms grouped by shape ({@link TermDegrees}), each
+ * rule as one opcode (the AND or OR algorithm fused with the rule's shape, e.g. "MIN over these degrees")
+ * over indices into a degree array that also holds 1 − μ for negated terms, and each subconclusion as an
+ * index into its output's accumulator. {@link #evaluate()} does no name lookup and no allocation. With
+ * ACCU MAX the contributions to one output term (same weight and activation) are merged into one
+ * activation level before the accumulated set is built, since max(min(l1, μ), min(l2, μ)) =
+ * min(max(l1, l2), μ) exactly: the set has the same values and fewer breakpoints, so its CoG, CoA, LM and
+ * RM are the reference's up to the rounding of a shorter sum (agreement documented in
+ * docs/performance.md and tested in CompiledEvaluatorAgreementTest). A CoG over terms that form a chain
+ * (a fuzzy partition) is computed by {@link ClippedChain} in time linear in the active terms.
+ *
+ * <p>A MIN/MAX block (the usual Mamdani block) that has been evaluated a couple of thousand times gets
+ * code of its own ({@link MinMaxKernel}): the same arithmetic, bit for bit, without the loads of an
+ * interpreted plan. Short-lived instances (a certification case, a fuzzed program) never pay for it.
+ *
+ * <p>This file is larger than the project's usual size: it is the one place where the flat plan is both
+ * compiled and run, and splitting compilation from the loops that read its arrays would spread one
+ * data layout over several files.
  *
  * <p>Blocks using what the flat plan does not cover (term points from variables, smooth named shapes,
  * bare-variable conclusions or subconditions, variable weights) are evaluated by a wrapped
@@ -43,6 +52,11 @@ public final class CompiledEvaluator {
     private static final int OR_ASUM = 5;
     private static final int OR_BSUM = 6;
     private static final int GENERAL = 7;
+
+    // output kinds
+    private static final int OUT_GENERAL = 0;
+    private static final int OUT_COGS = 1;
+    private static final int OUT_CHAIN = 2;
 
     // subconclusion kinds
     private static final int ACC_SINGLETON = 0;
@@ -73,15 +87,17 @@ public final class CompiledEvaluator {
     private final boolean[] integerSlot;
     private final double[] minSlot;
     private final double[] maxSlot;
+    /**
+     * Per input: the bound b such that a value with |value| &lt;= b is stored without further checks (real types
+     * are symmetric; NaN where every value is checked, and NaN or ±∞ values fail the one compare).
+     */
+    private final double[] directBound;
+    /** Input i is in slot i for every i (inputs are declared first), so a store needs no indirection. */
+    private final boolean inputsFirst;
 
     // fuzzification
+    private TermDegrees terms;
     private int termCount;
-    private int[] termSlot;
-    /** Start of the term's points in px/py; the count in termPoints, -1 for a singleton. */
-    private int[] termStart;
-    private int[] termPoints;
-    private double[] tx;
-    private double[] ty;
     /** Degrees: [0, termCount) the terms, then 1 − μ for each term in negatedTerms, in that order. */
     private double[] deg;
     private int[] negatedTerms;
@@ -118,6 +134,10 @@ public final class CompiledEvaluator {
     private double[][] shapeY;
     private double[] lo;
     private double[] hi;
+    /** Per output: its CoG in closed form over a chain of terms ({@link ClippedChain}), else null. */
+    private ClippedChain[] chains;
+    /** Per output: OUT_COGS (singletons, ACCU MAX, CoGS), OUT_CHAIN (chains[o]) or OUT_GENERAL. */
+    private int[] outKind;
     private final SetBuilder set = new SetBuilder();
 
     CompiledEvaluator(BlockPlan plan) {
@@ -148,7 +168,18 @@ public final class CompiledEvaluator {
             minSlot[s] = plan.types[s].min();
             maxSlot[s] = plan.types[s].max();
         }
-        if (flat(plan)) {
+        boolean flat = flat(plan);
+        this.directBound = new double[nIn];
+        boolean first = true;
+        for (int i = 0; i < nIn; i++) {
+            // a NaN bound sends every value to setInputChecked: integer inputs (rounded) and the wrapped instance
+            int s = inputSlots[i];
+            boolean direct = !integerSlot[s] && flat && minSlot[s] == -maxSlot[s];
+            directBound[i] = direct ? maxSlot[s] : Double.NaN;
+            first &= s == i;
+        }
+        this.inputsFirst = first;
+        if (flat) {
             this.fallback = null;
             compileTerms();
             compileRules();
@@ -209,25 +240,8 @@ public final class CompiledEvaluator {
     // ---------------------------------------------------------------- compilation
 
     private void compileTerms() {
-        termCount = plan.termShape.length;
-        termSlot = plan.termVariableSlot.clone();
-        termStart = new int[termCount];
-        termPoints = new int[termCount];
-        int total = 0;
-        for (int t = 0; t < termCount; t++) {
-            total += plan.shapes[plan.termShape[t]].n;
-        }
-        tx = new double[total];
-        ty = new double[total];
-        int at = 0;
-        for (int t = 0; t < termCount; t++) {
-            Shape s = plan.shapes[plan.termShape[t]];
-            termStart[t] = at;
-            termPoints[t] = s.singleton ? -1 : s.n;
-            System.arraycopy(s.sortedX, 0, tx, at, s.n);
-            System.arraycopy(s.sortedY, 0, ty, at, s.n);
-            at += s.n;
-        }
+        terms = new TermDegrees(plan);
+        termCount = terms.count;
     }
 
     private void compileRules() {
@@ -388,6 +402,22 @@ public final class CompiledEvaluator {
             }
         }
         accStart[n] = accAt;
+        chains = new ClippedChain[n];
+        outKind = new int[n];
+        for (int o = 0; o < n; o++) {
+            OutputPlan out = outputs[o];
+            if (out.singletons() && out.accumulation() == AccumulationMethod.MAX
+                    && (out.method() == DefuzzificationMethod.COGS || out.method() == DefuzzificationMethod.COG)) {
+                outKind[o] = OUT_COGS;
+            } else if (merged[o] && out.method() == DefuzzificationMethod.COG) {
+                Shape[] shapes = new Shape[out.termShapes().length];
+                for (int t = 0; t < shapes.length; t++) {
+                    shapes[t] = plan.shapes[out.termShapes()[t]];
+                }
+                chains[o] = ClippedChain.of(shapes, lo[o], hi[o]);
+                outKind[o] = chains[o] != null ? OUT_CHAIN : OUT_GENERAL;
+            }
+        }
         acc = new double[accAt];
         accValue = new double[accAt];
         for (int o = 0; o < n; o++) {
@@ -465,12 +495,38 @@ public final class CompiledEvaluator {
 
     private int[] accAccu;
     /**
+     * Evaluations of a MIN/MAX block on the array loops before its straight-line code is generated: an
+     * instance used for a few steps (a certification case, a fuzzed program) never pays for generating it.
+     */
+    private static final int KERNEL_AFTER = 2000;
+    private int kernelAfter = KERNEL_AFTER;
+    private int evaluations;
+    /** The block as straight-line code ({@link MinMaxKernel}), once generated; null before or when too large. */
+    private MinMaxKernel kernel;
+    private boolean othersToFuzzify;
+    /**
      * True when every rule is one term or an AND MIN over terms and every subconclusion accumulates by MAX
      * (the usual Mamdani block): then {@link #runMinMaxRules} runs them without any opcode dispatch.
      */
     private boolean minMax;
     /** For the MIN/MAX plan: the weight each subconclusion multiplies by (1 for merged point outputs). */
     private double[] minMaxWeight;
+
+    /** For tests: generate the straight-line code at the next evaluation (false when the block has none). */
+    boolean generateAtNextEvaluation() {
+        kernelAfter = evaluations + 1;
+        return fallback == null && minMax;
+    }
+
+    /** For tests: whether output {@code index}'s CoG is computed on a chain of terms ({@link ClippedChain}). */
+    boolean usesChain(int index) {
+        return fallback == null && outKind[index] == OUT_CHAIN;
+    }
+
+    /** For tests: whether the generated code evaluates this instance. */
+    boolean generated() {
+        return kernel != null;
+    }
 
     // ---------------------------------------------------------------- interface
 
@@ -531,15 +587,50 @@ public final class CompiledEvaluator {
      * rounded half away from zero and range-checked).
      */
     public void setInput(int index, double value) throws EvaluationException {
+        if (Math.abs(value) <= directBound[index]) {
+            values[inputSlots[index]] = value;   // the common case: a real in range
+        } else {
+            setInputChecked(index, value);
+        }
+    }
+
+    /**
+     * Sets every input, in declaration order ({@link #inputNames()}): {@code values[i]} as
+     * {@link #setInput(int, double)} sets input i. Stops at the first value refused, with its error.
+     */
+    public void setInputs(double... values) throws EvaluationException {
+        if (values.length != inputSlots.length) {
+            throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
+        }
+        final double[] v = this.values;
+        final double[] bound = directBound;
+        if (inputsFirst) {
+            for (int i = 0; i < values.length; i++) {
+                double x = values[i];
+                if (Math.abs(x) <= bound[i]) {
+                    v[i] = x;
+                } else {
+                    setInputChecked(i, x);
+                }
+            }
+            return;
+        }
+        for (int i = 0; i < values.length; i++) {
+            double x = values[i];
+            if (Math.abs(x) <= bound[i]) {
+                v[inputSlots[i]] = x;
+            } else {
+                setInputChecked(i, x);
+            }
+        }
+    }
+
+    private void setInputChecked(int index, double value) throws EvaluationException {
         if (fallback != null) {
             fallback.set(plan.inputNames.get(index), value);
             return;
         }
         int slot = inputSlots[index];
-        if (!integerSlot[slot] && value >= minSlot[slot] && value <= maxSlot[slot]) {
-            values[slot] = value;   // the common case: a real in range (NaN fails both compares)
-            return;
-        }
         if (!Double.isFinite(value)) {
             throw new EvaluationException(EvaluationCode.NOT_FINITE,
                     "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
@@ -580,15 +671,26 @@ public final class CompiledEvaluator {
 
     /** One evaluation: fuzzification, every rule block in textual order, defuzzification. */
     public void evaluate() throws EvaluationException {
-        if (fallback != null) {
+        if (kernel != null) {
+            evaluateKernel();     // first, and the rest out of line, so that this method is small enough to inline
+        } else if (fallback != null) {
             fallback.evaluate();
-            return;
+        } else {
+            evaluateOnArrays();
         }
+    }
+
+    private void evaluateOnArrays() throws EvaluationException {
         fuzzify();
         java.util.Arrays.fill(acc, 0.0);
-        java.util.Arrays.fill(recorded, 0.0);
+        if (recorded.length > 0) {
+            java.util.Arrays.fill(recorded, 0.0);
+        }
         if (minMax) {
             runMinMaxRules();
+            if (++evaluations == kernelAfter) {
+                kernel = generateKernel();
+            }
         } else {
             runRules();
         }
@@ -597,42 +699,10 @@ public final class CompiledEvaluator {
         }
     }
 
-    /** 5.2.2, as Pwl.degree on the flattened points (same arithmetic, so the same degrees). */
+    /** 5.2.2 ({@link TermDegrees}: the reference's arithmetic, so the same degrees), then 1 − μ for NOT. */
     private void fuzzify() {
-        final double[] x = tx;
-        final double[] y = ty;
         final double[] d = deg;
-        for (int t = 0; t < termCount; t++) {
-            double u = values[termSlot[t]];
-            int b = termStart[t];
-            int n = termPoints[t];
-            if (n < 0) {
-                d[t] = u == x[b] ? 1.0 : 0.0;
-                continue;
-            }
-            int e = b + n - 1;
-            if (u < x[b]) {
-                d[t] = y[b];
-            } else if (u > x[e]) {
-                d[t] = y[e];
-            } else {
-                int i = b;
-                while (x[i] < u) {
-                    i++;
-                }
-                if (x[i] == u) {
-                    double max = y[i];
-                    for (int j = i + 1; j <= e && x[j] == u; j++) {
-                        max = Math.max(max, y[j]);
-                    }
-                    d[t] = max;
-                } else {
-                    double y0 = y[i - 1];
-                    double y1 = y[i];
-                    d[t] = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
-                }
-            }
-        }
+        terms.fuzzify(values, d);
         int[] neg = negatedTerms;
         for (int k = 0; k < neg.length; k++) {
             d[termCount + k] = 1.0 - d[neg[k]];
@@ -716,17 +786,16 @@ public final class CompiledEvaluator {
         final double[] w = minMaxWeight;
         final double[] a = acc;
         int rules = starts.length;
+        // no test of m: max(acc, w * 0) is acc (acc >= 0), and a branch on the data costs more than the work
         for (int r = 0; r < rules; r++) {
             int e = ends[r];
             double m = d[opd[starts[r]]];
-            for (int k = starts[r] + 1; k < e && m > 0; k++) {
+            for (int k = starts[r] + 1; k < e; k++) {
                 m = Math.min(m, d[opd[k]]);
             }
-            if (m > 0) {
-                for (int c = cs[r]; c < cs[r + 1]; c++) {
-                    int t = target[c];
-                    a[t] = Math.max(a[t], w[c] * m);
-                }
+            for (int c = cs[r]; c < cs[r + 1]; c++) {
+                int t = target[c];
+                a[t] = Math.max(a[t], w[c] * m);
             }
         }
     }
@@ -787,11 +856,68 @@ public final class CompiledEvaluator {
         };
     }
 
+    /** {@link #evaluate} by the generated code, which also stores the usual CoGS results itself. */
+    private void evaluateKernel() throws EvaluationException {
+        if (othersToFuzzify) {
+            terms.fuzzifyOthers(values, deg);
+        }
+        if (kernel.run(values, deg, acc) > 0) {
+            for (int o = 0; o < outputs.length; o++) {
+                defuzzify(o);       // outputs the kernel left (a stored CoGS is stored again, the same)
+            }
+        }
+    }
+
+    /** The straight-line code of this MIN/MAX block, storing REAL CoGS outputs too; null when too large. */
+    private MinMaxKernel generateKernel() {
+        int n = outputs.length;
+        int[] slot = new int[n];
+        int[] from = new int[n];
+        int[] to = new int[n];
+        double[] min = new double[n];
+        double[] max = new double[n];
+        for (int o = 0; o < n; o++) {
+            int s = outputs[o].slot();
+            slot[o] = outKind[o] == OUT_COGS && !integerSlot[s] ? s : -1;
+            from[o] = accStart[o];
+            to[o] = accStart[o + 1];
+            min[o] = minSlot[s];
+            max[o] = maxSlot[s];
+        }
+        othersToFuzzify = terms.hasOthers();
+        return MinMaxKernel.generate(new MinMaxKernel.Block(terms, negatedTerms, ruleStart, ruleEnd, operand,
+                conclusionStart, conclusionTarget, minMaxWeight, acc.length, slot, from, to, accValue, min, max));
+    }
+
     private void defuzzify(int o) throws EvaluationException {
         OutputPlan out = outputs[o];
         double result;
         boolean empty;
-        if (out.singletons()) {
+        if (outKind[o] == OUT_COGS) {
+            // CoGS (Σ v·μ / Σ μ) over degrees accumulated by MAX, so Σ μ is 0 only when every μ is
+            int b = accStart[o];
+            int e = accStart[o + 1];
+            final double[] a = acc;
+            final double[] v = accValue;
+            double num = 0;
+            double den = 0;
+            for (int k = b; k < e; k++) {
+                num += v[k] * a[k];
+                den += a[k];
+            }
+            result = num / den;
+            int slot = out.slot();
+            if (den > 0 && result >= minSlot[slot] && result <= maxSlot[slot] && !integerSlot[slot]) {
+                values[slot] = result;   // the common case: a real in range (NaN fails the compares)
+                return;
+            }
+            empty = den == 0;
+            result = empty ? Double.NaN : result;
+        } else if (outKind[o] == OUT_CHAIN) {
+            ClippedChain chain = chains[o];
+            result = chain.centreOfGravity(acc, mergedWeight, mergedProd, accStart[o]);
+            empty = chain.empty();
+        } else if (out.singletons()) {
             result = singletons(o, out);
             empty = true;
             for (int k = accStart[o]; k < accStart[o + 1] && Double.isNaN(result); k++) {

@@ -219,11 +219,17 @@ final class ProcessIut implements ImplementationUnderTest {
             throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
                     + Protocol.quote(early.text()));
         }
+        long sentAt = System.nanoTime();
         session.send(write(request.put("id", id)));
-        long deadline = System.nanoTime() + timeout.toNanos();
+        long deadline = sentAt + timeout.toNanos();
         while (true) {
             ReplyReader.Event event = nextEvent(deadline, op, timeout);
             if (event instanceof ReplyReader.Line line && !line.text().isBlank()) {
+                if (line.readAt() < sentAt) {
+                    // read from the pipe before the request went out, though not yet handed over when it did
+                    throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
+                            + Protocol.quote(line.text()));
+                }
                 return parse(line.text(), op, id);
             }
             if (event instanceof ReplyReader.EndOfStream) {

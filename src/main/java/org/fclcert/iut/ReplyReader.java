@@ -17,7 +17,8 @@ final class ReplyReader {
     /** What the reader saw on stdout. */
     sealed interface Event {}
 
-    record Line(String text) implements Event {}
+    /** A line, with the {@link System#nanoTime} at which the read that completed it returned. */
+    record Line(String text, long readAt) implements Event {}
 
     record TooLong(int limit) implements Event {}
 
@@ -31,6 +32,8 @@ final class ReplyReader {
     private final ByteArrayOutputStream line = new ByteArrayOutputStream();
     private final Thread reader;
     private boolean skipping;
+    /** When the chunk being scanned was read: a line is as old as the read that brought its end. */
+    private long chunkReadAt;
 
     ReplyReader(InputStream stdout, int maxLineBytes, String threadName) {
         this.maxLineBytes = maxLineBytes;
@@ -73,6 +76,7 @@ final class ReplyReader {
         try (in) {
             int n;
             while ((n = in.read(chunk)) >= 0) {
+                chunkReadAt = System.nanoTime();
                 scan(chunk, n);
             }
         } catch (IOException e) {
@@ -118,7 +122,7 @@ final class ReplyReader {
     private void endLine() throws InterruptedException {
         if (!skipping) {
             String text = line.toString(StandardCharsets.UTF_8);
-            events.put(new Line(text.endsWith("\r") ? text.substring(0, text.length() - 1) : text));
+            events.put(new Line(text.endsWith("\r") ? text.substring(0, text.length() - 1) : text, chunkReadAt));
         }
         skipping = false;
         line.reset();

@@ -2,8 +2,10 @@ package org.fclcert.syntax;
 
 import java.math.BigInteger;
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.function.Function;
 import org.antlr.v4.runtime.ParserRuleContext;
@@ -74,24 +76,75 @@ final class ModelBuilder {
 
     // ---------------------------------------------------------------- function block
 
+    /**
+     * One item of a function block, built: its place in 5.4's order, how a message names it, where it starts,
+     * and its model (the variables of a VAR section, a Fuzzification, Defuzzification, RuleBlock or
+     * OptionsBlock).
+     */
+    private record Item(int rank, String what, Token start, Object model) {
+    }
+
+    /** Items the fast parse completed, built at once ({@link #buildItemEarly}); the rest are built at the end. */
+    private final Map<FbItemContext, Item> earlyItems = new IdentityHashMap<>();
+    /** Declarations the fast parse completed, built at once ({@link #buildDeclarationEarly}). */
+    private final Map<VarDeclarationContext, List<Variable>> earlyDeclarations = new IdentityHashMap<>();
+
+    /**
+     * Builds a function block item as soon as the fast parse (which stops at the first error, so that every
+     * item it completes is whole) has read it, and drops its subtree: a program of 100 000 FUZZIFY blocks
+     * never holds their trees all at once. Called for each completed item by the parser ({@code FclParser.itemParsed}).
+     */
+    void buildItemEarly(FbItemContext ctx) {
+        earlyItems.put(ctx, item(ctx));
+        ctx.children = null;
+    }
+
+    /** Likewise one variable declaration, so that a VAR section of 100 000 declarations keeps no trees. */
+    void buildDeclarationEarly(VarDeclarationContext ctx) {
+        earlyDeclarations.put(ctx, declaration(ctx, kind((VarSectionContext) ctx.getParent())));
+        ctx.children = null;
+    }
+
+    private Item item(FbItemContext item) {
+        Object model;
+        if (item.varSection() != null) {
+            model = varSection(item.varSection());
+        } else if (item.fuzzifyBlock() != null) {
+            model = fuzzification(item.fuzzifyBlock());
+        } else if (item.defuzzifyBlock() != null) {
+            model = defuzzification(item.defuzzifyBlock());
+        } else if (item.ruleBlock() != null) {
+            model = ruleBlock(item.ruleBlock());
+        } else {
+            model = options(item.optionBlock());
+        }
+        return new Item(bodyRank(item), describeItem(item), item.start, model);
+    }
+
+    @SuppressWarnings("unchecked")
     private FunctionBlock functionBlock(FunctionBlockContext ctx) {
-        checkBodyOrder(ctx);
+        List<Item> items = new ArrayList<>();
+        for (FbItemContext item : ctx.fbItem()) {
+            Item built = earlyItems.remove(item);
+            items.add(built != null ? built : item(item));
+        }
+        checkBodyOrder(items);
         List<Variable> variables = new ArrayList<>();
         List<Fuzzification> fuzzifications = new ArrayList<>();
         List<Defuzzification> defuzzifications = new ArrayList<>();
         List<RuleBlock> ruleBlocks = new ArrayList<>();
         List<OptionsBlock> options = new ArrayList<>();
-        for (FbItemContext item : ctx.fbItem()) {
-            if (item.varSection() != null) {
-                variables.addAll(varSection(item.varSection()));
-            } else if (item.fuzzifyBlock() != null) {
-                fuzzifications.add(fuzzification(item.fuzzifyBlock()));
-            } else if (item.defuzzifyBlock() != null) {
-                defuzzifications.add(defuzzification(item.defuzzifyBlock()));
-            } else if (item.ruleBlock() != null) {
-                ruleBlocks.add(ruleBlock(item.ruleBlock()));
-            } else if (item.optionBlock() != null) {
-                options.add(options(item.optionBlock()));
+        for (Item item : items) {
+            if (item.model() instanceof List<?> declared) {
+                variables.addAll((List<Variable>) declared);
+            } else if (item.model() instanceof Fuzzification f) {
+                fuzzifications.add(f);
+            } else if (item.model() instanceof Defuzzification d) {
+                defuzzifications.add(d);
+            } else if (item.model() instanceof RuleBlock rb) {
+                ruleBlocks.add(rb);
+            } else if (item.model() instanceof OptionsBlock o) {
+                options.add(o);
             }
         }
         return new FunctionBlock(name(ctx.name()), variables, fuzzifications, defuzzifications, ruleBlocks,
@@ -101,18 +154,17 @@ final class ModelBuilder {
     private static final String BODY_ORDER = "a function block declares its VAR_INPUT and VAR_OUTPUT sections,"
             + " then VAR, then its FUZZIFY blocks, DEFUZZIFY blocks, RULEBLOCKs and OPTIONS, in this order (5.4)";
 
-    private void checkBodyOrder(FunctionBlockContext ctx) {
+    private void checkBodyOrder(List<Item> items) {
         int highest = 0;
         String highestWhat = null;
-        for (FbItemContext item : ctx.fbItem()) {
-            int rank = bodyRank(item);
-            String what = describeItem(item);
-            if (rank < highest) {
-                diagnostics.error(item.start, SyntaxCode.BODY_ORDER, what + " after " + highestWhat + ": " + BODY_ORDER);
+        for (Item item : items) {
+            if (item.rank() < highest) {
+                diagnostics.error(item.start(), SyntaxCode.BODY_ORDER, item.what() + " after " + highestWhat + ": "
+                        + BODY_ORDER);
                 return;
             }
-            highest = rank;
-            highestWhat = "a " + what;
+            highest = item.rank();
+            highestWhat = "a " + item.what();
         }
     }
 
@@ -137,18 +189,30 @@ final class ModelBuilder {
     // ---------------------------------------------------------------- variables
 
     private List<Variable> varSection(VarSectionContext ctx) {
-        VariableKind kind = switch (ctx.kind.getType()) {
+        VariableKind kind = kind(ctx);
+        List<Variable> variables = new ArrayList<>();
+        for (VarDeclarationContext decl : ctx.varDeclaration()) {
+            List<Variable> built = earlyDeclarations.remove(decl);
+            variables.addAll(built != null ? built : declaration(decl, kind));
+        }
+        return variables;
+    }
+
+    private static VariableKind kind(VarSectionContext ctx) {
+        return switch (ctx.kind.getType()) {
             case FclLexer.VAR_INPUT -> VariableKind.INPUT;
             case FclLexer.VAR_OUTPUT -> VariableKind.OUTPUT;
             default -> VariableKind.LOCAL;
         };
-        List<Variable> variables = new ArrayList<>();
-        for (VarDeclarationContext decl : ctx.varDeclaration()) {
-            DataType type = dataType(decl.typeName());
-            Optional<Literal> initial = decl.literal() == null ? Optional.empty() : Optional.of(literal(decl.literal()));
-            for (NameContext n : decl.name()) {
-                variables.add(new Variable(name(n), kind, type, initial, at(n.start)));
-            }
+    }
+
+    private List<Variable> declaration(VarDeclarationContext decl, VariableKind kind) {
+        DataType type = dataType(decl.typeName());
+        Optional<Literal> initial = decl.literal() == null ? Optional.empty() : Optional.of(literal(decl.literal()));
+        List<NameContext> names = decl.name();
+        List<Variable> variables = new ArrayList<>(names.size());
+        for (NameContext n : names) {
+            variables.add(new Variable(name(n), kind, type, initial, at(n.start)));
         }
         return variables;
     }
@@ -388,6 +452,19 @@ final class ModelBuilder {
         ctx.children = null;
     }
 
+    /** Digits only, without a leading zero (unless the number is 0): the text BigInteger would give back. */
+    private static boolean plainNumber(String text) {
+        if (text.isEmpty() || text.length() > 1 && text.charAt(0) == '0') {
+            return false;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            if (text.charAt(i) < '0' || text.charAt(i) > '9') {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private Rule rule(FuzzyRuleContext ctx) {
         return new Rule(ruleName(ctx.ruleName()), condition(ctx.condition()), conclusion(ctx.conclusion()),
                 at(ctx.start));
@@ -400,6 +477,9 @@ final class ModelBuilder {
                 diagnostics.error(ctx.start, SyntaxCode.RULE_HEADER, "a rule number has no sign: write 'RULE "
                         + text.substring(1) + ":' (5.4)");
                 text = text.substring(1);
+            }
+            if (plainNumber(text)) {
+                return text;    // already canonical: no BigInteger round trip for the usual rule number
             }
             try {
                 return new BigInteger(text).toString();

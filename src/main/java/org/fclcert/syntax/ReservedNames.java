@@ -2,19 +2,16 @@ package org.fclcert.syntax;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.antlr.v4.runtime.ParserRuleContext;
+import java.util.function.Consumer;
 import org.antlr.v4.runtime.Token;
-import org.antlr.v4.runtime.tree.ErrorNode;
-import org.antlr.v4.runtime.tree.ParseTreeListener;
-import org.antlr.v4.runtime.tree.TerminalNode;
 
 /**
  * Finds keywords used as names while the parser runs. The grammar accepts the keywords that cannot
  * be mistaken for structure (MAX, RANGE, REAL, ...) where a name stands, so that this can say exactly
- * which keyword names what, while parsing goes on. Listening during the parse costs far less than
- * walking a tree of millions of nodes afterwards.
+ * which keyword names what, while parsing goes on. The parser hands over each such name as it parses it
+ * ({@code FclParser.keywordName}), which costs far less than walking a tree of millions of nodes afterwards.
  */
-final class ReservedNames implements ParseTreeListener {
+final class ReservedNames implements Consumer<FclParser.NameContext> {
     private final List<FclParser.NameContext> keywordNames = new ArrayList<>();
 
     /** Forgets what an abandoned parse attempt found (the SLL attempt before the LL one). */
@@ -30,22 +27,7 @@ final class ReservedNames implements ParseTreeListener {
     }
 
     @Override
-    public void exitEveryRule(ParserRuleContext ctx) {
-        // only a keyword the grammar took as a name; a token error recovery put here is reported already
-        if (ctx instanceof FclParser.NameContext name && name.softKeyword() != null && name.getStart() != null) {
-            keywordNames.add(name);
-        }
-    }
-
-    @Override
-    public void enterEveryRule(ParserRuleContext ctx) {
-    }
-
-    @Override
-    public void visitTerminal(TerminalNode node) {
-    }
-
-    @Override
-    public void visitErrorNode(ErrorNode node) {
+    public void accept(FclParser.NameContext name) {
+        keywordNames.add(name);
     }
 }

@@ -3,7 +3,6 @@ package org.fclcert.syntax;
 import java.util.List;
 import java.util.Optional;
 import org.antlr.v4.runtime.BailErrorStrategy;
-import org.antlr.v4.runtime.CharStreams;
 import org.antlr.v4.runtime.CommonTokenStream;
 import org.antlr.v4.runtime.ListTokenSource;
 import org.antlr.v4.runtime.Token;
@@ -30,6 +29,8 @@ public final class StrictReader implements FclReader {
      */
     private static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
+    /** Texts up to this many characters keep their token objects (a few MB at most), not the compact form. */
+    private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;
 
@@ -76,9 +77,14 @@ public final class StrictReader implements FclReader {
             ReaderOptions options) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
-        FclLexer lexer = new FclLexer(CharStreams.fromString(body, sourceName));
-        lexer.removeErrorListeners();   // the lexer cannot fail: unknown characters are ANY tokens
+        // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
+        FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
+        // the compact table pays off for large texts (issue 18); a small text's tokens are kept as the lexer
+        // made them, rather than made a second time when the parser asks for them
+        // (FCL averages five or more characters a token: the corpus's densest files have five)
+        TokenTable table = body.length() <= SMALL_TEXT ? TokenTable.keepingTokens(body.length() / 5 + 16)
+                : new TokenTable();
         if (options.tokenFilter() != ReaderOptions.TokenFilter.NONE) {
             List<Token> lexed = new java.util.ArrayList<>();
             Token t;
@@ -87,8 +93,9 @@ public final class StrictReader implements FclReader {
                 lexed.add(t);
             } while (t.getType() != Token.EOF);
             source = new ListTokenSource(options.tokenFilter().filter(lexed, diagnostics.asReport()));
+            table = TokenTable.keepingTokens();   // a dialect's filter may make up tokens: keep them as made
         }
-        TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics);
+        TokenPreScan.Result scan = TokenPreScan.scan(source, diagnostics, table);
         if (scan.tooDeep() || diagnostics.tooMany()) {
             return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
@@ -109,14 +116,15 @@ public final class StrictReader implements FclReader {
         }
         if (!parsed.complete()) {
             // the builder needs a tree without gaps: the semantic checks get the repaired text's, if any
-            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, scan.tokens(), options));
+            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, parsed.tokens(), options));
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());
         return new Outcome(diagnostics.hasErrors() ? Optional.empty() : Optional.of(program), Optional.empty());
     }
 
-    private record Parsed(FclParser.ProgramContext tree, boolean complete) {
+    /** The tree, whether it is whole, and after a syntax error every token (which the repair needs). */
+    private record Parsed(FclParser.ProgramContext tree, boolean complete, List<Token> tokens) {
     }
 
     /** Runs the task on a fresh thread with a large stack and returns its result on this thread. */
@@ -154,33 +162,36 @@ public final class StrictReader implements FclReader {
     }
 
     /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
-    private static Parsed parse(List<Token> tokens, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
+    private static Parsed parse(TokenTable table, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
             ModelBuilder builder) {
-        CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(tokens));
-        FclParser parser = new FclParser(stream);
+        FclParser parser = new FclParser(new TableTokenStream(table));
         parser.removeErrorListeners();
-        parser.addParseListener(reservedNames);
+        parser.keywordName = reservedNames;
         parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         parser.setErrorHandler(new BailErrorStrategy());
-        // this pass stops at the first error, so every rule it completes is whole: build it at once
+        // this pass stops at the first error, so every rule, item and declaration it completes is whole: build
+        // each at once and drop its subtree, so that a large program's trees are never all held
         parser.ruleParsed = builder::buildEarly;
+        parser.itemParsed = builder::buildItemEarly;
+        parser.declarationParsed = builder::buildDeclarationEarly;
         ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
-            return new Parsed(parser.program(), true);
+            return new Parsed(parser.program(), true, List.of());
         } catch (ParseCancellationException e) {
             diagnostics.rollback(mark);   // the second pass reports everything again
-            parser.ruleParsed = null;
-            stream.seek(0);
-            parser.reset();
+            List<Token> tokens = table.toList();
+            parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
+            parser.removeErrorListeners();
             reservedNames.reset();
+            parser.keywordName = reservedNames;
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);
             try {
                 FclParser.ProgramContext tree = parser.program();
-                return new Parsed(tree, !strategy.recovered());
+                return new Parsed(tree, !strategy.recovered(), tokens);
             } catch (FclErrorStrategy.StopReading stop) {
-                return new Parsed(null, false);
+                return new Parsed(null, false, tokens);
             }
         }
     }

@@ -1,7 +1,5 @@
 package org.fclcert.syntax;
 
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -31,7 +29,9 @@ final class TokenPreScan {
     private enum RulePart { NONE, CONDITION, CONCLUSION }
 
     private final ReaderDiagnostics diagnostics;
-    private final List<Token> out = new ArrayList<>();
+    private final TokenTable out;
+    /** The last token added to {@link #out}, which the next token may change. */
+    private Token last;
     private boolean inOptions;
     private boolean inRuleBlock;
     private RulePart rulePart = RulePart.NONE;
@@ -40,16 +40,18 @@ final class TokenPreScan {
     private boolean tooDeep;
     private int lastBadCharStop = -2;
 
-    private TokenPreScan(ReaderDiagnostics diagnostics) {
+    private TokenPreScan(ReaderDiagnostics diagnostics, TokenTable out) {
         this.diagnostics = diagnostics;
+        this.out = out;
     }
 
     /** The checked tokens for the parser (default channel, ending with EOF). */
-    record Result(List<Token> tokens, boolean tooDeep, int maxDepth) {
+    record Result(TokenTable tokens, boolean tooDeep, int maxDepth) {
     }
 
-    static Result scan(TokenSource lexer, ReaderDiagnostics diagnostics) {
-        TokenPreScan scan = new TokenPreScan(diagnostics);
+    /** Scans the lexer's tokens into {@code out} (compact, or keeping the token objects a filter made). */
+    static Result scan(TokenSource lexer, ReaderDiagnostics diagnostics, TokenTable out) {
+        TokenPreScan scan = new TokenPreScan(diagnostics, out);
         Token t;
         do {
             t = lexer.nextToken();
@@ -70,14 +72,14 @@ final class TokenPreScan {
         }
         if (type == FclLexer.RPAREN) {
             depth = Math.max(0, depth - 1);
-            out.add(t);
+            add(t);
             return;
         }
         if (inOptions) {
             if (type == FclLexer.END_OPTIONS || type == FclLexer.END_OPTION || type == FclLexer.END_FUNCTION_BLOCK) {
                 inOptions = false;
             }
-            out.add(t);
+            add(t);
             return;
         }
         switch (type) {
@@ -108,7 +110,7 @@ final class TokenPreScan {
         if (t.getType() == FclLexer.END_RULEBLOCK) {
             inRuleBlock = false;
         }
-        out.add(t);
+        add(t);
     }
 
     private void checkComment(Token t) {
@@ -124,7 +126,7 @@ final class TokenPreScan {
     }
 
     private void badCharacter(Token t) {
-        Token previous = out.isEmpty() ? null : out.get(out.size() - 1);
+        Token previous = last;
         if (t.getText().equals(".") && previous != null && previous.getType() == FclLexer.INTEGER
                 && previous.getStopIndex() + 1 == t.getStartIndex()) {
             diagnostics.error(previous, SyntaxCode.BAD_NUMBER, NumberSyntax.badRealProblem(previous.getText() + "."));
@@ -161,7 +163,7 @@ final class TokenPreScan {
                     + " an identifier cannot end with '_' (IEC 61131-3 B.1.1)");
         }
         ((CommonToken) t).setType(FclLexer.IDENT);
-        out.add(t);
+        add(t);
     }
 
     private void number(Token t) {
@@ -170,24 +172,24 @@ final class TokenPreScan {
         if (t.getType() == FclLexer.BAD_REAL) {
             ((CommonToken) t).setType(FclLexer.REAL_LITERAL);
         }
-        out.add(t);
+        add(t);
     }
 
     /** {@code RULE1:} is one identifier; split it into RULE and 1 after saying so (Figure D.4). */
     private void colon(Token t) {
-        Token previous = out.isEmpty() ? null : out.get(out.size() - 1);
+        Token previous = last;
         if (inRuleBlock && previous != null && previous.getType() == FclLexer.IDENT) {
             Matcher m = GLUED_RULE.matcher(previous.getText());
             if (m.matches()) {
                 diagnostics.error(previous, SyntaxCode.GLUED_RULE_NUMBER, "'" + previous.getText()
                         + "' is read as one name; a rule starts with the keyword RULE, a space and its number:"
                         + " write 'RULE " + m.group(1) + ":' (5.2.4)");
-                out.set(out.size() - 1, retyped(previous, FclLexer.RULE, 0, 4));
-                out.add(retyped(previous, FclLexer.INTEGER, 4, previous.getText().length()));
+                out.setLast(retyped(previous, FclLexer.RULE, 0, 4));
+                add(retyped(previous, FclLexer.INTEGER, 4, previous.getText().length()));
                 rulePart = RulePart.NONE;
             }
         }
-        out.add(t);
+        add(t);
     }
 
     private static Token retyped(Token from, int type, int begin, int end) {
@@ -207,7 +209,7 @@ final class TokenPreScan {
                     + " 'variable IS term' or a bare variable (5.2.4)");
             ((CommonToken) t).setType(FclLexer.IS);
         }
-        out.add(t);
+        add(t);
     }
 
     /** {@code dT1 IS zero AND dT2 IS zero} in a conclusion (Figure D.4): report, then read ','. */
@@ -217,7 +219,12 @@ final class TokenPreScan {
                     + " not " + Keywords.spelling(t.getType()));
             ((CommonToken) t).setType(FclLexer.COMMA);
         }
+        add(t);
+    }
+
+    private void add(Token t) {
         out.add(t);
+        last = t;
     }
 
     private void open(Token t) {
@@ -229,6 +236,6 @@ final class TokenPreScan {
                     + Limits.MAX_NESTING_DEPTH + " deep here; fclcert reads at most " + Limits.MAX_NESTING_DEPTH
                     + " levels (a documented limit: the standard sets none)");
         }
-        out.add(t);
+        add(t);
     }
 }

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.BlockIndex;
 import org.fclcert.model.Condition;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
@@ -34,18 +35,21 @@ import org.fclcert.model.VariableRef;
  */
 final class BlockContext {
     final FunctionBlock fb;
+    /** fb's names by hash: the writers look up every name of every rule. */
+    final BlockIndex index;
     final Findings findings;
     /** How the library must spell a name it does not read as declared (identity: as declared). */
     java.util.function.UnaryOperator<String> spelling = java.util.function.UnaryOperator.identity();
 
     BlockContext(FunctionBlock fb, Findings findings) {
         this.fb = fb;
+        this.index = BlockIndex.of(fb);
         this.findings = findings;
     }
 
     /** A variable's name as declared (or as written when it is not declared). */
     String variable(String name) {
-        return spelling.apply(fb.variable(name).map(Variable::name).orElse(name));
+        return spelling.apply(index.variable(name).map(Variable::name).orElse(name));
     }
 
     /** A term's name as its FUZZIFY or DEFUZZIFY block declares it. */
@@ -55,11 +59,11 @@ final class BlockContext {
     }
 
     List<Term> terms(String variable) {
-        Optional<Fuzzification> f = fb.fuzzification(variable);
+        Optional<Fuzzification> f = index.fuzzification(variable);
         if (f.isPresent()) {
             return f.get().terms();
         }
-        return fb.defuzzification(variable).map(Defuzzification::terms).orElse(List.of());
+        return index.defuzzification(variable).map(Defuzzification::terms).orElse(List.of());
     }
 
     /**
@@ -72,7 +76,7 @@ final class BlockContext {
             return l.value();
         }
         VariableRef ref = (VariableRef) o;
-        Optional<Variable> v = fb.variable(ref.name());
+        Optional<Variable> v = index.variable(ref.name());
         double initial = v.flatMap(Variable::initialValue).map(Literal::value).orElse(fallback);
         if (v.isPresent() && v.get().kind() == VariableKind.LOCAL) {
             return v.get().initialValue().map(Literal::value).orElse(0.0);
@@ -199,7 +203,7 @@ final class BlockContext {
     /** Whether the output has point (or shape) terms rather than singletons. */
     /** Whether an output is defuzzified by Tsukamoto's method (its terms inverted, no fuzzy set). */
     boolean tsukamoto(String output) {
-        return fb.defuzzification(output).flatMap(Defuzzification::method)
+        return index.defuzzification(output).flatMap(Defuzzification::method)
                 .map(m -> m.value() == org.fclcert.model.DefuzzificationMethod.TSUKAMOTO).orElse(false);
     }
 

@@ -7,6 +7,7 @@ import java.util.Optional;
 import java.util.Locale;
 import java.util.Set;
 import org.fclcert.model.AccumulationMethod;
+import org.fclcert.model.BlockIndex;
 import org.fclcert.model.Condition;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
@@ -561,9 +562,17 @@ public final class StandardConversion {
 
     /** Whether every output the rule block concludes has singleton (or Takagi–Sugeno) terms only. */
     private static boolean concludesOnlySingletons(FunctionBlock fb, RuleBlock rb) {
-        return rb.rules().stream().flatMap(r -> r.conclusion().stream()).allMatch(c -> fb.defuzzification(c.variable())
-                .map(d -> d.terms().stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton
-                        || t.function() instanceof MembershipFunction.Computed)).orElse(true));
+        BlockIndex names = BlockIndex.of(fb);
+        Set<String> concluded = new java.util.HashSet<>();
+        rb.rules().forEach(r -> r.conclusion().forEach(c -> concluded.add(org.fclcert.model.Names.key(c.variable()))));
+        // each output once: a block of 10^5 rules may conclude one output of 10^5 terms
+        return concluded.stream().allMatch(v -> names.defuzzification(v).map(d -> onlySingletons(d.terms()))
+                .orElse(true));
+    }
+
+    private static boolean onlySingletons(List<Term> terms) {
+        return terms.stream().allMatch(t -> t.function() instanceof MembershipFunction.Singleton
+                || t.function() instanceof MembershipFunction.Computed);
     }
 
     /**
@@ -574,10 +583,10 @@ public final class StandardConversion {
     private static boolean oneContributionPerSingleton(FunctionBlock fb, RuleBlock rb) {
         Set<String> mine = new java.util.HashSet<>();
         rb.rules().forEach(r -> r.conclusion().forEach(c -> mine.add(org.fclcert.model.Names.key(c.variable()))));
+        BlockIndex names = BlockIndex.of(fb);
         for (String v : mine) {
-            Optional<Defuzzification> d = fb.defuzzification(v);
-            if (d.isEmpty() || d.get().terms().isEmpty() || !d.get().terms().stream().allMatch(t ->
-                    t.function() instanceof MembershipFunction.Singleton || t.function() instanceof MembershipFunction.Computed)) {
+            Optional<Defuzzification> d = names.defuzzification(v);
+            if (d.isEmpty() || d.get().terms().isEmpty() || !onlySingletons(d.get().terms())) {
                 return false;
             }
         }

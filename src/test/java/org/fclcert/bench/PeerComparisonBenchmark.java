@@ -35,30 +35,34 @@ import org.openjdk.jmh.annotations.Warmup;
  * fclcert side by side with jfuzzylite 6.0.1 (and, for reading, jFuzzyLogic) in one JMH run, on the same
  * programs ({@link PeerPrograms}, each in the layout its reader needs) and the same cycle of operating
  * points. An evaluation is: set every input, evaluate, read the output, with names resolved once on both
- * sides (fclcert's {@link CompiledEvaluator} indices, jfuzzylite's variable objects). Reading is the
+ * sides (fclcert's {@link CompiledEvaluator} sets its inputs in declaration order and reads its output by
+ * index, jfuzzylite sets each of its input variable objects). Reading is the
  * whole front end: fclcert's strict reader and all checks (every diagnostic), jfuzzylite's FclImporter
  * building an Engine, jFuzzyLogic's FIS.createFromString.
  *
  * <p>At set-up each side's outputs over the cycle are compared with {@link ExactValues} and the largest
  * error is printed ({@code exactness:} lines). Every iteration also prints operations per CPU-second of
  * the benchmark thread ({@code cpu-normalised:}), the stable figure on a shared machine. Run as
- * documented in docs/performance.md; not part of the test suite.
+ * documented in docs/performance.md; not part of the test suite. Eight seconds of warm-up: with three, the
+ * readers of both sides were still speeding up through the measured iterations (the JIT was not done).
  */
 @BenchmarkMode(Mode.Throughput)
 @OutputTimeUnit(TimeUnit.SECONDS)
-@Warmup(iterations = 3, time = 1)
+@Warmup(iterations = 8, time = 1)
 @Measurement(iterations = 5, time = 1)
 @Fork(value = 1, jvmArgsAppend = "-Xmx1g")
 @State(Scope.Thread)
 public class PeerComparisonBenchmark {
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
+    private static final com.sun.management.OperatingSystemMXBean PROCESS =
+            (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
-    private Side valveRef;
-    private Side valvePeer;
-    private Side cog3Ref;
-    private Side cog3Peer;
-    private Side rulesRef;
-    private Side rulesPeer;
+    private Reference valveRef;
+    private Jfuzzylite valvePeer;
+    private Reference cog3Ref;
+    private Jfuzzylite cog3Peer;
+    private Reference rulesRef;
+    private Jfuzzylite rulesPeer;
     private String valveText;
     private String valvePeerText;
     private String rulesText;
@@ -66,47 +70,74 @@ public class PeerComparisonBenchmark {
     private int i;
     private long calls;
     private long cpuStart;
+    private long processStart;
 
     /** One engine with its inputs resolved, evaluated over one cycle of operating points. */
     interface Side {
         double step(double[] in) throws Exception;
     }
 
-    static Side reference(String text) throws EvaluationException {
-        Analysis a = Analysis.analyze(StrictReader.openLevel(), "<bench>", text);
-        Program p = a.program().orElseThrow(() -> new IllegalStateException("fclcert rejects: " + a.diagnostics()));
-        CompiledEvaluator fb = Evaluator.load(p).newCompiledInstance();
-        if (!fb.isCompiled()) {
-            throw new IllegalStateException("the benchmark program is not on the flat plan");
-        }
-        int[] in = new int[fb.inputNames().size()];
-        for (int k = 0; k < in.length; k++) {
-            in[k] = fb.inputIndex(fb.inputNames().get(k));
-        }
-        int out = fb.outputIndex(fb.outputNames().get(0));
-        return v -> {
-            for (int k = 0; k < in.length; k++) {
-                fb.setInput(in[k], v[k]);
+    /**
+     * fclcert's side: the fast path with names resolved once. A final class (not a lambda) for both sides, so
+     * that the benchmark methods call {@code step} directly and the JIT treats both libraries alike.
+     */
+    static final class Reference implements Side {
+        private final CompiledEvaluator fb;
+        private final int out;
+
+        Reference(String text) throws EvaluationException {
+            Analysis a = Analysis.analyze(StrictReader.openLevel(), "<bench>", text);
+            Program p = a.program().orElseThrow(() -> new IllegalStateException("fclcert rejects: " + a.diagnostics()));
+            fb = Evaluator.load(p).newCompiledInstance();
+            if (!fb.isCompiled()) {
+                throw new IllegalStateException("the benchmark program is not on the flat plan");
             }
+            out = fb.outputIndex(fb.outputNames().get(0));
+        }
+
+        /** {@code v} in the inputs' declaration order (as the operating points are; the exactness check tells). */
+        @Override
+        public double step(double[] v) throws EvaluationException {
+            fb.setInputs(v);
             fb.evaluate();
             return fb.output(out);
-        };
+        }
+
+        /**
+         * Runs the cycle long enough for the instance to generate its straight-line code (after 2 000
+         * evaluations), so that the exactness check at set-up sees the path the benchmark measures.
+         */
+        Reference warm(double[][] cycle) throws EvaluationException {
+            for (int k = 0; k < 2500; k++) {
+                step(cycle[k % cycle.length]);
+            }
+            return this;
+        }
     }
 
-    static Side jfuzzylite(String text, String... inputs) {
-        Engine engine = new FclImporter().fromString(text);
-        InputVariable[] in = new InputVariable[inputs.length];
-        for (int k = 0; k < inputs.length; k++) {
-            in[k] = engine.getInputVariable(inputs[k]);
+    /** jfuzzylite's side: its Engine with the input variables looked up once. */
+    static final class Jfuzzylite implements Side {
+        private final Engine engine;
+        private final InputVariable[] in;
+        private final OutputVariable out;
+
+        Jfuzzylite(String text, String... inputs) {
+            engine = new FclImporter().fromString(text);
+            in = new InputVariable[inputs.length];
+            for (int k = 0; k < inputs.length; k++) {
+                in[k] = engine.getInputVariable(inputs[k]);
+            }
+            out = engine.getOutputVariable(0);
         }
-        OutputVariable out = engine.getOutputVariable(0);
-        return v -> {
+
+        @Override
+        public double step(double[] v) {
             for (int k = 0; k < in.length; k++) {
                 in[k].setValue(v[k]);
             }
             engine.process();
             return out.getValue();
-        };
+        }
     }
 
     @Setup
@@ -115,12 +146,12 @@ public class PeerComparisonBenchmark {
         valvePeerText = PeerPrograms.valveFuzzylite();
         rulesText = PeerPrograms.rules125(false);
         rulesPeerText = PeerPrograms.rules125(true);
-        valveRef = reference(valveText);
-        valvePeer = jfuzzylite(valvePeerText, "temp", "pressure");
-        cog3Ref = reference(PeerPrograms.cog3Standard());
-        cog3Peer = jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
-        rulesRef = reference(rulesText);
-        rulesPeer = jfuzzylite(rulesPeerText, PeerPrograms.INPUTS125);
+        valveRef = new Reference(valveText).warm(PeerPrograms.VALVE_INPUTS);
+        valvePeer = new Jfuzzylite(valvePeerText, "temp", "pressure");
+        cog3Ref = new Reference(PeerPrograms.cog3Standard()).warm(PeerPrograms.COG3_INPUTS);
+        cog3Peer = new Jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
+        rulesRef = new Reference(rulesText).warm(PeerPrograms.RULES125_INPUTS);
+        rulesPeer = new Jfuzzylite(rulesPeerText, PeerPrograms.INPUTS125);
         exactness("valve", PeerPrograms.VALVE_INPUTS, v -> ExactValues.valve(v[0], v[1]), valveRef, valvePeer);
         exactness("cog3", PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]), cog3Ref, cog3Peer);
         exactness("rules125", PeerPrograms.RULES125_INPUTS, v -> ExactValues.rules125(v[0], v[1], v[2]), rulesRef,
@@ -158,12 +189,20 @@ public class PeerComparisonBenchmark {
     public void startIteration() {
         calls = 0;
         cpuStart = THREADS.getCurrentThreadCpuTime();
+        processStart = PROCESS.getProcessCpuTime();
     }
 
+    /**
+     * Prints operations per CPU-second of the benchmark thread ({@code cpu-normalised}) and of the whole JVM
+     * ({@code process-cpu-normalised}: the garbage collector's and the JIT's threads too, so that a library
+     * that allocates pays for collecting it).
+     */
     @TearDown(Level.Iteration)
     public void endIteration() {
         double seconds = (THREADS.getCurrentThreadCpuTime() - cpuStart) / 1e9;
-        System.out.printf(Locale.ROOT, "cpu-normalised: %.0f ops per CPU-second%n", calls / seconds);
+        double process = (PROCESS.getProcessCpuTime() - processStart) / 1e9;
+        System.out.printf(Locale.ROOT, "cpu-normalised: %.0f ops per CPU-second; process-cpu-normalised: %.0f ops "
+                + "per process CPU-second%n", calls / seconds, calls / process);
     }
 
     private double[] next(double[][] cycle) {

@@ -91,7 +91,7 @@ final class PeerPrograms {
                     TERM large := (60, 0) (80, 1) (100, 0);
                     METHOD : CoG;
                     DEFAULT := 0;
-                    RANGE (0 .. 100);
+                    RANGE := (0 .. 100);
                 END_DEFUZZIFY
                 RULEBLOCK r
                     AND : MIN;
@@ -186,7 +186,7 @@ final class PeerPrograms {
                     .append(";\n");
         }
         s.append(ind).append(fuzzylite ? "METHOD : COG;\nACCU : MAX;\nDEFAULT := 0.000;\n"
-                : "METHOD : CoG;\n    DEFAULT := 0;\n    RANGE (0 .. 100);\n");
+                : "METHOD : CoG;\n    DEFAULT := 0;\n    RANGE := (0 .. 100);\n");
         s.append("END_DEFUZZIFY\nRULEBLOCK all\n").append(ind).append("AND : MIN;\n").append(ind).append("ACT : MIN;\n");
         if (!fuzzylite) {
             s.append(ind).append("ACCU : MAX;\n");

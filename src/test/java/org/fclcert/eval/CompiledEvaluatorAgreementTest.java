@@ -153,6 +153,22 @@ class CompiledEvaluatorAgreementTest {
         assertEquals("FCL-V003", assertThrows(EvaluationException.class, () -> fast.inputIndex("y")).code());
         assertEquals("FCL-V002", assertThrows(EvaluationException.class,
                 () -> fast.setInput(x, Double.NaN)).code());
+        // all inputs at once, in declaration order: x = 7.5 gives lo 0.25, hi 0.75, so 75
+        fast.setInputs(7.5);
+        fast.evaluate();
+        assertEquals(75.0, fast.output(y), 0.0);
+        assertEquals(7.5, fast.input(x), 0.0);
+        assertEquals("FCL-V002", assertThrows(EvaluationException.class,
+                () -> fast.setInputs(Double.POSITIVE_INFINITY)).code());
+        assertThrows(IllegalArgumentException.class, () -> fast.setInputs(1, 2));
+        // a REAL holds at most Float.MAX_VALUE (about 3.4E38) either way; the value before stays
+        assertEquals("FCL-V004", assertThrows(EvaluationException.class, () -> fast.setInputs(-1e39)).code());
+        assertEquals("FCL-V004", assertThrows(EvaluationException.class, () -> fast.setInput(x, 1e39)).code());
+        assertEquals("FCL-V002", assertThrows(EvaluationException.class,
+                () -> fast.setInput(x, Double.NEGATIVE_INFINITY)).code());
+        assertEquals(7.5, fast.input(x), 0.0);
+        fast.setInput(x, -Float.MAX_VALUE);
+        assertEquals(-Float.MAX_VALUE, fast.input(x), 0.0);
     }
 
     /**

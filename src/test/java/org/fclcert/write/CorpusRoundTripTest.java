@@ -90,9 +90,9 @@ class CorpusRoundTripTest {
             int listed = t.reasons().values().stream().mapToInt(List::size).sum();
             assertEquals(cases.size(), t.equal().size() + listed);
         }
-        // measured when the writers were written (121 positive cases); a writer may gain, never lose ground
-        assertTrue(TALLIES.get(Dialect.FFLL).equal().size() >= 84, "ffll");
-        assertTrue(TALLIES.get(Dialect.JFUZZYLOGIC).equal().size() >= 94, "jfuzzylogic");
-        assertTrue(TALLIES.get(Dialect.FUZZYLITE).equal().size() >= 96, "fuzzylite");
+        // measured on the 125 positive cases of the corpus; a writer may gain, never lose ground
+        assertTrue(TALLIES.get(Dialect.FFLL).equal().size() >= 88, "ffll");
+        assertTrue(TALLIES.get(Dialect.JFUZZYLOGIC).equal().size() >= 98, "jfuzzylogic");
+        assertTrue(TALLIES.get(Dialect.FUZZYLITE).equal().size() >= 100, "fuzzylite");
     }
 }

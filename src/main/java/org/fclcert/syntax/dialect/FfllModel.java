@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import org.fclcert.model.BlockIndex;
 import org.fclcert.model.Condition;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
@@ -57,11 +58,12 @@ final class FfllModel {
         Map<String, FfllTokens.RangeComment> ranges = tokens.ranges(index);
         List<Variable> inputs = fb.variables(VariableKind.INPUT);
         List<Variable> outputs = fb.variables(VariableKind.OUTPUT);
+        BlockIndex names = BlockIndex.of(fb);
         // output terms given in FUZZIFY blocks (FFLL's way), by output
         List<Fuzzification> fuzzifications = new ArrayList<>();
         Map<String, Fuzzification> outputFuzzify = new LinkedHashMap<>();
         for (Fuzzification f : fb.fuzzifications()) {
-            boolean ofOutput = fb.variable(f.variable()).map(v -> v.kind() == VariableKind.OUTPUT).orElse(false);
+            boolean ofOutput = names.variable(f.variable()).map(v -> v.kind() == VariableKind.OUTPUT).orElse(false);
             if (ofOutput && !outputFuzzify.containsKey(Names.key(f.variable()))) {
                 features.add(new FeatureUse(Feature.O_FFLL_OUTPUT_FUZZIFY, f.location()));
                 outputFuzzify.put(Names.key(f.variable()), f);
@@ -83,7 +85,7 @@ final class FfllModel {
         }
         List<RuleBlock> blocks = new ArrayList<>();
         for (RuleBlock b : fb.ruleBlocks()) {
-            blocks.add(ruleBlock(b, fb, inputs, outputs, fuzzifications));
+            blocks.add(ruleBlock(b, names, inputs, outputs, fuzzifications));
         }
         return new FunctionBlock(fb.name(), fb.variables(), fuzzifications, defuzzifications, blocks, fb.options(),
                 fb.location());
@@ -159,7 +161,7 @@ final class FfllModel {
 
     // ---------------------------------------------------------------- rules
 
-    private RuleBlock ruleBlock(RuleBlock b, FunctionBlock fb, List<Variable> inputs, List<Variable> outputs,
+    private RuleBlock ruleBlock(RuleBlock b, BlockIndex fb, List<Variable> inputs, List<Variable> outputs,
             List<Fuzzification> fuzzifications) {
         List<Rule> rules = new ArrayList<>(b.rules().size());
         for (Rule r : b.rules()) {
@@ -175,7 +177,7 @@ final class FfllModel {
     }
 
     /** Rebuilds the condition with every subcondition bound to the input in its position (FFLL's reading). */
-    private Condition positional(Rule r, Condition c, int[] position, FunctionBlock fb, List<Variable> inputs,
+    private Condition positional(Rule r, Condition c, int[] position, BlockIndex fb, List<Variable> inputs,
             List<Fuzzification> fuzzifications) {
         if (c instanceof Condition.TermSubcondition s) {
             Optional<Variable> input = input(r, s.location(), position[0]++, inputs);
@@ -257,7 +259,7 @@ final class FfllModel {
         return Optional.of(c.location());   // Or, Not, Parenthesized
     }
 
-    private List<Subconclusion> conclusion(Rule r, FunctionBlock fb, List<Variable> outputs) {
+    private List<Subconclusion> conclusion(Rule r, BlockIndex fb, List<Variable> outputs) {
         List<Subconclusion> result = new ArrayList<>(r.conclusion().size());
         for (int k = 0; k < r.conclusion().size(); k++) {
             Subconclusion s = r.conclusion().get(k);
