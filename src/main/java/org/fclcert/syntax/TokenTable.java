@@ -20,6 +20,13 @@ import org.antlr.v4.runtime.misc.Pair;
  * texts the source text does not hold: a table {@link #keepingTokens()} keeps such tokens as they are.
  */
 final class TokenTable {
+    static {
+        // token types are kept in a byte: a grammar of more than 127 token types needs a wider array
+        if (FclLexer.VOCABULARY.getMaxTokenType() > Byte.MAX_VALUE) {
+            throw new IllegalStateException("Fcl.g4 has more token types than TokenTable keeps in a byte");
+        }
+    }
+
     /** The tokens themselves, when kept ({@link #keepingTokens()}); null in the compact form. */
     private final List<Token> kept;
     private Pair<TokenSource, CharStream> source;
