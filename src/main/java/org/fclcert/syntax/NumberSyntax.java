@@ -16,6 +16,9 @@ final class NumberSyntax {
 
     /** What is wrong with a token the lexer read as a number, or empty if it is a valid literal. */
     static Optional<String> problem(int tokenType, String text) {
+        if ((tokenType == FclLexer.INTEGER || tokenType == FclLexer.REAL_LITERAL) && plain(text)) {
+            return Optional.empty();    // the usual number: nothing below can go wrong with it
+        }
         if (tokenType == FclLexer.BAD_REAL) {
             return Optional.of(badRealProblem(text));
         }
@@ -76,6 +79,20 @@ final class NumberSyntax {
     }
 
     /** Every digit group of a decimal literal (between '.', 'E' and the exponent sign) is digit {['_'] digit}. */
+    /** At most 300 characters, no underscore and no exponent: no group to check, nothing to overflow. */
+    private static boolean plain(String text) {
+        if (text.length() > 300) {
+            return false;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '_' || c == 'e' || c == 'E') {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private static boolean validDecimalGroups(String unsigned) {
         char previous = '.';   // as if a group had just started
         for (int i = 0; i < unsigned.length(); i++) {
