@@ -97,12 +97,7 @@ final class ClassFile {
             } else if (v == 1.0) {
                 op(DCONST_1);
             } else {
-                op(LDC2_W);
-                long bits = Double.doubleToRawLongBits(v);
-                u2(constant("D" + bits, () -> {
-                    poolOut.writeByte(6);
-                    poolOut.writeLong(bits);
-                }, 2));
+                doubleConstWide(v);
             }
         }
 
