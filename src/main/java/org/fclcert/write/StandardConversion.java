@@ -243,6 +243,7 @@ public final class StandardConversion {
         List<FunctionBlock> blocks = new ArrayList<>();
         boolean changed = false;
         for (FunctionBlock fb : program.functionBlocks()) {
+            BlockIndex names = BlockIndex.of(fb);
             List<RuleBlock> rbs = new ArrayList<>();
             for (RuleBlock rb : fb.ruleBlocks()) {
                 var and = rb.and();
@@ -264,7 +265,7 @@ public final class StandardConversion {
                 var act = rb.activation();
                 if (act.isPresent() && !act.get().value().standard()) {
                     // on singletons every t-norm gives the rule's degree: T(d, 1) = d
-                    boolean exact = concludesOnlySingletons(fb, rb);
+                    boolean exact = concludesOnlySingletons(names, rb);
                     findings.add(new Finding(Feature.O_ACT_OTHER_NORM.id(), act.get().location(), exact ? new Kind.Exact()
                             : new Kind.NotExpressible("ACT : MIN"), "ACT " + act.get().value() + " of rule block "
                             + rb.name() + (exact ? " written as MIN: it activates singletons only" : " is not an"
@@ -526,10 +527,11 @@ public final class StandardConversion {
     private static Program accumulations(Program program, Options options, List<Finding> findings) {
         List<FunctionBlock> blocks = new ArrayList<>();
         for (FunctionBlock fb : program.functionBlocks()) {
+            BlockIndex names = BlockIndex.of(fb);
             List<RuleBlock> ruleBlocks = new ArrayList<>();
             for (RuleBlock rb : fb.ruleBlocks()) {
                 Optional<Located<AccumulationMethod>> accu = rb.accumulation();
-                if (accu.isPresent() && !accu.get().value().standard() && oneContributionPerSingleton(fb, rb)) {
+                if (accu.isPresent() && !accu.get().value().standard() && oneContributionPerSingleton(fb, names, rb)) {
                     String id = accumulationFeature(accu.get().value());
                     findings.add(new Finding(id, accu.get().location(), new Kind.Exact(), "ACCU " + accu.get().value()
                             + " of rule block " + rb.name() + " written as MAX: it concludes only singleton outputs,"
@@ -560,13 +562,17 @@ public final class StandardConversion {
                 : Feature.O_ACCU_OTHER_NORM).id();
     }
 
-    /** Whether every output the rule block concludes has singleton (or Takagi–Sugeno) terms only. */
-    private static boolean concludesOnlySingletons(FunctionBlock fb, RuleBlock rb) {
-        BlockIndex names = BlockIndex.of(fb);
+    /** The outputs the rule block concludes, by {@link org.fclcert.model.Names#key}, each once. */
+    private static Set<String> concludedOutputs(RuleBlock rb) {
         Set<String> concluded = new java.util.HashSet<>();
         rb.rules().forEach(r -> r.conclusion().forEach(c -> concluded.add(org.fclcert.model.Names.key(c.variable()))));
+        return concluded;
+    }
+
+    /** Whether every output the rule block concludes has singleton (or Takagi–Sugeno) terms only. */
+    private static boolean concludesOnlySingletons(BlockIndex names, RuleBlock rb) {
         // each output once: a block of 10^5 rules may conclude one output of 10^5 terms
-        return concluded.stream().allMatch(v -> names.defuzzification(v).map(d -> onlySingletons(d.terms()))
+        return concludedOutputs(rb).stream().allMatch(v -> names.defuzzification(v).map(d -> onlySingletons(d.terms()))
                 .orElse(true));
     }
 
@@ -580,10 +586,8 @@ public final class StandardConversion {
      * terms is concluded by one rule of the function block at most: then every accumulation gives each term its
      * one degree, whatever the method.
      */
-    private static boolean oneContributionPerSingleton(FunctionBlock fb, RuleBlock rb) {
-        Set<String> mine = new java.util.HashSet<>();
-        rb.rules().forEach(r -> r.conclusion().forEach(c -> mine.add(org.fclcert.model.Names.key(c.variable()))));
-        BlockIndex names = BlockIndex.of(fb);
+    private static boolean oneContributionPerSingleton(FunctionBlock fb, BlockIndex names, RuleBlock rb) {
+        Set<String> mine = concludedOutputs(rb);
         for (String v : mine) {
             Optional<Defuzzification> d = names.defuzzification(v);
             if (d.isEmpty() || d.get().terms().isEmpty() || !onlySingletons(d.get().terms())) {
