@@ -213,12 +213,6 @@ final class ProcessIut implements ImplementationUnderTest {
     private JsonNode exchange(ObjectNode request, Duration timeout) throws IutException {
         long id = ++nextId;
         String op = request.get("op").asText();
-        ReplyReader.Line early = session.unasked();
-        if (early != null) {
-            // a reply written before the question (say an eval answer sent along with the load reply) is no answer
-            throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
-                    + Protocol.quote(early.text()));
-        }
         long sentAt = System.nanoTime();
         session.send(write(request.put("id", id)));
         long deadline = sentAt + timeout.toNanos();
@@ -226,7 +220,8 @@ final class ProcessIut implements ImplementationUnderTest {
             ReplyReader.Event event = nextEvent(deadline, op, timeout);
             if (event instanceof ReplyReader.Line line && !line.text().isBlank()) {
                 if (line.readAt() < sentAt) {
-                    // read from the pipe before the request went out, though not yet handed over when it did
+                    // a reply written before the question (say an eval answer sent along with the load reply) is no
+                    // answer: read from the pipe before the request went out, whether or not it was handed over yet
                     throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
                             + Protocol.quote(line.text()));
                 }

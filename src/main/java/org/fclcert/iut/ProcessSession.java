@@ -76,11 +76,6 @@ final class ProcessSession {
         });
     }
 
-    /** A line the process wrote before being asked (see {@link ReplyReader#unasked}), or null. */
-    ReplyReader.Line unasked() {
-        return replies.unasked();
-    }
-
     ReplyReader.Event next(long nanos) throws InterruptedException {
         ReplyReader.Event event = replies.next(nanos);
         noteDescendants();

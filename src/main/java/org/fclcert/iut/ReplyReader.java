@@ -52,20 +52,6 @@ final class ReplyReader {
         return events.poll(nanos, TimeUnit.NANOSECONDS);
     }
 
-    /**
-     * A non-blank line already waiting before a request is sent: the implementation wrote it unasked, so it
-     * must not be taken as the reply to the next request. Blank lines are dropped; other events stay.
-     */
-    Line unasked() {
-        while (events.peek() instanceof Line line) {
-            events.poll();
-            if (!line.text().isBlank()) {
-                return line;
-            }
-        }
-        return null;
-    }
-
     /** Lets the writer report a failed request into the same stream of events. */
     void writeFailed(String reason) {
         events.offer(new WriteFailed(reason));
