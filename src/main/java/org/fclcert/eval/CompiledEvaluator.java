@@ -92,8 +92,6 @@ public final class CompiledEvaluator {
      * are symmetric; NaN where every value is checked, and NaN or ±∞ values fail the one compare).
      */
     private final double[] directBound;
-    /** Input i is in slot i for every i (inputs are declared first), so a store needs no indirection. */
-    private final boolean inputsFirst;
 
     // fuzzification
     private TermDegrees terms;
@@ -170,15 +168,12 @@ public final class CompiledEvaluator {
         }
         boolean flat = flat(plan);
         this.directBound = new double[nIn];
-        boolean first = true;
         for (int i = 0; i < nIn; i++) {
             // a NaN bound sends every value to setInputChecked: integer inputs (rounded) and the wrapped instance
             int s = inputSlots[i];
             boolean direct = !integerSlot[s] && flat && minSlot[s] == -maxSlot[s];
             directBound[i] = direct ? maxSlot[s] : Double.NaN;
-            first &= s == i;
         }
-        this.inputsFirst = first;
         if (flat) {
             this.fallback = null;
             compileTerms();
@@ -604,17 +599,6 @@ public final class CompiledEvaluator {
         }
         final double[] v = this.values;
         final double[] bound = directBound;
-        if (inputsFirst) {
-            for (int i = 0; i < values.length; i++) {
-                double x = values[i];
-                if (Math.abs(x) <= bound[i]) {
-                    v[i] = x;
-                } else {
-                    setInputChecked(i, x);
-                }
-            }
-            return;
-        }
         for (int i = 0; i < values.length; i++) {
             double x = values[i];
             if (Math.abs(x) <= bound[i]) {
