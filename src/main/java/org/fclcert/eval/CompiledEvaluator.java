@@ -597,15 +597,8 @@ public final class CompiledEvaluator {
         if (values.length != inputSlots.length) {
             throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
         }
-        final double[] v = this.values;
-        final double[] bound = directBound;
         for (int i = 0; i < values.length; i++) {
-            double x = values[i];
-            if (Math.abs(x) <= bound[i]) {
-                v[inputSlots[i]] = x;
-            } else {
-                setInputChecked(i, x);
-            }
+            setInput(i, values[i]);
         }
     }
 
