@@ -161,23 +161,23 @@ final class FfllModel {
 
     // ---------------------------------------------------------------- rules
 
-    private RuleBlock ruleBlock(RuleBlock b, BlockIndex fb, List<Variable> inputs, List<Variable> outputs,
+    private RuleBlock ruleBlock(RuleBlock b, BlockIndex names, List<Variable> inputs, List<Variable> outputs,
             List<Fuzzification> fuzzifications) {
         List<Rule> rules = new ArrayList<>(b.rules().size());
         for (Rule r : b.rules()) {
             int[] position = {0};
-            Condition condition = positional(r, r.condition(), position, fb, inputs, fuzzifications);
+            Condition condition = positional(r, r.condition(), position, names, inputs, fuzzifications);
             Optional<SourceLocation> notAnd = firstNonAnd(r.condition());
             notAnd.ifPresent(at -> warn(at, DialectCode.FFLL_NOT_AN_AND, "rule " + r.name() + ": FFLL evaluates every"
                     + " condition as the AND of its subconditions, ignoring OR, NOT and parentheses; fclcert reads the"
                     + " condition as written (Table 6)"));
-            rules.add(new Rule(r.name(), condition, conclusion(r, fb, outputs), r.location()));
+            rules.add(new Rule(r.name(), condition, conclusion(r, names, outputs), r.location()));
         }
         return new RuleBlock(b.name(), b.and(), b.or(), b.activation(), b.accumulation(), rules, b.location());
     }
 
     /** Rebuilds the condition with every subcondition bound to the input in its position (FFLL's reading). */
-    private Condition positional(Rule r, Condition c, int[] position, BlockIndex fb, List<Variable> inputs,
+    private Condition positional(Rule r, Condition c, int[] position, BlockIndex names, List<Variable> inputs,
             List<Fuzzification> fuzzifications) {
         if (c instanceof Condition.TermSubcondition s) {
             Optional<Variable> input = input(r, s.location(), position[0]++, inputs);
@@ -198,7 +198,7 @@ final class FfllModel {
             boolean termOfPosition = k < inputs.size() && fuzzifications.stream()
                     .filter(f -> Names.same(f.variable(), inputs.get(k).name()))
                     .anyMatch(f -> f.term(v.variable()).isPresent());
-            if (!termOfPosition && fb.variable(v.variable()).isPresent()) {
+            if (!termOfPosition && names.variable(v.variable()).isPresent()) {
                 return v;   // a variable used as a degree (Table 9): standard FCL, kept as it is
             }
             Optional<Variable> input = input(r, v.location(), k, inputs);
@@ -209,23 +209,23 @@ final class FfllModel {
             return new Condition.TermSubcondition(input.get().name(), v.variable(), false, v.location());
         }
         if (c instanceof Condition.Not n) {
-            return new Condition.Not(positional(r, n.operand(), position, fb, inputs, fuzzifications), n.location());
+            return new Condition.Not(positional(r, n.operand(), position, names, inputs, fuzzifications), n.location());
         }
         if (c instanceof Condition.Parenthesized p) {
-            return new Condition.Parenthesized(positional(r, p.inner(), position, fb, inputs, fuzzifications),
+            return new Condition.Parenthesized(positional(r, p.inner(), position, names, inputs, fuzzifications),
                     p.location());
         }
         if (c instanceof Condition.And a) {
             List<Condition> ops = new ArrayList<>(a.operands().size());
             for (Condition o : a.operands()) {
-                ops.add(positional(r, o, position, fb, inputs, fuzzifications));
+                ops.add(positional(r, o, position, names, inputs, fuzzifications));
             }
             return new Condition.And(ops, a.location());
         }
         Condition.Or o = (Condition.Or) c;
         List<Condition> ops = new ArrayList<>(o.operands().size());
         for (Condition x : o.operands()) {
-            ops.add(positional(r, x, position, fb, inputs, fuzzifications));
+            ops.add(positional(r, x, position, names, inputs, fuzzifications));
         }
         return new Condition.Or(ops, o.location());
     }
@@ -259,13 +259,13 @@ final class FfllModel {
         return Optional.of(c.location());   // Or, Not, Parenthesized
     }
 
-    private List<Subconclusion> conclusion(Rule r, BlockIndex fb, List<Variable> outputs) {
+    private List<Subconclusion> conclusion(Rule r, BlockIndex names, List<Variable> outputs) {
         List<Subconclusion> result = new ArrayList<>(r.conclusion().size());
         for (int k = 0; k < r.conclusion().size(); k++) {
             Subconclusion s = r.conclusion().get(k);
             s.weight().ifPresent(w -> warn(w.location(), DialectCode.FFLL_WITH_IGNORED, "rule " + r.name()
                     + ": FFLL ignores WITH; fclcert applies the weighting factor as IEC 61131-7 does (5.2.4)"));
-            if (!s.bareVariable() || fb.variable(s.variable()).isPresent()) {
+            if (!s.bareVariable() || names.variable(s.variable()).isPresent()) {
                 result.add(s);
                 continue;
             }
