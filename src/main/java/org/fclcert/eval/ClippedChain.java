@@ -214,7 +214,11 @@ final class ClippedChain {
         return vy[p + m - 1];
     }
 
-    /** Appends term j's vertices within [from, to], with its values at both ends. */
+    /**
+     * Appends term j's vertices within [from, to], with its values at both ends. Vertices on the ends count
+     * too: where a clip level is so small that a + (b − a)·L rounds to a, the set rises vertically at a = from,
+     * and only the vertex (from, h) says so (a vertical piece adds no area, so a repeated x costs nothing).
+     */
     private void emit(int j, double from, double to) {
         if (!(from < to)) {
             return;
@@ -223,7 +227,7 @@ final class ClippedChain {
         int m = vn[j];
         add(from, value(j, from));
         for (int i = p; i < p + m; i++) {
-            if (vx[i] > from && vx[i] < to) {
+            if (vx[i] >= from && vx[i] <= to) {
                 add(vx[i], vy[i]);
             }
         }

@@ -85,6 +85,30 @@ class ClippedChainTest {
     }
 
     @Test
+    void aClipLevelTooSmallToMoveTheFeetStillRisesAtThem() throws Exception {
+        // found by fclcert fuzz: x = -109.999994 gives mu(x) = 6e-6/110, cubed by AND PROD, about 1.6e-22; the
+        // clipped triangle is then a trapezoid over -50..63 whose top spans all but ~1e-20 of it, so its centre of
+        // gravity is (-50 + 63) / 2 = 6.5 (by hand; the reference and the exact path agree). The chain's crossings
+        // a + (b - a)L and d - (d - c)L round to the feet themselves; read as a ramp from (-50, 0) to (63, h) the
+        // set gave (-50 + 2 * 63) / 3 = 25.33.
+        CompiledEvaluator fb = instance("""
+                FUNCTION_BLOCK tiny
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM t := (-110, 0) (0, 1); END_FUZZIFY
+                DEFUZZIFY y TERM t := (-50, 0) (0, 1) (63, 0); METHOD : CoG; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r AND : PROD; ACCU : MAX;
+                    RULE 1 : IF x IS t AND x IS t AND x IS t THEN y IS t;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """);
+        assertTrue(fb.usesChain(0));
+        fb.setInput(0, -109.999994);
+        fb.evaluate();
+        assertEquals(6.5, fb.output(0), 1e-12);
+    }
+
+    @Test
     void termsOverlappingBeyondTheirNeighbourAreNoChain() throws Exception {
         CompiledEvaluator fb = instance("""
                 FUNCTION_BLOCK wide
