@@ -17,7 +17,26 @@ final class Keywords {
             FclLexer.END_DEFUZZIFY, FclLexer.RULEBLOCK, FclLexer.END_RULEBLOCK, FclLexer.OPTIONS,
             FclLexer.END_OPTIONS, FclLexer.OPTION, FclLexer.END_OPTION, FclLexer.TERM, FclLexer.RULE);
 
+    /** The grammar's softKeyword rule: the keywords it takes where a name or a word stands. */
+    private static final Set<Integer> SOFT = Set.of(
+            FclLexer.RANGE, FclLexer.METHOD, FclLexer.DEFAULT, FclLexer.NC, FclLexer.ACT, FclLexer.ACCU,
+            FclLexer.COG, FclLexer.COGS, FclLexer.COA, FclLexer.LM, FclLexer.RM,
+            FclLexer.MIN, FclLexer.MAX, FclLexer.PROD, FclLexer.ASUM, FclLexer.BSUM, FclLexer.BDIF, FclLexer.NSUM,
+            FclLexer.REAL, FclLexer.LREAL, FclLexer.SINT, FclLexer.INT, FclLexer.DINT, FclLexer.LINT,
+            FclLexer.USINT, FclLexer.UINT, FclLexer.UDINT, FclLexer.ULINT);
+
+    private static final boolean[] IS_SOFT = new boolean[FclLexer.VOCABULARY.getMaxTokenType() + 1];
+
+    static {
+        SOFT.forEach(type -> IS_SOFT[type] = true);
+    }
+
     private Keywords() {
+    }
+
+    /** True for the keywords Fcl.g4's softKeyword rule lists ({@code KeywordsTest} holds the two together). */
+    static boolean isSoft(int tokenType) {
+        return tokenType >= 0 && tokenType < IS_SOFT.length && IS_SOFT[tokenType];
     }
 
     /** True for every word token the lexer treats as a keyword. */

@@ -301,12 +301,8 @@ final class ModelBuilder {
         DefuzzifyItemContext last = items.get(items.size() - 1);
         boolean rangeLastOnly = last.range() != null && firstOutOfOrder(items.subList(0, items.size() - 1)) < 0
                 && items.stream().filter(i -> i.range() != null).count() == 1;
-        if (rangeLastOnly && options.draftFormsAccepted()) {
-            return;
-        }
         if (rangeLastOnly) {
-            diagnostics.warning(last.start, SyntaxCode.DRAFT_DEFUZZIFY_ORDER, "RANGE after the other DEFUZZIFY items"
-                    + " follows the 1996 draft; accepted, but " + DEFUZZIFY_ORDER);
+            rangeLast(last.start, diagnostics, options);
             return;
         }
         DefuzzifyItemContext item = items.get(firstOutOfOrder);
@@ -314,6 +310,14 @@ final class ModelBuilder {
                 .max(java.util.Comparator.comparingInt(ModelBuilder::defuzzifyRank)).orElseThrow();
         diagnostics.error(item.start, SyntaxCode.DEFUZZIFY_BLOCK, keyword(item) + " after " + keyword(before) + ": "
                 + DEFUZZIFY_ORDER);
+    }
+
+    /** The one RANGE of a DEFUZZIFY block, after all its other items (the draft's order): a warning. */
+    static void rangeLast(Token range, ReaderDiagnostics diagnostics, ReaderOptions options) {
+        if (!options.draftFormsAccepted()) {
+            diagnostics.warning(range, SyntaxCode.DRAFT_DEFUZZIFY_ORDER, "RANGE after the other DEFUZZIFY items"
+                    + " follows the 1996 draft; accepted, but " + DEFUZZIFY_ORDER);
+        }
     }
 
     private static String keyword(ParserRuleContext item) {
@@ -343,24 +347,34 @@ final class ModelBuilder {
     }
 
     private Optional<Range> range(RangeContext ctx) {
-        if (ctx.ASSIGN() != null && !options.draftFormsAccepted()) {
-            diagnostics.warning(ctx.ASSIGN().getSymbol(), SyntaxCode.RANGE_ASSIGNMENT, "'RANGE := (...)' is the form"
-                    + " of 5.2.3's prose; the 5.4 production writes 'RANGE (min .. max);' without ':='");
+        if (ctx.ASSIGN() != null) {
+            rangeAssignment(ctx.ASSIGN().getSymbol(), diagnostics, options);
         }
         return Optional.of(new Range(literal(ctx.min), literal(ctx.max), at(ctx.start)));
     }
 
-    private Optional<Located<DefuzzificationMethod>> method(DefuzzificationMethodContext ctx) {
-        Optional<DefuzzificationMethod> m = DefuzzificationMethod.byKeyword(ctx.word().getText());
-        if (m.isEmpty()) {
-            m = options.nonStandardMethods().stream().filter(x -> x.keyword().equalsIgnoreCase(ctx.word().getText()))
-                    .findFirst();
+    /** {@code RANGE := (...)}: a warning that this is 5.2.3's prose form, not 5.4's. */
+    static void rangeAssignment(Token assign, ReaderDiagnostics diagnostics, ReaderOptions options) {
+        if (!options.draftFormsAccepted()) {
+            diagnostics.warning(assign, SyntaxCode.RANGE_ASSIGNMENT, "'RANGE := (...)' is the form"
+                    + " of 5.2.3's prose; the 5.4 production writes 'RANGE (min .. max);' without ':='");
         }
+    }
+
+    private Optional<Located<DefuzzificationMethod>> method(DefuzzificationMethodContext ctx) {
+        Optional<DefuzzificationMethod> m = method(ctx.word().getText(), options);
         if (m.isEmpty()) {
             diagnostics.error(ctx.word().start, SyntaxCode.METHOD, "'" + ctx.word().getText()
                     + "' is not a defuzzification method: METHOD takes CoG, CoGS, CoA, LM or RM (5.2.3, Table 1)");
         }
         return m.map(v -> new Located<>(v, at(ctx.start)));
+    }
+
+    /** The defuzzification method a METHOD word names: Table 1's, or one of the options' non-standard ones. */
+    static Optional<DefuzzificationMethod> method(String word, ReaderOptions options) {
+        Optional<DefuzzificationMethod> m = DefuzzificationMethod.byKeyword(word);
+        return m.isPresent() ? m
+                : options.nonStandardMethods().stream().filter(x -> x.keyword().equalsIgnoreCase(word)).findFirst();
     }
 
     private Optional<DefaultValue> defaultValue(DefaultValueContext ctx) {
@@ -407,16 +421,25 @@ final class ModelBuilder {
     private <E extends Enum<E>> Optional<Located<E>> algorithm(ParserRuleContext ctx, Class<E> type, SyntaxCode code,
             String allowed) {
         WordContext word = ctx.getRuleContext(WordContext.class, 0);
-        String text = word.getText().toUpperCase(Locale.ROOT);
+        Optional<E> value = standardAlgorithm(type, word.getText());
+        if (value.isPresent()) {
+            return Optional.of(new Located<>(value.get(), at(ctx.start)));
+        }
+        diagnostics.error(word.start, code, "'" + word.getText() + "' is not " + allowed);
+        return Optional.empty();
+    }
+
+    /** The standard's algorithm or method of this kind (Tables 3 to 5) that the word names, in any case. */
+    static <E extends Enum<E>> Optional<E> standardAlgorithm(Class<E> type, String word) {
+        String text = word.toUpperCase(Locale.ROOT);
         for (E value : type.getEnumConstants()) {
             boolean nonStandard = value instanceof AccumulationMethod a && !a.standard()   // PROBOR, SUM: dialect readers only
                     || value instanceof AndAlgorithm x && !x.standard() || value instanceof OrAlgorithm y && !y.standard()
                     || value instanceof ActivationMethod m && !m.standard();
             if (value.name().equals(text) && !nonStandard) {
-                return Optional.of(new Located<>(value, at(ctx.start)));
+                return Optional.of(value);
             }
         }
-        diagnostics.error(word.start, code, "'" + word.getText() + "' is not " + allowed);
         return Optional.empty();
     }
 
@@ -453,7 +476,7 @@ final class ModelBuilder {
     }
 
     /** Digits only, without a leading zero (unless the number is 0): the text BigInteger would give back. */
-    private static boolean plainNumber(String text) {
+    static boolean plainNumber(String text) {
         if (text.isEmpty() || text.length() > 1 && text.charAt(0) == '0') {
             return false;
         }
@@ -539,11 +562,16 @@ final class ModelBuilder {
         }
         SubconclusionContext last = parts.get(parts.size() - 1);
         if (parts.size() > 1 && last.with != null) {
-            diagnostics.warning(last.with, SyntaxCode.WITH_AFTER_LAST_SUBCONCLUSION, "WITH after the last"
-                    + " of several subconclusions: 5.2.4 makes it that subconclusion's weighting factor, 5.4 the"
-                    + " whole rule's; fclcert applies it to that subconclusion only");
+            withAfterLastSubconclusion(last.with, diagnostics);
         }
         return result;
+    }
+
+    /** WITH after the last of several subconclusions: a warning that 5.2.4 and 5.4 disagree on its reach. */
+    static void withAfterLastSubconclusion(Token with, ReaderDiagnostics diagnostics) {
+        diagnostics.warning(with, SyntaxCode.WITH_AFTER_LAST_SUBCONCLUSION, "WITH after the last"
+                + " of several subconclusions: 5.2.4 makes it that subconclusion's weighting factor, 5.4 the"
+                + " whole rule's; fclcert applies it to that subconclusion only");
     }
 
     private Subconclusion subconclusion(SubconclusionContext ctx) {
@@ -579,10 +607,14 @@ final class ModelBuilder {
     }
 
     private Literal literal(LiteralContext ctx) {
-        Token t = ctx.start;
-        double value = NumberSyntax.value(t.getType(), t.getText());
-        return new Literal(value, NumberSyntax.integral(t.getType()), at(t),
-                NumberSyntax.wideInteger(t.getType(), t.getText(), value));
+        return literal(ctx.start, at(ctx.start));
+    }
+
+    /** The literal a number token (INTEGER, BASED_INTEGER or REAL_LITERAL) writes, at the given place. */
+    static Literal literal(Token t, SourceLocation at) {
+        String text = t.getText();
+        double value = NumberSyntax.value(t.getType(), text);
+        return new Literal(value, NumberSyntax.integral(t.getType()), at, NumberSyntax.wideInteger(t.getType(), text, value));
     }
 
     private static String name(NameContext ctx) {

@@ -35,6 +35,11 @@ final class ReaderDiagnostics {
     }
 
     SourceLocation at(Token token) {
+        return location(sourceName, token);
+    }
+
+    /** Where a token starts, as every diagnostic and model element gives it (line and column from 1). */
+    static SourceLocation location(String sourceName, Token token) {
         return SourceLocation.of(sourceName, Math.max(1, token.getLine()), token.getCharPositionInLine() + 1);
     }
 

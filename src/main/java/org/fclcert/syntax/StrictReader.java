@@ -16,7 +16,8 @@ import org.fclcert.model.SourceLocation;
 /**
  * The reader for FCL exactly as IEC 61131-7 defines it (5.4 plus the IEC 61131-3 pieces it uses).
  *
- * <p>Stages: lex; pre-scan the tokens (lexical mistakes, nesting depth, the Annex D errata); parse,
+ * <p>A text without errors, written as 5.4 writes FCL, is read by the {@link DirectParser} straight into the
+ * model. A text it declines goes through the stages: lex; pre-scan the tokens (lexical mistakes, nesting depth, the Annex D errata); parse,
  * first with the fast SLL prediction and, only if that fails, again with full LL and error recovery;
  * report keywords used as names; build the model. Every mistake becomes a located diagnostic; the
  * reader never throws and never prints. Thread-safe: it keeps no state between calls.
@@ -27,12 +28,14 @@ public final class StrictReader implements FclReader {
      * Limits.MAX_NESTING_DEPTH) is parsed on a thread with a large stack: the recursive-descent parser
      * and the builder use a few stack frames per level, and a caller's thread may have a small stack.
      */
-    private static final int SHALLOW_NESTING = 50;
+    static final int SHALLOW_NESTING = 50;
     private static final long DEEP_STACK_BYTES = 64L << 20;
     /** Texts up to this many characters keep their token objects (a few MB at most), not the compact form. */
     private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;
+    /** Whether a text is first tried by the {@link DirectParser} (off only to compare the two paths in tests). */
+    private final boolean directPath;
 
     /** The reader of the standard exactly. */
     public StrictReader() {
@@ -41,7 +44,12 @@ public final class StrictReader implements FclReader {
 
     /** The strict pipeline with the given changes (dialect readers, the Open Level reading of the corpus). */
     public StrictReader(ReaderOptions options) {
+        this(options, true);
+    }
+
+    StrictReader(ReaderOptions options, boolean directPath) {
         this.options = java.util.Objects.requireNonNull(options, "options");
+        this.directPath = directPath;
     }
 
     /** Standard FCL plus the Open Level methods that fit its syntax ({@link ReaderOptions#OPEN_LEVEL}). */
@@ -56,7 +64,7 @@ public final class StrictReader implements FclReader {
         }
         ReaderDiagnostics diagnostics = new ReaderDiagnostics(sourceName);
         try {
-            Outcome outcome = readProgram(sourceName, text, diagnostics, options);
+            Outcome outcome = readProgram(sourceName, text, diagnostics, options, directPath);
             return new ReadResult(diagnostics.hasErrors() ? Optional.empty() : outcome.program(), diagnostics.finish(),
                     outcome.repaired());
         } catch (RuntimeException | StackOverflowError e) {
@@ -74,9 +82,18 @@ public final class StrictReader implements FclReader {
     }
 
     private static Outcome readProgram(String sourceName, String text, ReaderDiagnostics diagnostics,
-            ReaderOptions options) {
+            ReaderOptions options, boolean directPath) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
+        if (directPath && options.tokenFilter() == ReaderOptions.TokenFilter.NONE) {
+            // most texts have no error: read those without a parse tree, the rest as below
+            ReaderDiagnostics.Mark mark = diagnostics.mark();
+            Optional<Program> direct = DirectParser.program(sourceName, body, options, diagnostics);
+            if (direct.isPresent()) {
+                return new Outcome(direct, Optional.empty());
+            }
+            diagnostics.rollback(mark);
+        }
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
