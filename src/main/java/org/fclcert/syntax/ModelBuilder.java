@@ -94,15 +94,45 @@ final class ModelBuilder {
      * item it completes is whole) has read it, and drops its subtree: a program of 100 000 FUZZIFY blocks
      * never holds their trees all at once. Called for each completed item by the parser ({@code FclParser.itemParsed}).
      */
-    void buildItemEarly(FbItemContext ctx) {
+    private void buildItemEarly(FbItemContext ctx) {
         earlyItems.put(ctx, item(ctx));
-        ctx.children = null;
+        // the item keeps its one child, without the child's subtree: a message about what follows names it
+        ((ParserRuleContext) ctx.getChild(0)).children = null;
     }
 
     /** Likewise one variable declaration, so that a VAR section of 100 000 declarations keeps no trees. */
-    void buildDeclarationEarly(VarDeclarationContext ctx) {
+    private void buildDeclarationEarly(VarDeclarationContext ctx) {
         earlyDeclarations.put(ctx, declaration(ctx, kind((VarSectionContext) ctx.getParent())));
         ctx.children = null;
+    }
+
+    /**
+     * Has the parser hand each rule, function block item and declaration it completes to this builder, which
+     * builds it at once and drops its subtree, as long as {@code whole} says the parse has not had to
+     * recover from an error (until then every part it completes is whole).
+     */
+    void buildWhile(FclParser parser, java.util.function.BooleanSupplier whole) {
+        parser.ruleParsed = ctx -> {
+            if (whole.getAsBoolean()) {
+                buildEarly(ctx);
+            }
+        };
+        parser.itemParsed = ctx -> {
+            if (whole.getAsBoolean()) {
+                buildItemEarly(ctx);
+            }
+        };
+        parser.declarationParsed = ctx -> {
+            if (whole.getAsBoolean()) {
+                buildDeclarationEarly(ctx);
+            }
+        };
+    }
+
+    /** Drops what was built early from a parse that was then abandoned (a large program's models, held for nothing). */
+    void forgetEarly() {
+        earlyItems.clear();
+        earlyDeclarations.clear();
     }
 
     private Item item(FbItemContext item) {
@@ -470,7 +500,7 @@ final class ModelBuilder {
      * context itself, which still knows its first token). Only for a parse that cannot recover from
      * errors, so that every rule handed here is complete.
      */
-    void buildEarly(FuzzyRuleContext ctx) {
+    private void buildEarly(FuzzyRuleContext ctx) {
         ctx.built = rule(ctx);
         ctx.children = null;
     }

@@ -188,14 +188,13 @@ public final class StrictReader implements FclReader {
         parser.setErrorHandler(new BailErrorStrategy());
         // this pass stops at the first error, so every rule, item and declaration it completes is whole: build
         // each at once and drop its subtree, so that a large program's trees are never all held
-        parser.ruleParsed = builder::buildEarly;
-        parser.itemParsed = builder::buildItemEarly;
-        parser.declarationParsed = builder::buildDeclarationEarly;
+        builder.buildWhile(parser, () -> true);
         ReaderDiagnostics.Mark mark = diagnostics.mark();
         try {
             return new Parsed(parser.program(), true, List.of());
         } catch (ParseCancellationException e) {
             diagnostics.rollback(mark);   // the second pass reports everything again
+            builder.forgetEarly();        // what the first pass built belongs to its abandoned tree
             List<Token> tokens = table.toList();
             parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
             parser.removeErrorListeners();
@@ -204,6 +203,9 @@ public final class StrictReader implements FclReader {
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
             parser.setErrorHandler(strategy);
+            // what this pass completes before its first recovery is whole too (a large program with a
+            // mistake near its end then holds little more tree than one without)
+            builder.buildWhile(parser, () -> !strategy.recovered());
             try {
                 FclParser.ProgramContext tree = parser.program();
                 return new Parsed(tree, !strategy.recovered(), tokens);

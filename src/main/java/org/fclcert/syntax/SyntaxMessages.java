@@ -282,8 +282,16 @@ final class SyntaxMessages {
             }
             return show(token);
         }
-        if (!(node instanceof ParserRuleContext c) || c.getChildCount() == 0 || c.exception != null) {
+        if (!(node instanceof ParserRuleContext c) || c.exception != null) {
             return null;
+        }
+        if (c.getChildCount() == 0) {
+            // a completed part the reader built early and dropped the subtree of (ModelBuilder.buildWhile)
+            if (c.getStop() == null || c.getStart() == null || c.getStop().getTokenIndex() < c.getStart().getTokenIndex()) {
+                return null;
+            }
+            String block = blockName(c);
+            return block != null ? "the " + block : "'" + shorten(c.getStop().getText()) + "'";
         }
         if (c instanceof FclParser.MembershipFunctionContext) {
             return "the term's membership function";

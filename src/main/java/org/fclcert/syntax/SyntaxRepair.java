@@ -41,6 +41,10 @@ final class SyntaxRepair {
             parser.removeErrorListeners();
             parser.getInterpreter().setPredictionMode(PredictionMode.LL);
             parser.setErrorHandler(new FindRepair());
+            // each attempt stops at its first mismatch, so what it completes is whole: built at once (see StrictReader)
+            ReaderDiagnostics scratch = new ReaderDiagnostics(sourceName);
+            ModelBuilder builder = new ModelBuilder(sourceName, scratch, options);
+            builder.buildWhile(parser, () -> true);
             FclParser.ProgramContext tree;
             try {
                 tree = parser.program();
@@ -59,8 +63,7 @@ final class SyntaxRepair {
             } catch (ParseCancellationException | RecognitionException e) {
                 return Optional.empty();
             }
-            ReaderDiagnostics scratch = new ReaderDiagnostics(sourceName);
-            Program program = new ModelBuilder(sourceName, scratch, options).program(tree);
+            Program program = builder.program(tree);
             return scratch.hasErrors() ? Optional.empty() : Optional.of(program);
         }
         return Optional.empty();
