@@ -57,12 +57,6 @@ public class PeerComparisonBenchmark {
     private static final com.sun.management.OperatingSystemMXBean PROCESS =
             (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
-    private Reference valveRef;
-    private Jfuzzylite valvePeer;
-    private Reference cog3Ref;
-    private Jfuzzylite cog3Peer;
-    private Reference rulesRef;
-    private Jfuzzylite rulesPeer;
     private String valveText;
     private String valvePeerText;
     private String rulesText;
@@ -141,21 +135,58 @@ public class PeerComparisonBenchmark {
     }
 
     @Setup
-    public void setUp() throws Exception {
+    public void setUp() {
         valveText = PeerPrograms.valveStandard();
         valvePeerText = PeerPrograms.valveFuzzylite();
         rulesText = PeerPrograms.rules125(false);
         rulesPeerText = PeerPrograms.rules125(true);
-        valveRef = new Reference(valveText).warm(PeerPrograms.VALVE_INPUTS);
-        valvePeer = new Jfuzzylite(valvePeerText, "temp", "pressure");
-        cog3Ref = new Reference(PeerPrograms.cog3Standard()).warm(PeerPrograms.COG3_INPUTS);
-        cog3Peer = new Jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
-        rulesRef = new Reference(rulesText).warm(PeerPrograms.RULES125_INPUTS);
-        rulesPeer = new Jfuzzylite(rulesPeerText, PeerPrograms.INPUTS125);
-        exactness("valve", PeerPrograms.VALVE_INPUTS, v -> ExactValues.valve(v[0], v[1]), valveRef, valvePeer);
-        exactness("cog3", PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]), cog3Ref, cog3Peer);
-        exactness("rules125", PeerPrograms.RULES125_INPUTS, v -> ExactValues.rules125(v[0], v[1], v[2]), rulesRef,
-                rulesPeer);
+    }
+
+    /**
+     * One program on both sides, warmed and checked for exactness at set-up. A state per program, so that each
+     * benchmark's JVM (one fork per benchmark) has run only the program it measures: the call sites the programs
+     * share (fclcert's generated kernels, jfuzzylite's engine) then see no other program's types.
+     */
+    @State(Scope.Thread)
+    public static class Valve {
+        Reference ref;
+        Jfuzzylite peer;
+
+        @Setup
+        public void setUp() throws Exception {
+            ref = new Reference(PeerPrograms.valveStandard()).warm(PeerPrograms.VALVE_INPUTS);
+            peer = new Jfuzzylite(PeerPrograms.valveFuzzylite(), "temp", "pressure");
+            exactness("valve", PeerPrograms.VALVE_INPUTS, v -> ExactValues.valve(v[0], v[1]), ref, peer);
+        }
+    }
+
+    /** The three-rule CoG program on both sides (see {@link Valve}). */
+    @State(Scope.Thread)
+    public static class Cog3 {
+        Reference ref;
+        Jfuzzylite peer;
+
+        @Setup
+        public void setUp() throws Exception {
+            ref = new Reference(PeerPrograms.cog3Standard()).warm(PeerPrograms.COG3_INPUTS);
+            peer = new Jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
+            exactness("cog3", PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]), ref, peer);
+        }
+    }
+
+    /** The 125-rule program on both sides (see {@link Valve}). */
+    @State(Scope.Thread)
+    public static class Rules125 {
+        Reference ref;
+        Jfuzzylite peer;
+
+        @Setup
+        public void setUp() throws Exception {
+            ref = new Reference(PeerPrograms.rules125(false)).warm(PeerPrograms.RULES125_INPUTS);
+            peer = new Jfuzzylite(PeerPrograms.rules125(true), PeerPrograms.INPUTS125);
+            exactness("rules125", PeerPrograms.RULES125_INPUTS, v -> ExactValues.rules125(v[0], v[1], v[2]), ref,
+                    peer);
+        }
     }
 
     /** Prints, per side, the largest |output − exact| over the cycle (and in units of the last place). */
@@ -216,33 +247,33 @@ public class PeerComparisonBenchmark {
     // ---------------------------------------------------------------- evaluation
 
     @Benchmark
-    public double referenceValve() throws Exception {
-        return valveRef.step(next(PeerPrograms.VALVE_INPUTS));
+    public double referenceValve(Valve p) throws Exception {
+        return p.ref.step(next(PeerPrograms.VALVE_INPUTS));
     }
 
     @Benchmark
-    public double jfuzzyliteValve() throws Exception {
-        return valvePeer.step(next(PeerPrograms.VALVE_INPUTS));
+    public double jfuzzyliteValve(Valve p) throws Exception {
+        return p.peer.step(next(PeerPrograms.VALVE_INPUTS));
     }
 
     @Benchmark
-    public double referenceCog3() throws Exception {
-        return cog3Ref.step(next(PeerPrograms.COG3_INPUTS));
+    public double referenceCog3(Cog3 p) throws Exception {
+        return p.ref.step(next(PeerPrograms.COG3_INPUTS));
     }
 
     @Benchmark
-    public double jfuzzyliteCog3() throws Exception {
-        return cog3Peer.step(next(PeerPrograms.COG3_INPUTS));
+    public double jfuzzyliteCog3(Cog3 p) throws Exception {
+        return p.peer.step(next(PeerPrograms.COG3_INPUTS));
     }
 
     @Benchmark
-    public double referenceRules125() throws Exception {
-        return rulesRef.step(next(PeerPrograms.RULES125_INPUTS));
+    public double referenceRules125(Rules125 p) throws Exception {
+        return p.ref.step(next(PeerPrograms.RULES125_INPUTS));
     }
 
     @Benchmark
-    public double jfuzzyliteRules125() throws Exception {
-        return rulesPeer.step(next(PeerPrograms.RULES125_INPUTS));
+    public double jfuzzyliteRules125(Rules125 p) throws Exception {
+        return p.peer.step(next(PeerPrograms.RULES125_INPUTS));
     }
 
     // ---------------------------------------------------------------- reading
