@@ -3,6 +3,8 @@ package org.fclcert.syntax;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.BiFunction;
+import java.util.function.Supplier;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.misc.Interval;
 import org.fclcert.model.AccumulationMethod;
@@ -453,33 +455,28 @@ final class DirectParser {
 
     // Table 6 as the grammar writes it: OR of ANDs of factors, each level a list.
     private Condition condition() {
-        Token start = t;
-        Condition first = conjunction();
-        if (type != FclLexer.OR) {
-            return first;
-        }
-        List<Condition> operands = new ArrayList<>();
-        operands.add(first);
-        while (type == FclLexer.OR) {
-            next();
-            operands.add(conjunction());
-        }
-        return new Condition.Or(operands, at(start));
+        return operands(FclLexer.OR, this::conjunction, Condition.Or::new);
     }
 
     private Condition conjunction() {
+        return operands(FclLexer.AND, this::factor, Condition.And::new);
+    }
+
+    /** One operand, or several joined by the operator, made into one condition where it starts. */
+    private Condition operands(int operator, Supplier<Condition> operand,
+            BiFunction<List<Condition>, SourceLocation, Condition> joined) {
         Token start = t;
-        Condition first = factor();
-        if (type != FclLexer.AND) {
+        Condition first = operand.get();
+        if (type != operator) {
             return first;
         }
         List<Condition> operands = new ArrayList<>();
         operands.add(first);
-        while (type == FclLexer.AND) {
+        while (type == operator) {
             next();
-            operands.add(factor());
+            operands.add(operand.get());
         }
-        return new Condition.And(operands, at(start));
+        return joined.apply(operands, at(start));
     }
 
     private Condition factor() {

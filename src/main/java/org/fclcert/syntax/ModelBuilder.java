@@ -644,7 +644,8 @@ final class ModelBuilder {
     static Literal literal(Token t, SourceLocation at) {
         String text = t.getText();
         double value = NumberSyntax.value(t.getType(), text);
-        return new Literal(value, NumberSyntax.integral(t.getType()), at, NumberSyntax.wideInteger(t.getType(), text, value));
+        return new Literal(value, NumberSyntax.integral(t.getType()), at,
+                NumberSyntax.wideInteger(t.getType(), text, value));
     }
 
     private static String name(NameContext ctx) {

@@ -287,11 +287,13 @@ final class SyntaxMessages {
         }
         if (c.getChildCount() == 0) {
             // a completed part the reader built early and dropped the subtree of (ModelBuilder.buildWhile)
-            if (c.getStop() == null || c.getStart() == null || c.getStop().getTokenIndex() < c.getStart().getTokenIndex()) {
+            Token start = c.getStart();
+            Token stop = c.getStop();
+            if (stop == null || start == null || stop.getTokenIndex() < start.getTokenIndex()) {
                 return null;
             }
             String block = blockName(c);
-            return block != null ? "the " + block : "'" + shorten(c.getStop().getText()) + "'";
+            return block != null ? "the " + block : "'" + shorten(stop.getText()) + "'";
         }
         if (c instanceof FclParser.MembershipFunctionContext) {
             return "the term's membership function";

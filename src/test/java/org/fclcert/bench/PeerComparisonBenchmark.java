@@ -142,50 +142,58 @@ public class PeerComparisonBenchmark {
         rulesPeerText = PeerPrograms.rules125(true);
     }
 
+    /** One program on both sides: fclcert warmed, and both checked for exactness at set-up. */
+    static final class Sides {
+        final Reference ref;
+        final Jfuzzylite peer;
+
+        Sides(String program, String standard, Jfuzzylite peer, double[][] cycle, ToDoubleFunction<double[]> exact)
+                throws Exception {
+            this.ref = new Reference(standard).warm(cycle);
+            this.peer = peer;
+            exactness(program, cycle, exact, ref, peer);
+        }
+    }
+
     /**
-     * One program on both sides, warmed and checked for exactness at set-up. A state per program, so that each
-     * benchmark's JVM (one fork per benchmark) has run only the program it measures: the call sites the programs
-     * share (fclcert's generated kernels, jfuzzylite's engine) then see no other program's types.
+     * The valve on both sides. A state per program, so that each benchmark's JVM (one fork per benchmark) has
+     * run only the program it measures: the call sites the programs share (fclcert's generated kernels,
+     * jfuzzylite's engine) then see no other program's types.
      */
     @State(Scope.Thread)
     public static class Valve {
-        Reference ref;
-        Jfuzzylite peer;
+        Sides sides;
 
         @Setup
         public void setUp() throws Exception {
-            ref = new Reference(PeerPrograms.valveStandard()).warm(PeerPrograms.VALVE_INPUTS);
-            peer = new Jfuzzylite(PeerPrograms.valveFuzzylite(), "temp", "pressure");
-            exactness("valve", PeerPrograms.VALVE_INPUTS, v -> ExactValues.valve(v[0], v[1]), ref, peer);
+            sides = new Sides("valve", PeerPrograms.valveStandard(),
+                    new Jfuzzylite(PeerPrograms.valveFuzzylite(), "temp", "pressure"), PeerPrograms.VALVE_INPUTS,
+                    v -> ExactValues.valve(v[0], v[1]));
         }
     }
 
     /** The three-rule CoG program on both sides (see {@link Valve}). */
     @State(Scope.Thread)
     public static class Cog3 {
-        Reference ref;
-        Jfuzzylite peer;
+        Sides sides;
 
         @Setup
         public void setUp() throws Exception {
-            ref = new Reference(PeerPrograms.cog3Standard()).warm(PeerPrograms.COG3_INPUTS);
-            peer = new Jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x");
-            exactness("cog3", PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]), ref, peer);
+            sides = new Sides("cog3", PeerPrograms.cog3Standard(), new Jfuzzylite(PeerPrograms.cog3Fuzzylite(), "x"),
+                    PeerPrograms.COG3_INPUTS, v -> ExactValues.cog3(v[0]));
         }
     }
 
     /** The 125-rule program on both sides (see {@link Valve}). */
     @State(Scope.Thread)
     public static class Rules125 {
-        Reference ref;
-        Jfuzzylite peer;
+        Sides sides;
 
         @Setup
         public void setUp() throws Exception {
-            ref = new Reference(PeerPrograms.rules125(false)).warm(PeerPrograms.RULES125_INPUTS);
-            peer = new Jfuzzylite(PeerPrograms.rules125(true), PeerPrograms.INPUTS125);
-            exactness("rules125", PeerPrograms.RULES125_INPUTS, v -> ExactValues.rules125(v[0], v[1], v[2]), ref,
-                    peer);
+            sides = new Sides("rules125", PeerPrograms.rules125(false),
+                    new Jfuzzylite(PeerPrograms.rules125(true), PeerPrograms.INPUTS125), PeerPrograms.RULES125_INPUTS,
+                    v -> ExactValues.rules125(v[0], v[1], v[2]));
         }
     }
 
@@ -248,32 +256,32 @@ public class PeerComparisonBenchmark {
 
     @Benchmark
     public double referenceValve(Valve p) throws Exception {
-        return p.ref.step(next(PeerPrograms.VALVE_INPUTS));
+        return p.sides.ref.step(next(PeerPrograms.VALVE_INPUTS));
     }
 
     @Benchmark
     public double jfuzzyliteValve(Valve p) throws Exception {
-        return p.peer.step(next(PeerPrograms.VALVE_INPUTS));
+        return p.sides.peer.step(next(PeerPrograms.VALVE_INPUTS));
     }
 
     @Benchmark
     public double referenceCog3(Cog3 p) throws Exception {
-        return p.ref.step(next(PeerPrograms.COG3_INPUTS));
+        return p.sides.ref.step(next(PeerPrograms.COG3_INPUTS));
     }
 
     @Benchmark
     public double jfuzzyliteCog3(Cog3 p) throws Exception {
-        return p.peer.step(next(PeerPrograms.COG3_INPUTS));
+        return p.sides.peer.step(next(PeerPrograms.COG3_INPUTS));
     }
 
     @Benchmark
     public double referenceRules125(Rules125 p) throws Exception {
-        return p.ref.step(next(PeerPrograms.RULES125_INPUTS));
+        return p.sides.ref.step(next(PeerPrograms.RULES125_INPUTS));
     }
 
     @Benchmark
     public double jfuzzyliteRules125(Rules125 p) throws Exception {
-        return p.peer.step(next(PeerPrograms.RULES125_INPUTS));
+        return p.sides.peer.step(next(PeerPrograms.RULES125_INPUTS));
     }
 
     // ---------------------------------------------------------------- reading

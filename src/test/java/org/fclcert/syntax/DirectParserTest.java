@@ -176,7 +176,8 @@ class DirectParserTest {
         assertTrue(directly(text, ReaderOptions.STRICT));
         ReadResult read = new StrictReader(ReaderOptions.STRICT, true).read("t.fcl", text);
         assertEquals(List.of("5:55 FCL-W101", "5:61 FCL-W103", "8:42 FCL-W105"), read.diagnostics().stream()
-                .map(d -> d.location().line() + ":" + d.location().column() + " " + d.diagnosticCode().code()).toList());
+                .map(d -> d.location().line() + ":" + d.location().column() + " " + d.diagnosticCode().code())
+                .toList());
         compareOnAllOptions(text);
         assertNoFailures();
     }
@@ -250,7 +251,8 @@ class DirectParserTest {
         if (a.getClass().isRecord()) {
             for (RecordComponent c : a.getClass().getRecordComponents()) {
                 try {
-                    String d = difference(c.getAccessor().invoke(a), c.getAccessor().invoke(b), path + "." + c.getName());
+                    String d = difference(c.getAccessor().invoke(a), c.getAccessor().invoke(b),
+                            path + "." + c.getName());
                     if (d != null) {
                         return d;
                     }
@@ -298,10 +300,14 @@ class DirectParserTest {
             case 1 -> before + token + " " + token + after;
             case 2 -> before + spelling + after;
             case 3 -> before + spelling + " " + token + after;
-            default -> i + 1 < tokens.size()
-                    ? before + tokens.get(i + 1).getText() + text.substring(t.getStopIndex() + 1,
-                            tokens.get(i + 1).getStartIndex()) + token + text.substring(tokens.get(i + 1).getStopIndex() + 1)
-                    : before + after;
+            default -> {
+                if (i + 1 == tokens.size()) {
+                    yield before + after;
+                }
+                Token u = tokens.get(i + 1);   // swapped with the next token, the space between kept
+                yield before + u.getText() + text.substring(t.getStopIndex() + 1, u.getStartIndex()) + token
+                        + text.substring(u.getStopIndex() + 1);
+            }
         };
     }
 }
