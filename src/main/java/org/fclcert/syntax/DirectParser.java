@@ -87,7 +87,8 @@ final class DirectParser {
             ReaderDiagnostics diagnostics) {
         try {
             return Optional.of(new DirectParser(body, sourceName, options, diagnostics).program());
-        } catch (Decline d) {
+        } catch (RuntimeException declinedOrUnforeseen) {
+            // Decline, or something this shortcut did not foresee: either way the full pipeline decides
             return Optional.empty();
         }
     }
