@@ -90,9 +90,8 @@ final class ModelBuilder {
     private final Map<VarDeclarationContext, List<Variable>> earlyDeclarations = new IdentityHashMap<>();
 
     /**
-     * Builds a function block item as soon as the fast parse (which stops at the first error, so that every
-     * item it completes is whole) has read it, and drops its subtree: a program of 100 000 FUZZIFY blocks
-     * never holds their trees all at once. Called for each completed item by the parser ({@code FclParser.itemParsed}).
+     * Builds a function block item as soon as a parse has completed it whole ({@link #buildWhile}), and drops
+     * its subtree: a program of 100 000 FUZZIFY blocks never holds their trees all at once.
      */
     private void buildItemEarly(FbItemContext ctx) {
         earlyItems.put(ctx, item(ctx));
@@ -129,7 +128,7 @@ final class ModelBuilder {
         };
     }
 
-    /** Drops what was built early from a parse that was then abandoned (a large program's models, held for nothing). */
+    /** Drops what an abandoned parse built early (a large program's models, else held for nothing). */
     void forgetEarly() {
         earlyItems.clear();
         earlyDeclarations.clear();
@@ -497,8 +496,8 @@ final class ModelBuilder {
 
     /**
      * Builds a rule while the parse is still running, then drops the rule's subtree (keeping the
-     * context itself, which still knows its first token). Only for a parse that cannot recover from
-     * errors, so that every rule handed here is complete.
+     * context itself, which still knows its first token). Only for a rule a parse completed whole
+     * ({@link #buildWhile}).
      */
     private void buildEarly(FuzzyRuleContext ctx) {
         ctx.built = rule(ctx);

@@ -18,8 +18,8 @@ import org.fclcert.model.SourceLocation;
  *
  * <p>A text without errors, written as 5.4 writes FCL, is read by the {@link DirectParser} straight into the
  * model. A text it declines goes through the stages: lex; pre-scan the tokens (lexical mistakes, nesting
- * depth, the Annex D errata); parse, first with the fast SLL prediction and, only if that fails, again with full LL and error recovery;
- * report keywords used as names; build the model. Every mistake becomes a located diagnostic; the
+ * depth, the Annex D errata); parse, first with the fast SLL prediction and, only if that fails, again with
+ * full LL and error recovery; report keywords used as names; build the model. Every mistake becomes a located diagnostic; the
  * reader never throws and never prints. Thread-safe: it keeps no state between calls.
  */
 public final class StrictReader implements FclReader {
