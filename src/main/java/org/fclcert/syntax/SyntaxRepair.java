@@ -32,8 +32,9 @@ final class SyntaxRepair {
 
     /** The program the repaired tokens give, or empty when the errors cannot be repaired token by token. */
     static Optional<Program> program(String sourceName, List<Token> tokens, ReaderOptions options) {
-        List<Token> current = new ArrayList<>();
-        tokens.forEach(t -> current.add(new CommonToken(t)));
+        // the tokens themselves, not copies: after the parse that reported the errors nothing else reads them,
+        // and a large program's tokens are most of what the error path holds
+        List<Token> current = new ArrayList<>(tokens);
         int lowestNext = 0;
         for (int attempt = 0; attempt <= MAX_REPAIRS; attempt++) {
             CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(current));
