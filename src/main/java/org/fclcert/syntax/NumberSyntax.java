@@ -78,7 +78,6 @@ final class NumberSyntax {
                 + " (IEC 61131-3 B.1.2)";
     }
 
-    /** Every digit group of a decimal literal (between '.', 'E' and the exponent sign) is digit {['_'] digit}. */
     /** At most 300 characters, no underscore and no exponent: no group to check, nothing to overflow. */
     private static boolean plain(String text) {
         if (text.length() > 300) {
@@ -93,6 +92,7 @@ final class NumberSyntax {
         return true;
     }
 
+    /** Every digit group of a decimal literal (between '.', 'E' and the exponent sign) is digit {['_'] digit}. */
     private static boolean validDecimalGroups(String unsigned) {
         char previous = '.';   // as if a group had just started
         for (int i = 0; i < unsigned.length(); i++) {
