@@ -104,8 +104,7 @@ final class DirectParser {
             }
             // TokenPreScan reports an unterminated comment and warns of '(*' inside one
             String text = t.getText();
-            int opener = text.indexOf("(*", 2);
-            if (text.length() < 4 || !text.endsWith("*)") || opener >= 0 && opener <= text.length() - 4) {
+            if (TokenPreScan.unterminated(text) || TokenPreScan.opensInside(text)) {
                 throw Decline.INSTANCE;
             }
         }

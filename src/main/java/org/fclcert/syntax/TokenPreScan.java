@@ -115,14 +115,25 @@ final class TokenPreScan {
 
     private void checkComment(Token t) {
         String text = t.getText();
-        if (text.length() < 4 || !text.endsWith("*)")) {
+        if (unterminated(text)) {
             diagnostics.error(t, SyntaxCode.UNTERMINATED_COMMENT,
                     "this comment is never closed: '(*' needs a matching '*)'");
             diagnostics.explainEndOfText();
-        } else if (text.substring(2, text.length() - 2).contains("(*")) {
+        } else if (opensInside(text)) {
             diagnostics.warning(t, SyntaxCode.NESTED_COMMENT_OPENER,
                     "'(*' inside a comment: comments do not nest in FCL (IEC 61131-3), the first '*)' ends it");
         }
+    }
+
+    /** Whether a COMMENT token's text runs to the end of the text without its '*)'. */
+    static boolean unterminated(String comment) {
+        return comment.length() < 4 || !comment.endsWith("*)");
+    }
+
+    /** Whether a terminated comment holds '(*' between its own '(*' and '*)'. */
+    static boolean opensInside(String comment) {
+        int opener = comment.indexOf("(*", 2);
+        return opener >= 0 && opener <= comment.length() - 4;
     }
 
     private void badCharacter(Token t) {
