@@ -52,7 +52,7 @@ final class Activations {
     double activate(int j, double mu) {
         double l = level[j];
         if (norm[j] != null) {
-            return weight[j] * FunctionBlockInstance.and(norm[j], l, mu);
+            return weight[j] * Norms.and(norm[j], l, mu);
         }
         return weight[j] * (prod[j] ? l * mu : Math.min(l, mu));
     }

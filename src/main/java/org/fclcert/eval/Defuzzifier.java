@@ -93,9 +93,10 @@ final class Defuzzifier {
     }
 
     /**
-     * Degrees within this relative distance of the supremum count as reaching it: a plateau that is
-     * flat in exact arithmetic (a clip level meeting a sum of segments, say) may carry vertices
-     * that differ in the last bits.
+     * For the numerically integrated sets of {@link SmoothSet} only: degrees within this relative distance of the
+     * supremum count as reaching it. On a piece-wise linear set a degree reaches the supremum when it equals it;
+     * a vertex near it without equalling it is a decision the filter hands to the exact path
+     * (FunctionBlockInstance.decideSet).
      */
     static final double TIE = 1e-12;
 
@@ -106,7 +107,7 @@ final class Defuzzifier {
             return Double.NaN;
         }
         for (int j = 0; j < np; j++) {
-            if (py[j] >= sup * (1 - TIE)) {
+            if (py[j] == sup) {
                 return px[j];
             }
         }
@@ -120,7 +121,7 @@ final class Defuzzifier {
             return Double.NaN;
         }
         for (int j = np - 1; j >= 0; j--) {
-            if (py[j] >= sup * (1 - TIE)) {
+            if (py[j] == sup) {
                 return px[j];
             }
         }
@@ -139,7 +140,7 @@ final class Defuzzifier {
         if (!(sup > 0)) {
             return Double.NaN;
         }
-        double level = sup * (1 - TIE);
+        double level = sup;
         double length = 0;
         double moment = 0;
         for (int j = 0; j + 1 < np; j++) {

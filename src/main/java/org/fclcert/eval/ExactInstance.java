@@ -50,6 +50,8 @@ public final class ExactInstance {
     private final Rational[] rangeMax;
     private final Rational[] defaults;
     private final Rational[] previous;
+    /** Per output: nothing fired in the last evaluation (DEFAULT or NC). */
+    private final boolean[] defaulted;
     private final ExactSet set = new ExactSet();
     private final SmoothSet[] smoothSets;
     private boolean exact = true;
@@ -107,6 +109,7 @@ public final class ExactInstance {
         rangeMax = new Rational[no];
         defaults = new Rational[no];
         previous = new Rational[no];
+        defaulted = new boolean[no];
         smoothSets = new SmoothSet[no];
         for (int i = 0; i < no; i++) {
             OutputPlan o = plan.outputs[i];
@@ -207,6 +210,43 @@ public final class ExactInstance {
 
     private static double toDouble(Rational r) {
         return r == null ? Double.NaN : r.toDouble();
+    }
+
+    /**
+     * One evaluation from the given state (every variable's value as a double, NaN for none), as the filtered
+     * evaluator hands over a step it cannot decide: each value read as {@link #reading()} reads it.
+     */
+    void evaluateFrom(double[] state) throws EvaluationException {
+        for (int i = 0; i < state.length; i++) {
+            values[i] = Double.isNaN(state[i]) ? null : reading.read(state[i]);
+        }
+        evaluate();
+    }
+
+    /** Writes the current values, each the double nearest the exact value, into {@code into} (inputs skipped). */
+    void copyState(double[] into, boolean[] isInput) {
+        for (int i = 0; i < into.length; i++) {
+            if (!isInput[i]) {
+                into[i] = toDouble(values[i]);
+            }
+        }
+    }
+
+    /** The last evaluation's results as a trace records them: each output's value and how it got it. */
+    List<Trace.Result> results() {
+        List<Trace.Result> out = new ArrayList<>();
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            for (int slot : rb.bareTargetSlots()) {
+                out.add(new Trace.Result(plan.variableNames[slot], toDouble(values[slot]), Trace.Outcome.ASSIGNED));
+            }
+        }
+        for (int i = 0; i < plan.outputs.length; i++) {
+            OutputPlan o = plan.outputs[i];
+            Trace.Outcome outcome = !defaulted[i] ? Trace.Outcome.DEFUZZIFIED
+                    : o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
+            out.add(new Trace.Result(o.variable(), toDouble(values[o.slot()]), outcome));
+        }
+        return out;
     }
 
     public void evaluate() throws EvaluationException {
@@ -339,7 +379,7 @@ public final class ExactInstance {
                     contributionDegree[sc.contribution()] = d;
                     contributionWeight[sc.contribution()] = w;
                 } else {
-                    bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w.multiply(d));
+                    bare[sc.bareTarget()] = Norms.accumulate(rb.accumulation(), bare[sc.bareTarget()], w.multiply(d));
                 }
             }
         }
@@ -348,19 +388,6 @@ public final class ExactInstance {
                     : bare[j];
             store(rb.bareTargetSlots()[j], v);
         }
-    }
-
-    static Rational accumulate(AccumulationMethod accu, Rational a, Rational b) {
-        return switch (accu) {
-            case MAX -> a.max(b);
-            case BSUM -> a.add(b).min(Rational.ONE);
-            case NSUM, SUM -> a.add(b);
-            case PROBOR -> a.add(b).subtract(a.multiply(b));
-            case ESUM -> or(OrAlgorithm.ESUM, a, b);
-            case HSUM -> or(OrAlgorithm.HSUM, a, b);
-            case DSUM -> or(OrAlgorithm.DSUM, a, b);
-            case NMAX -> or(OrAlgorithm.NMAX, a, b);
-        };
     }
 
     private Rational aggregate(ConditionCode code, AndAlgorithm and, OrAlgorithm or) {
@@ -374,14 +401,14 @@ public final class ExactInstance {
                 case ConditionCode.TERM_NOT -> st[sp++] = Rational.ONE.subtract(termDegrees[args[i]]);
                 case ConditionCode.VARIABLE -> st[sp++] = value(args[i]).clamp01();
                 case ConditionCode.NOT -> st[sp - 1] = Rational.ONE.subtract(st[sp - 1]);
-                case ConditionCode.HEDGE -> st[sp - 1] = hedge(HEDGES[args[i]], st[sp - 1]);
+                case ConditionCode.HEDGE -> st[sp - 1] = Norms.hedge(HEDGES[args[i]], st[sp - 1]);
                 case ConditionCode.ONE -> st[sp++] = Rational.ONE;
                 default -> {
                     boolean isAnd = ops[i] == ConditionCode.AND;
                     int base = sp - args[i];
                     Rational acc = st[base];
                     for (int j = base + 1; j < sp; j++) {
-                        acc = isAnd ? and(and, acc, st[j]) : or(or, acc, st[j]);
+                        acc = isAnd ? Norms.and(and, acc, st[j]) : Norms.or(or, acc, st[j]);
                     }
                     st[base] = acc;
                     sp = base + 1;
@@ -389,46 +416,6 @@ public final class ExactInstance {
             }
         }
         return st[0];
-    }
-
-    static Rational and(AndAlgorithm a, Rational x, Rational y) {
-        return switch (a) {
-            case MIN -> x.min(y);
-            case PROD -> x.multiply(y);
-            case BDIF -> x.add(y).subtract(Rational.ONE).max(Rational.ZERO);
-            // the dialects' norms (O-OTHER-NORM), rational too
-            case EPROD -> x.multiply(y).divide(Rational.of(2).subtract(x.add(y).subtract(x.multiply(y))));
-            case HPROD -> x.add(y).equals(Rational.ZERO) ? Rational.ZERO : x.multiply(y).divide(x.add(y).subtract(x.multiply(y)));
-            case DPROD -> x.max(y).equals(Rational.ONE) ? x.min(y) : Rational.ZERO;
-            case NMIN -> x.add(y).compareTo(Rational.ONE) > 0 ? x.min(y) : Rational.ZERO;
-        };
-    }
-
-    static Rational or(OrAlgorithm o, Rational x, Rational y) {
-        return switch (o) {
-            case MAX -> x.max(y);
-            case ASUM -> x.add(y).subtract(x.multiply(y));
-            case BSUM -> x.add(y).min(Rational.ONE);
-            case ESUM -> x.add(y).divide(Rational.ONE.add(x.multiply(y)));
-            case HSUM -> x.multiply(y).equals(Rational.ONE) ? Rational.ONE
-                    : x.add(y).subtract(Rational.of(2).multiply(x.multiply(y))).divide(Rational.ONE.subtract(x.multiply(y)));
-            case DSUM -> x.min(y).equals(Rational.ZERO) ? x.max(y) : Rational.ONE;
-            case NMAX -> x.add(y).compareTo(Rational.ONE) < 0 ? x.max(y) : Rational.ONE;
-        };
-    }
-
-    /** The hedges of {@link Hedge#apply} in exact arithmetic (square roots to 60 digits). */
-    static Rational hedge(Hedge h, Rational mu) {
-        return switch (h) {
-            case VERY -> mu.multiply(mu);
-            case SOMEWHAT -> mu.sqrt();
-            case EXTREMELY -> mu.compareTo(Rational.HALF) <= 0 ? Rational.TWO.multiply(mu).multiply(mu)
-                    : Rational.ONE.subtract(Rational.TWO.multiply(Rational.ONE.subtract(mu)).multiply(Rational.ONE.subtract(mu)));
-            case SELDOM -> mu.compareTo(Rational.HALF) <= 0 ? mu.multiply(Rational.HALF).sqrt()
-                    : Rational.ONE.subtract(Rational.ONE.subtract(mu).multiply(Rational.HALF).sqrt());
-            case ANY -> Rational.ONE;
-            case NOT -> Rational.ONE.subtract(mu);
-        };
     }
 
     // ------------------------------------------------------------------------------------ defuzzification
@@ -452,6 +439,7 @@ public final class ExactInstance {
             result = pointSet(o, i);
             empty = result == null;
         }
+        defaulted[i] = empty;
         if (empty) {
             result = o.noChange() ? previous[i] : defaults[i];
         }
@@ -469,7 +457,7 @@ public final class ExactInstance {
         int[] cs = o.contributions();
         for (int k = 0; k < cs.length; k++) {
             int t = o.contributionTerm()[k];
-            degree[t] = accumulate(o.accumulation(), degree[t],
+            degree[t] = Norms.accumulate(o.accumulation(), degree[t],
                     contributionWeight[cs[k]].multiply(contributionDegree[cs[k]]));
         }
         if (o.accumulation() == AccumulationMethod.NSUM) {

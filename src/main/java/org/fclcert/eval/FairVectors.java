@@ -16,7 +16,8 @@ import java.util.function.DoubleUnaryOperator;
  * equally well apply:
  * <ul>
  * <li>the other reading of numbers ({@link NumberReading#BINARY}: literals and inputs as their exact doubles);</li>
- * <li>double arithmetic: the fast path ({@link FunctionBlockInstance});</li>
+ * <li>plain double arithmetic ({@link LoadedProgram#newDoubleInstance}: the reference's arithmetic without its exact
+ * fallback);</li>
  * <li>each input set by the vectors nudged one ulp up, then one ulp down (in every step), except in a step
  * where another input has the same value: equal inputs are equal in every arithmetic, so a tie between them is
  * no knife edge;</li>
@@ -246,12 +247,12 @@ public final class FairVectors {
         return out;
     }
 
-    /** The fast double path as one more arithmetic. */
+    /** Plain double arithmetic as one more arithmetic. */
     private static Run fast(LoadedProgram program, String block, List<Map<String, Double>> steps) {
-        Run run = new Run("double arithmetic (the fast path)");
+        Run run = new Run("plain double arithmetic");
         FunctionBlockInstance fb;
         try {
-            fb = block == null ? program.newInstance() : program.newInstance(block);
+            fb = program.newDoubleInstance(block);
         } catch (EvaluationException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }

@@ -17,15 +17,46 @@ import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 
 /**
- * One instance of a fuzzy function block (IEC 61131-3 instance semantics): it keeps its variable
- * values between evaluations, so unset inputs keep their last value and DEFAULT NC keeps the last
- * output. Not thread-safe; create one instance per thread. {@link #evaluate()} does no name lookup
- * and allocates nothing once its scratch arrays have grown to the program's needs.
+ * The reference evaluator: one instance of a fuzzy function block (IEC 61131-3 instance semantics). It keeps
+ * its variable values between evaluations, so unset inputs keep their last value and DEFAULT NC keeps the last
+ * output. Not thread-safe; create one instance per thread.
+ *
+ * <p>Filtered exact evaluation (docs/semantics.md, "Filtered exact evaluation"): every degree is computed in
+ * doubles together with a bound on its distance from the exact value ({@link Norms}); at every decision point
+ * (a degree against 0, 1 or another degree, whether a rule fired, a tie for LM/RM/MoM, a clip at a vertex, an
+ * INT rounding at .5) a decision the bounds cannot settle makes the evaluation be redone in exact rational
+ * arithmetic ({@link ExactInstance}, from the same state), and its results are taken. So every discrete outcome
+ * is the exact one and a REAL output is within {@link #bound(String)} of it. {@link #fallbacks()} counts the
+ * evaluations redone. {@link #evaluate()} does no name lookup and allocates nothing when it does not fall back.
  */
 public final class FunctionBlockInstance {
     private final BlockPlan plan;
     private final double[] values;
     private final double[] termDegrees;
+    /** Per term degree, per stack entry, per contribution: the bound of its error (docs/semantics.md). */
+    private final double[] termErrors;
+    private final double[] stackErrors;
+    private final double[] contributionError;
+    private final double[] contributionDegreeError;
+    private final double[] singletonError;
+    private final double[] bareErrors;
+    /** Per output: the bound of the last value's distance from the exact value (0 when decided exactly). */
+    private final double[] bounds;
+    /** Whether decisions the bounds cannot settle are redone exactly (false: plain doubles, for FairVectors). */
+    private final boolean filtered;
+    /** Set by a decision the bounds could not settle, during one evaluation. */
+    private boolean undecided;
+    private String lastDecision;
+    private ExactInstance exact;
+    private boolean exactUnavailable;
+    private final double[] before;
+    /** Per variable slot: the bound of a value written in this evaluation (bare conclusions, outputs), else 0. */
+    private final double[] slotErrors;
+    /** The slot of each VAR_INPUT, in declaration order. */
+    private final int[] inputSlots;
+    private long evaluations;
+    private long fallbacks;
+    private long undecidedWithoutExact;
     private final double[][] curX;
     private final double[][] curY;
     private final double[] stack;
@@ -47,9 +78,18 @@ public final class FunctionBlockInstance {
     private final int[] variableShapes;
 
     FunctionBlockInstance(BlockPlan plan) {
+        this(plan, true);
+    }
+
+    FunctionBlockInstance(BlockPlan plan, boolean filtered) {
         this.plan = plan;
+        this.filtered = filtered;
         this.values = plan.initialValues.clone();
+        this.before = new double[values.length];
+        this.slotErrors = new double[values.length];
+        this.inputSlots = plan.inputNames.stream().mapToInt(plan.slotByName::get).toArray();
         this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
+        this.termErrors = new double[termDegrees.length];
         int shapes = plan.shapes.length;
         this.curX = new double[shapes][];
         this.curY = new double[shapes][];
@@ -61,14 +101,20 @@ public final class FunctionBlockInstance {
         this.variableShapes = java.util.stream.IntStream.range(0, shapes)
                 .filter(s -> !plan.shapes[s].constant).toArray();
         this.stack = new double[plan.maxStack];
+        this.stackErrors = new double[plan.maxStack];
         this.bare = new double[Math.max(1, plan.maxBareTargets)];
+        this.bareErrors = new double[bare.length];
         int terms = 0;
         for (OutputPlan o : plan.outputs) {
             terms = Math.max(terms, o.termShapes().length);
         }
         this.contributionDegree = new double[plan.contributionCount];
         this.contributionWeight = new double[plan.contributionCount];
+        this.contributionError = new double[plan.contributionCount];
+        this.contributionDegreeError = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
+        this.singletonError = new double[terms];
+        this.bounds = new double[plan.outputs.length];
         this.singletonValue = new double[terms];
         this.previous = new double[plan.outputs.length];
         this.smoothSets = new SmoothSet[plan.outputs.length];
@@ -109,6 +155,89 @@ public final class FunctionBlockInstance {
         store(slot, value);
     }
 
+    /** The index of a VAR_INPUT (case-insensitive name), for {@link #setInput(int, double)}. */
+    public int inputIndex(String name) throws EvaluationException {
+        int slot = slot(name);
+        for (int i = 0; i < inputSlots.length; i++) {
+            if (inputSlots[i] == slot) {
+                return i;
+            }
+        }
+        throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
+                "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
+    }
+
+    /** The index of a VAR_OUTPUT (case-insensitive name), for {@link #output(int)}. */
+    public int outputIndex(String name) throws EvaluationException {
+        int slot = slot(name);
+        for (int i = 0; i < plan.outputSlots.length; i++) {
+            if (plan.outputSlots[i] == slot) {
+                return i;
+            }
+        }
+        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
+                "'" + plan.variableNames[slot] + "' is not a VAR_OUTPUT of function block '" + plan.name + "'");
+    }
+
+    /** Sets the input of that index (declaration order), as {@link #set(String, double)} does. */
+    public void setInput(int index, double value) throws EvaluationException {
+        int slot = inputSlots[index];
+        if (!Double.isFinite(value)) {
+            throw new EvaluationException(EvaluationCode.NOT_FINITE,
+                    "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
+        }
+        store(slot, value);
+    }
+
+    /** Sets every input, {@code values} in declaration order. */
+    public void setInputs(double... values) throws EvaluationException {
+        if (values.length != inputSlots.length) {
+            throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
+        }
+        for (int i = 0; i < values.length; i++) {
+            setInput(i, values[i]);
+        }
+    }
+
+    /** The value of the output of that index (declaration order). */
+    public double output(int index) {
+        return values[plan.outputSlots[index]];
+    }
+
+    /**
+     * The bound of the last value of an output: its distance from the exact value is at most this (0 when the
+     * evaluation fell back to exact arithmetic, whose result is then the double nearest the exact value; NaN
+     * for an output whose method the exact path computes in floating point too: smooth sets, Tsukamoto).
+     */
+    public double bound(String output) throws EvaluationException {
+        int slot = slot(output);
+        for (int i = 0; i < plan.outputs.length; i++) {
+            if (plan.outputs[i].slot() == slot) {
+                return bounds[i];
+            }
+        }
+        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME, "'" + output + "' is not a defuzzified output");
+    }
+
+    /** Evaluations so far. */
+    public long evaluations() {
+        return evaluations;
+    }
+
+    /** Evaluations redone in exact arithmetic because a decision was too close for the error bounds. */
+    public long fallbacks() {
+        return fallbacks;
+    }
+
+    /**
+     * Evaluations with such a decision that could not be redone exactly: the block uses a dialect construct the
+     * exact path does not evaluate (Takagi–Sugeno terms, hedges in conclusions, output terms in conditions,
+     * Tsukamoto, activations outside Table 4), so the double result stands.
+     */
+    public long undecidedWithoutExact() {
+        return undecidedWithoutExact;
+    }
+
     /** The current value of any variable (input, output or local), by case-insensitive name. */
     public double get(String name) throws EvaluationException {
         return values[slot(name)];
@@ -132,11 +261,81 @@ public final class FunctionBlockInstance {
         evaluate(null);
     }
 
-    /** One evaluation: fuzzification, the rule blocks in textual order, then defuzzification. */
+    /**
+     * One evaluation: fuzzification, the rule blocks in textual order, then defuzzification; redone exactly when a
+     * decision is too close for the error bounds.
+     */
     public void evaluate(Trace trace) throws EvaluationException {
+        evaluations++;
+        if (!filtered) {
+            evaluateInDoubles(trace);
+            return;
+        }
+        System.arraycopy(values, 0, before, 0, values.length);
+        undecided = false;
+        EvaluationException failed = null;
+        try {
+            evaluateInDoubles(trace);
+        } catch (EvaluationException e) {
+            if (!undecided) {
+                throw e;
+            }
+            failed = e;
+        }
+        if (undecided) {
+            ExactInstance judge = exactInstance();
+            if (judge == null) {
+                undecidedWithoutExact++;
+                if (failed != null) {
+                    throw failed;
+                }
+                return;
+            }
+            fallbacks++;
+            judge.evaluateFrom(before);
+            judge.copyState(values, plan.isInput);
+            java.util.Arrays.fill(bounds, 0.0);
+            if (trace != null) {
+                trace.decidedExactly(judge.results());
+            }
+        }
+    }
+
+    /** A copy of every variable's current value, by slot (for the agreement tests: the state a step starts from). */
+    double[] state() {
+        return values.clone();
+    }
+
+    /** The exact path on this block, made when first needed; null when the block uses constructs it lacks. */
+    private ExactInstance exactInstance() {
+        if (exact == null && !exactUnavailable) {
+            try {
+                exact = new ExactInstance(plan, NumberReading.DECIMAL);
+            } catch (IllegalArgumentException e) {
+                exactUnavailable = true;
+            }
+        }
+        return exact;
+    }
+
+    /** A decision point the error bounds cannot settle: the evaluation is redone exactly. */
+    private void undecided(String decision) {
+        if (!undecided) {
+            undecided = true;
+            lastDecision = decision;
+        }
+    }
+
+    /** The first decision the bounds could not settle in the last evaluation that fell back (for the tests). */
+    String lastUndecided() {
+        return lastDecision;
+    }
+
+    private void evaluateInDoubles(Trace trace) throws EvaluationException {
         if (trace != null) {
             trace.clear();
         }
+        java.util.Arrays.fill(slotErrors, 0.0);
         for (int i = 0; i < plan.outputs.length; i++) {
             previous[i] = values[plan.outputs[i].slot()];
         }
@@ -144,6 +343,7 @@ public final class FunctionBlockInstance {
         fuzzify(trace);
         for (int t = plan.termShape.length; t < termDegrees.length; t++) {
             termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
+            termErrors[t] = 0.0;
         }
         if (plan.valueTermShape != null) {
             valueConditions();
@@ -152,7 +352,7 @@ public final class FunctionBlockInstance {
             runRuleBlock(rb, trace);
         }
         for (int i = 0; i < plan.outputs.length; i++) {
-            defuzzify(plan.outputs[i], previous[i], smoothSets[i], trace);
+            defuzzify(i, plan.outputs[i], previous[i], smoothSets[i], trace);
         }
     }
 
@@ -186,19 +386,83 @@ public final class FunctionBlockInstance {
         }
     }
 
-    /** 5.2.2: the degree of every term of every fuzzified input. */
+    /** 5.2.2: the degree of every term of every fuzzified input, with its error bound. */
     private void fuzzify(Trace trace) {
         int[] termShape = plan.termShape;
         for (int t = 0; t < termShape.length; t++) {
             int s = termShape[t];
             double u = values[plan.termVariableSlot[t]];
-            Shape shape = plan.shapes[s];
-            termDegrees[t] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0)
-                    : shape.kind == null ? Pwl.degree(curX[s], curY[s], shape.n, u) : shape.kind.degree(shape.params, u);
+            termDegrees[t] = degree(s, u, t);
             if (trace != null) {
                 trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
             }
         }
+    }
+
+    /**
+     * The degree of shape s at u, its error bound into termErrors[t]. The exact path reads every double as its
+     * shortest decimal ({@link NumberReading#DECIMAL}), so an input or a point carries the distance between the
+     * two ({@link #representation}); comparisons of doubles are exact (the reading keeps their order), so an
+     * input at a vertex or a singleton is decided in doubles.
+     */
+    private double degree(int s, double u, int t) {
+        Shape shape = plan.shapes[s];
+        double[] x = curX[s];
+        double[] y = curY[s];
+        if (shape.singleton) {
+            termErrors[t] = 0;
+            return u == x[0] ? 1.0 : 0.0;
+        }
+        if (shape.kind != null) {
+            termErrors[t] = 0;              // the exact path takes the same double formula's value
+            return shape.kind.degree(shape.params, u);
+        }
+        int n = shape.n;
+        if (u < x[0]) {
+            termErrors[t] = representation(y[0]);
+            return y[0];
+        }
+        if (u > x[n - 1]) {
+            termErrors[t] = representation(y[n - 1]);
+            return y[n - 1];
+        }
+        int i = n <= 8 ? Pwl.linearLowerBound(x, u) : Pwl.lowerBound(x, n, u);
+        if (x[i] == u) {
+            double max = y[i];
+            double e = representation(y[i]);
+            for (int j = i + 1; j < n && x[j] == u; j++) {
+                max = Math.max(max, y[j]);
+                e = Math.max(e, representation(y[j]));
+            }
+            termErrors[t] = e;
+            return max;
+        }
+        double y0 = y[i - 1];
+        double y1 = y[i];
+        double d = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
+        double e = Math.max(representation(y0), representation(y1));
+        if (y0 != y1) {
+            // the exact inputs may sit up to the representation errors away: t = (u - x0)/(x1 - x0) moves by at most
+            // 2·(δu + δx0 + δx1)/(x1 - x0) while the perturbation is under a quarter of the width
+            double shift = representation(u) + representation(x[i - 1]) + representation(x[i]);
+            double width = x[i] - x[i - 1];
+            e = 4 * shift < width ? e + Math.abs(y1 - y0) * 2 * shift / width + 2 * Norms.R
+                    : Double.POSITIVE_INFINITY;
+        }
+        termErrors[t] = e;
+        return d;
+    }
+
+    /**
+     * The distance between a double and the shortest decimal that reads as it (the exact path's reading): 0 for
+     * an integer below 2^53 and for a multiple of 1/1024 below 2^20 (their decimals are exact), else half an ulp.
+     */
+    static double representation(double v) {
+        double a = Math.abs(v);
+        if (a < 0x1.0p53 && v == Math.rint(v) || a < 0x1.0p20 && v * 1024 == Math.rint(v * 1024)) {
+            return 0;
+        }
+        return Math.ulp(v) * 0.5;
     }
 
     /**
@@ -209,10 +473,7 @@ public final class FunctionBlockInstance {
     private void valueConditions() {
         for (int k = 0; k < plan.valueTermShape.length; k++) {
             double u = Double.isNaN(plan.valueTermStart[k]) ? values[plan.valueTermSlot[k]] : plan.valueTermStart[k];
-            int s = plan.valueTermShape[k];
-            Shape shape = plan.shapes[s];
-            termDegrees[plan.termShape.length + k] = shape.singleton ? (u == curX[s][0] ? 1.0 : 0.0)
-                    : shape.kind == null ? Pwl.degree(curX[s], curY[s], shape.n, u) : shape.kind.degree(shape.params, u);
+            termDegrees[plan.termShape.length + k] = degree(plan.valueTermShape[k], u, plan.termShape.length + k);
         }
     }
 
@@ -224,144 +485,191 @@ public final class FunctionBlockInstance {
         int targets = rb.bareTargetSlots().length;
         for (int j = 0; j < targets; j++) {
             bare[j] = 0;
+            bareErrors[j] = 0;
         }
         ConditionCode[] conditions = rb.conditions();
         for (int r = 0; r < conditions.length; r++) {
             double d = aggregate(conditions[r], rb.and(), rb.or());
             double ruleDegree = d;
+            double ruleError = stackErrors[0];
+            double e = ruleError;
             if (trace != null) {
                 trace.add(new Trace.RuleDegree(rb.name(), rb.ruleNames()[r], d));
             }
             for (SubconclusionPlan sc : rb.conclusions()[r]) {
                 org.fclcert.model.Hedge[] hedged = sc.contribution() < 0 || plan.contributionHedges.length == 0 ? null
                         : plan.contributionHedges[sc.contribution()];
-                d = hedged == null ? ruleDegree : org.fclcert.model.Hedge.applyAll(java.util.List.of(hedged), ruleDegree);
+                d = ruleDegree;
+                e = ruleError;
+                if (hedged != null) {
+                    for (int k = hedged.length - 1; k >= 0; k--) {     // as Hedge.applyAll: nearest the term first
+                        org.fclcert.model.Hedge h = hedged[k];
+                        double hd = h.apply(d);
+                        e = Norms.hedgeError(h, d, e, hd);
+                        d = hd;
+                    }
+                }
                 double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
+                double ew = sc.weightSlot() < 0 ? representation(w) : representation(w) + slotErrors[sc.weightSlot()];
+                double wd = w * d;
+                double ewd = Norms.productError(w, ew, d, e, wd);
                 if (sc.contribution() >= 0) {
                     contributionDegree[sc.contribution()] = d;
                     contributionWeight[sc.contribution()] = w;
+                    contributionError[sc.contribution()] = ewd;
+                    contributionDegreeError[sc.contribution()] = e;
                     int chained = plan.chainedDegree.length == 0 ? -1 : plan.chainedDegree[sc.contribution()];
                     if (chained >= 0) {
-                        termDegrees[chained] = accumulate(plan.chainedAccumulation[sc.contribution()],
-                                termDegrees[chained], w * d);
+                        AccumulationMethod accu = plan.chainedAccumulation[sc.contribution()];
+                        double acc = Norms.accumulate(accu, termDegrees[chained], wd);
+                        termErrors[chained] = Norms.accumulateError(accu, termDegrees[chained], termErrors[chained],
+                                wd, ewd, acc);
+                        termDegrees[chained] = acc;
                     }
                 } else {
-                    bare[sc.bareTarget()] = accumulate(rb.accumulation(), bare[sc.bareTarget()], w * d);
+                    double acc = Norms.accumulate(rb.accumulation(), bare[sc.bareTarget()], wd);
+                    bareErrors[sc.bareTarget()] = Norms.accumulateError(rb.accumulation(), bare[sc.bareTarget()],
+                            bareErrors[sc.bareTarget()], wd, ewd, acc);
+                    bare[sc.bareTarget()] = acc;
                 }
                 if (trace != null) {
                     trace.add(new Trace.Activation(rb.name(), rb.ruleNames()[r], sc.variable(),
-                            Optional.ofNullable(sc.term()), w, w * d));
+                            Optional.ofNullable(sc.term()), w, wd));
                 }
             }
         }
         for (int j = 0; j < targets; j++) {
             double v = rb.accumulation() == AccumulationMethod.NSUM ? bare[j] / Math.max(1.0, bare[j]) : bare[j];
             int slot = rb.bareTargetSlots()[j];
+            double ev = rb.accumulation() == AccumulationMethod.NSUM ? bareErrors[j] * 2 + Norms.R : bareErrors[j];
+            if (plan.types[slot].isInteger() && nearHalf(v, ev)) {
+                undecided("INT rounding of a bare conclusion");
+            }
             double stored = store(slot, v);
+            slotErrors[slot] = ev;
             if (trace != null) {
                 trace.add(new Trace.Result(plan.variableNames[slot], stored, Trace.Outcome.ASSIGNED));
             }
         }
     }
 
-    /** Table 5 applied to two degrees; NSUM sums here and normalises once all are summed. */
-    private static double accumulate(AccumulationMethod accu, double a, double b) {
-        return switch (accu) {
-            case MAX -> Math.max(a, b);
-            case BSUM -> Math.min(1.0, a + b);
-            case NSUM, SUM -> a + b;
-            case PROBOR -> a == 1.0 || b == 1.0 ? 1.0 : a + b - a * b;
-            case ESUM -> or(OrAlgorithm.ESUM, a, b);
-            case HSUM -> or(OrAlgorithm.HSUM, a, b);
-            case DSUM -> or(OrAlgorithm.DSUM, a, b);
-            case NMAX -> or(OrAlgorithm.NMAX, a, b);
-        };
+    /**
+     * Whether rounding v (exact value within e of it) to an integer type is undecided: an infinite bound, or a
+     * half-integer within the bound (rounding half away from zero decides exactly at .5 itself only when e = 0).
+     */
+    static boolean nearHalf(double v, double e) {
+        if (e == 0) {
+            return false;
+        }
+        if (!(e < Double.POSITIVE_INFINITY)) {
+            return true;
+        }
+        double a = Math.abs(v);
+        double f = a - Math.floor(a);
+        return Math.abs(f - 0.5) <= e;
     }
 
-    /** Runs a condition's postfix code (Table 3 operators; NOT = 1 − a). */
+    /** Runs a condition's postfix code (Table 3 operators; NOT = 1 − a), the bound of each degree alongside. */
     private double aggregate(ConditionCode code, AndAlgorithm and, OrAlgorithm or) {
         int[] ops = code.ops;
         int[] args = code.args;
         double[] st = stack;
+        double[] er = stackErrors;
         int sp = 0;
         for (int i = 0; i < ops.length; i++) {
             switch (ops[i]) {
-                case ConditionCode.TERM -> st[sp++] = termDegrees[args[i]];
-                case ConditionCode.TERM_NOT -> st[sp++] = 1.0 - termDegrees[args[i]];
-                case ConditionCode.VARIABLE -> st[sp++] = clamp01(values[args[i]]);
-                case ConditionCode.NOT -> st[sp - 1] = 1.0 - st[sp - 1];
-                case ConditionCode.AND -> sp = fold(st, sp, args[i], true, and, or);
-                case ConditionCode.HEDGE -> st[sp - 1] = HEDGES[args[i]].apply(st[sp - 1]);
-                case ConditionCode.ONE -> st[sp++] = 1.0;
-                default -> sp = fold(st, sp, args[i], false, and, or);
+                case ConditionCode.TERM -> {
+                    st[sp] = termDegrees[args[i]];
+                    er[sp++] = termErrors[args[i]];
+                }
+                case ConditionCode.TERM_NOT -> {
+                    double d = termDegrees[args[i]];
+                    st[sp] = 1.0 - d;
+                    er[sp++] = Norms.notError(d, termErrors[args[i]]);
+                }
+                case ConditionCode.VARIABLE -> {
+                    st[sp] = clamp01(values[args[i]]);
+                    er[sp] = representation(st[sp]) + slotErrors[args[i]];
+                    sp++;
+                }
+                case ConditionCode.NOT -> {
+                    er[sp - 1] = Norms.notError(st[sp - 1], er[sp - 1]);
+                    st[sp - 1] = 1.0 - st[sp - 1];
+                }
+                case ConditionCode.AND -> sp = fold(st, er, sp, args[i], true, and, or);
+                case ConditionCode.HEDGE -> {
+                    double h = HEDGES[args[i]].apply(st[sp - 1]);
+                    er[sp - 1] = Norms.hedgeError(HEDGES[args[i]], st[sp - 1], er[sp - 1], h);
+                    st[sp - 1] = h;
+                }
+                case ConditionCode.ONE -> {
+                    st[sp] = 1.0;
+                    er[sp++] = 0;
+                }
+                default -> sp = fold(st, er, sp, args[i], false, and, or);
             }
         }
         return st[0];
     }
 
-    private static int fold(double[] st, int sp, int n, boolean isAnd, AndAlgorithm and, OrAlgorithm or) {
+    private static int fold(double[] st, double[] er, int sp, int n, boolean isAnd, AndAlgorithm and, OrAlgorithm or) {
         int base = sp - n;
         double acc = st[base];
+        double e = er[base];
         for (int j = base + 1; j < sp; j++) {
-            acc = isAnd ? and(and, acc, st[j]) : or(or, acc, st[j]);
+            double r = isAnd ? Norms.and(and, acc, st[j]) : Norms.or(or, acc, st[j]);
+            e = isAnd ? Norms.andError(and, acc, e, st[j], er[j], r) : Norms.orError(or, acc, e, st[j], er[j], r);
+            acc = r;
         }
         st[base] = acc;
+        er[base] = e;
         return base + 1;
-    }
-
-    static double and(AndAlgorithm a, double x, double y) {
-        return switch (a) {
-            case MIN -> Math.min(x, y);
-            case PROD -> x * y;
-            case BDIF -> Math.max(0.0, x + y - 1.0);
-            case EPROD -> x * y / (2 - (x + y - x * y));
-            case HPROD -> x + y == 0 ? 0.0 : x * y / (x + y - x * y);
-            case DPROD -> Math.max(x, y) == 1.0 ? Math.min(x, y) : 0.0;
-            case NMIN -> x + y > 1.0 ? Math.min(x, y) : 0.0;
-        };
-    }
-
-    static double or(OrAlgorithm o, double x, double y) {
-        return switch (o) {
-            case MAX -> Math.max(x, y);
-            case ASUM -> x == 1.0 || y == 1.0 ? 1.0 : x + y - x * y;   // exactly 1 when an operand is (NOT of it: 0)
-            case BSUM -> Math.min(1.0, x + y);
-            case ESUM -> (x + y) / (1 + x * y);
-            case HSUM -> x * y == 1.0 ? 1.0 : (x + y - 2 * x * y) / (1 - x * y);
-            case DSUM -> Math.min(x, y) == 0.0 ? Math.max(x, y) : 1.0;
-            case NMAX -> x + y < 1.0 ? Math.max(x, y) : 1.0;
-        };
     }
 
     private static double clamp01(double v) {
         return Math.max(0.0, Math.min(1.0, v));
     }
 
+    /** The bound of the value the method just computed (see {@link #bound(String)}). */
+    private double methodBound;
+    /** The unit roundoff of a double. */
+    private static final double U = 0x1.0p-53;
+
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
-    private void defuzzify(OutputPlan o, double previousValue, SmoothSet smooth, Trace trace)
+    private void defuzzify(int index, OutputPlan o, double previousValue, SmoothSet smooth, Trace trace)
             throws EvaluationException {
         for (int s : o.termShapes()) {
             if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
                 plan.shapes[s].resolve(values, curX[s], curY[s]);
             }
         }
+        methodBound = 0;
         double result = o.singletons() ? singletons(o, trace)
                 : o.method() == DefuzzificationMethod.TSUKAMOTO ? tsukamoto(o, trace)
                 : smooth != null ? smoothSet(o, smooth, trace) : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
         if (Double.isNaN(result) && !(smooth != null ? smooth.empty() : nothingFired(o))) {
+            undecided("overflow");     // an overflow in doubles: exact arithmetic has the value
             throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' has no numeric result (the arithmetic overflowed)");
         }
         if (Double.isNaN(result)) {
             outcome = o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
             result = o.noChange() ? previousValue : o.defaultValue();
+            // the DEFAULT literal is the same number on the exact path; NC keeps the value and its bound
+            methodBound = o.noChange() ? bounds[index] : 0;
         }
         boolean nanDefault = Double.isNaN(result) && outcome == Trace.Outcome.DEFAULT;   // DEFAULT := nan (fuzzylite)
         if (!Double.isFinite(result) && !nanDefault) {
+            undecided("overflow");
             throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
         }
+        if (plan.types[o.slot()].isInteger() && nearHalf(result, methodBound)) {
+            undecided("INT rounding at .5");            // half away from zero, within the bound
+        }
+        bounds[index] = methodBound;
+        slotErrors[o.slot()] = methodBound;
         double stored = store(o.slot(), result);
         if (trace != null) {
             trace.add(new Trace.Result(o.variable(), stored, outcome));
@@ -386,26 +694,47 @@ public final class FunctionBlockInstance {
         return byArea ? Defuzzifier.area(set.px, set.py, set.np) == 0 : Defuzzifier.supremum(set.py, set.np) == 0;
     }
 
-    /** Each term's accumulated degree (point 4: w·d of every subconclusion naming it, NSUM normalised) into singletonDegree. */
+    /**
+     * Each term's accumulated degree (point 4: w·d of every subconclusion naming it, NSUM normalised) into
+     * singletonDegree, its bound into singletonError; decides whether anything fired.
+     */
     private void degreesPerTerm(OutputPlan o) {
         int terms = o.termShapes().length;
         for (int t = 0; t < terms; t++) {
             singletonDegree[t] = 0;
+            singletonError[t] = 0;
         }
         int[] cs = o.contributions();
         for (int i = 0; i < cs.length; i++) {
             int t = o.contributionTerm()[i];
             double a = contributionWeight[cs[i]] * contributionDegree[cs[i]];
-            singletonDegree[t] = accumulate(o.accumulation(), singletonDegree[t], a);
+            double acc = Norms.accumulate(o.accumulation(), singletonDegree[t], a);
+            singletonError[t] = Norms.accumulateError(o.accumulation(), singletonDegree[t], singletonError[t], a,
+                    contributionError[cs[i]], acc);
+            singletonDegree[t] = acc;
         }
         if (o.accumulation() == AccumulationMethod.NSUM) {
             double max = 1.0;
+            double maxError = 0;
             for (int t = 0; t < terms; t++) {
-                max = Math.max(max, singletonDegree[t]);
+                if (singletonDegree[t] > max) {
+                    max = singletonDegree[t];
+                    maxError = singletonError[t];
+                }
             }
             for (int t = 0; t < terms; t++) {
                 singletonDegree[t] /= max;
+                singletonError[t] = (singletonError[t] + maxError) / max + Norms.R;
             }
+        }
+        boolean fired = false;
+        boolean certainlyEmpty = true;
+        for (int t = 0; t < terms; t++) {
+            fired |= singletonDegree[t] > singletonError[t];
+            certainlyEmpty &= singletonDegree[t] == 0 && singletonError[t] == 0;
+        }
+        if (!fired && !certainlyEmpty) {
+            undecided("whether any rule fired");
         }
     }
 
@@ -435,11 +764,12 @@ public final class FunctionBlockInstance {
     /**
      * Tsukamoto's method (Open Level, O-TSUKAMOTO): the terms' degrees accumulated per term as for singletons, each
      * monotonic term inverted at its degree ({@link Tsukamoto#point}), the weighted average of those points; NaN when
-     * nothing fired.
+     * nothing fired. The exact path does not evaluate it: no bound.
      */
     private double tsukamoto(OutputPlan o, Trace trace) {
         int terms = o.termShapes().length;
         degreesPerTerm(o);
+        methodBound = Double.NaN;
         double num = 0;
         double den = 0;
         for (int t = 0; t < terms; t++) {
@@ -466,38 +796,93 @@ public final class FunctionBlockInstance {
     /** fuzzylite's COGSS: Σ u·μ, not divided by Σ μ; NaN when every degree is 0 (nothing fired). */
     private double weightedSumOfSingletons(int terms) {
         double num = 0;
+        double spread = 0;
+        double rounding = 0;
         boolean any = false;
         for (int t = 0; t < terms; t++) {
             num += singletonValue[t] * singletonDegree[t];
             any |= singletonDegree[t] != 0;
+            spread += Math.abs(singletonValue[t]) * singletonError[t]
+                    + singletonDegree[t] * representation(singletonValue[t]);
+            rounding += Math.abs(singletonValue[t]) * singletonDegree[t];
         }
+        methodBound = spread + 2 * (terms + 1) * U * rounding;
         return any ? num : Double.NaN;
     }
 
+    /**
+     * CoGS: Σ v·μ / Σ μ. Bound: moving the degrees by their bounds moves the quotient by at most
+     * Σ |v − c|·e / (Σ μ − Σ e), the values' decimal readings by their largest distance, the sums' rounding by
+     * 2(n + 1)·u·max |v|; undecided when Σ μ does not exceed Σ e.
+     */
     private double centreOfGravityForSingletons(int terms) {
         double num = 0;
         double den = 0;
+        double errors = 0;
+        double maxAbs = 0;
+        double maxRep = 0;
         for (int t = 0; t < terms; t++) {
             num += singletonValue[t] * singletonDegree[t];
             den += singletonDegree[t];
+            errors += singletonError[t];
+            maxAbs = Math.max(maxAbs, Math.abs(singletonValue[t]));
+            maxRep = Math.max(maxRep, representation(singletonValue[t]));
         }
-        return den > 0 ? num / den : Double.NaN;
+        if (!(den > 0)) {
+            return Double.NaN;
+        }
+        double c = num / den;
+        if (errors == 0) {
+            methodBound = maxRep + 2 * (terms + 1) * U * maxAbs;
+        } else if (den > errors) {
+            double spread = 0;
+            for (int t = 0; t < terms; t++) {
+                spread += Math.abs(singletonValue[t] - c) * singletonError[t];
+            }
+            methodBound = spread / (den - errors) + maxRep + 2 * (terms + 1) * U * maxAbs;
+        } else {
+            methodBound = Double.POSITIVE_INFINITY;
+            undecided("CoGS bound");
+        }
+        return c;
+    }
+
+    /**
+     * The index of the largest degree; marks undecided any other singleton whose degree the bounds cannot tell
+     * from it (a tie or near tie for LM, RM, MoM), unless both are at the same value (then the tie does not matter).
+     */
+    private int supremumSingleton(int terms) {
+        int m = 0;
+        for (int t = 1; t < terms; t++) {
+            if (singletonDegree[t] > singletonDegree[m]) {
+                m = t;
+            }
+        }
+        double sup = singletonDegree[m];
+        for (int t = 0; t < terms; t++) {
+            if (t == m || singletonValue[t] == singletonValue[m]) {
+                continue;
+            }
+            double e = singletonError[t] + singletonError[m];
+            if (e > 0 && sup - singletonDegree[t] <= e) {
+                undecided("tie for the maximum");
+            }
+        }
+        return m;
     }
 
     private double extremeSingleton(int terms, boolean leftmost) {
-        double sup = 0;
-        for (int t = 0; t < terms; t++) {
-            sup = Math.max(sup, singletonDegree[t]);
-        }
+        double sup = singletonDegree[supremumSingleton(terms)];
         if (!(sup > 0)) {
             return Double.NaN;
         }
         double best = leftmost ? Double.POSITIVE_INFINITY : Double.NEGATIVE_INFINITY;
         for (int t = 0; t < terms; t++) {
-            if (singletonDegree[t] >= sup * (1 - Defuzzifier.TIE)) {
+            if (singletonDegree[t] == sup) {
                 best = leftmost ? Math.min(best, singletonValue[t]) : Math.max(best, singletonValue[t]);
             }
         }
+        methodBound = representation(best);
         return best;
     }
 
@@ -506,27 +891,27 @@ public final class FunctionBlockInstance {
      * accumulated degree is the supremum (two terms at one value count once, as one point of the set).
      */
     private double meanOfMaximalSingletons(int terms) {
-        double sup = 0;
-        for (int t = 0; t < terms; t++) {
-            sup = Math.max(sup, singletonDegree[t]);
-        }
+        double sup = singletonDegree[supremumSingleton(terms)];
         if (!(sup > 0)) {
             return Double.NaN;
         }
         double sum = 0;
         int count = 0;
+        double maxAbs = 0;
         for (int t = 0; t < terms; t++) {
-            if (singletonDegree[t] >= sup * (1 - Defuzzifier.TIE) && !maximalValueBefore(t, sup)) {
+            if (singletonDegree[t] == sup && !maximalValueBefore(t, sup)) {
                 sum += singletonValue[t];
                 count++;
+                maxAbs = Math.max(maxAbs, Math.abs(singletonValue[t]) + representation(singletonValue[t]));
             }
         }
+        methodBound = 2 * (count + 1) * U * maxAbs + maxAbs * U;
         return sum / count;
     }
 
     private boolean maximalValueBefore(int t, double sup) {
         for (int s = 0; s < t; s++) {
-            if (singletonValue[s] == singletonValue[t] && singletonDegree[s] >= sup * (1 - Defuzzifier.TIE)) {
+            if (singletonValue[s] == singletonValue[t] && singletonDegree[s] == sup) {
                 return true;
             }
         }
@@ -535,7 +920,7 @@ public final class FunctionBlockInstance {
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
     private double pointSet(OutputPlan o, Trace trace) throws EvaluationException {
-        collect(o, set.act);
+        double spread = collect(o, set.act);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
         if (!o.hasRange()) {
@@ -561,20 +946,164 @@ public final class FunctionBlockInstance {
             }
             trace.add(new Trace.AccumulatedSet(o.variable(), false, pts));
         }
-        return defuzzifySet(o.method());
+        double result = defuzzifySet(o.method());
+        if (set.act.n > 0) {
+            decideSet(o, spread, lo, hi, result);
+        }
+        return result;
     }
 
-    /** The contributions to o's set that fired (degree · weight > 0), in place of those collected before. */
-    private void collect(OutputPlan o, Activations into) {
+    /**
+     * The decisions of a point set's defuzzification and the bound of its value (docs/semantics.md). The degree of
+     * the accumulated set is everywhere within {@code spread} of the exact one (MAX: the largest bound of a
+     * contribution; the sums: their total).
+     * <ul>
+     * <li>CoG: ∫|Δμ| ≤ Δ = spread·W + 8(np + 2)·u·M (W the interval's width, M its largest |u|, the last term
+     * the rounding of the vertices), so the centre moves by at most W·Δ / (A − Δ), plus the rounding of the sums;
+     * undecided unless the area A exceeds 2Δ.</li>
+     * <li>CoA: its halving point jumps across gaps of degree 0; always decided exactly.</li>
+     * <li>LM, RM, MoM: undecided when a vertex is near the supremum without being equal to it, when a MIN clip
+     * level is near a vertex degree of its term (a clip crossing at a vertex), when the points at the supremum
+     * form more than one run and a bound is not 0, or for an accumulation other than MAX with a bound not 0.</li>
+     * </ul>
+     */
+    private void decideSet(OutputPlan o, double spread, double lo, double hi, double result) {
+        double width = hi - lo;
+        double m = Math.max(Math.max(Math.abs(lo), Math.abs(hi)), width);
+        double rounding = 8 * (set.np + 2) * U * m;
+        switch (o.method()) {
+            case COA -> {
+                methodBound = Double.POSITIVE_INFINITY;
+                undecided("CoA");
+            }
+            case LM, RM, MOM -> {
+                if (o.accumulation() != AccumulationMethod.MAX || !Double.isFinite(spread)) {
+                    methodBound = Double.POSITIVE_INFINITY;
+                    undecided("LM/RM/MoM on an accumulation other than MAX");
+                    return;
+                }
+                double[] terms = clipsAtVertices(o);
+                double steepest = terms[0];
+                double representation = terms[1];
+                double sup = Defuzzifier.supremum(set.py, set.np);
+                double band = spread + representation + 4 * Norms.R;
+                int runs = 0;
+                for (int j = 0; j < set.np; j++) {
+                    if (set.py[j] != sup && set.py[j] > sup - band) {
+                        undecided("near tie for the maximum");
+                    }
+                    if (set.py[j] == sup && (j == 0 || set.py[j - 1] != sup)) {
+                        runs++;
+                    }
+                }
+                if (runs > 1 && !(spread == 0 && representation == 0 && terms[2] == 0)) {
+                    undecided("separate maxima");      // equal in doubles, not known to be equal exactly
+                }
+                methodBound = band * steepest + 4 * Norms.R * m;
+            }
+            default -> {
+                double area = Defuzzifier.area(set.px, set.py, set.np);
+                double delta = spread * width + rounding;
+                if (area > 2 * delta) {
+                    methodBound = width * delta / (area - delta) + rounding;
+                } else {
+                    methodBound = Double.POSITIVE_INFINITY;
+                    undecided("CoG area within the bound");
+                }
+            }
+        }
+    }
+
+    /**
+     * Marks undecided a MIN activation whose level the bounds cannot tell from a vertex degree of its term (a clip
+     * crossing at a vertex). Returns {largest run over rise |Δx / Δy| of the fired terms' sloped pieces (how far a
+     * crossing moves per unit of degree), largest distance of their vertex degrees from their decimal readings,
+     * 1 when a fired contribution has a weight other than 1 or PROD activation (its degrees are rounded) else 0}.
+     */
+    private double[] clipsAtVertices(OutputPlan o) {
+        double steepest = 0;
+        double representation = 0;
+        double rounded = 0;
+        int[] cs = o.contributions();
+        for (int k = 0; k < cs.length; k++) {
+            double d = contributionDegree[cs[k]];
+            if (!(d * contributionWeight[cs[k]] > 0)) {
+                continue;
+            }
+            int s = o.termShapes()[o.contributionTerm()[k]];
+            double[] x = curX[s];
+            double[] y = curY[s];
+            double ed = contributionDegreeError[cs[k]];
+            boolean clipped = o.contributionActivation()[k] == org.fclcert.model.ActivationMethod.MIN;
+            if (!clipped || contributionWeight[cs[k]] != 1.0) {
+                rounded = 1;
+            }
+            for (int i = 0; i < plan.shapes[s].n; i++) {
+                double ry = representation(y[i]);
+                representation = Math.max(representation, ry);
+                if (clipped && ed + ry > 0 && Math.abs(d - y[i]) <= ed + ry) {
+                    undecided("clip at a vertex");
+                }
+                if (i > 0 && y[i] != y[i - 1]) {
+                    steepest = Math.max(steepest, (x[i] - x[i - 1]) / Math.abs(y[i] - y[i - 1]));
+                }
+            }
+        }
+        for (int k = 0; k < cs.length; k++) {
+            double pk = peak(o, k);
+            for (int j = k + 1; j < cs.length && pk > 0; j++) {
+                double pj = peak(o, j);
+                double e = contributionError[cs[k]] + contributionError[cs[j]] + 4 * Norms.R;
+                if (pj > 0 && Math.abs(pk - pj) <= e && !(pk == pj && rounded == 0 && representation == 0
+                        && contributionError[cs[k]] == 0 && contributionError[cs[j]] == 0)) {
+                    undecided("equal maxima of two contributions");
+                }
+            }
+        }
+        return new double[] {steepest, representation, rounded};
+    }
+
+    /** The height of contribution k's activated set: w · min(d, h) (MIN) or w · d · h (PROD), h its term's height. */
+    private double peak(OutputPlan o, int k) {
+        int c = o.contributions()[k];
+        int s = o.termShapes()[o.contributionTerm()[k]];
+        double h = 0;
+        for (int i = 0; i < plan.shapes[s].n; i++) {
+            h = Math.max(h, curY[s][i]);
+        }
+        double d = contributionDegree[c];
+        double w = contributionWeight[c];
+        return o.contributionActivation()[k] == org.fclcert.model.ActivationMethod.MIN ? w * Math.min(d, h) : w * d * h;
+    }
+
+    /**
+     * The contributions to o's set that fired (degree · weight &gt; 0), in place of those collected before; decides
+     * for each whether it fired, and returns the bound of the accumulated degree (see {@link #decideSet}).
+     */
+    private double collect(OutputPlan o, Activations into) {
         into.clear();
         int[] cs = o.contributions();
+        double largest = 0;
+        double total = 0;
         for (int i = 0; i < cs.length; i++) {
             double d = contributionDegree[cs[i]];
             double w = contributionWeight[cs[i]];
-            if (d * w > 0) {
+            double e = contributionError[cs[i]];
+            double dw = d * w;
+            if (!(dw > e) && !(dw == 0 && e == 0)) {
+                undecided("whether a rule fired");
+            }
+            if (dw > 0) {
                 into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
             }
+            largest = Math.max(largest, e);
+            total += e;
         }
+        return switch (o.accumulation()) {
+            case MAX -> largest;
+            case NSUM -> 2 * total;
+            default -> total;
+        };
     }
 
     /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
@@ -582,6 +1111,8 @@ public final class FunctionBlockInstance {
         collect(o, smooth.act);
         double result = smooth.defuzzify(o.method(), o.accumulation(), o.rangeMin(), o.rangeMax(), plan.shapes,
                 curX, curY);
+        // the exact path integrates the same way on its own degrees: a .5 within a billionth is left to it
+        methodBound = Double.isFinite(result) ? 1e-9 * Math.max(1, Math.abs(result)) : 0;
         if (trace != null) {
             List<Trace.Breakpoint> pts = new ArrayList<>();
             int n = 64;

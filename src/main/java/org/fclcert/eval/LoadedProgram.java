@@ -26,14 +26,13 @@ public final class LoadedProgram {
         return new FunctionBlockInstance(block(blockName));
     }
 
-    /** A fresh fast-path instance of the first function block ({@link CompiledEvaluator}). */
-    public CompiledEvaluator newCompiledInstance() {
-        return new CompiledEvaluator(blocks.get(0));
-    }
-
-    /** A fresh fast-path instance of the named function block (case-insensitive). */
-    public CompiledEvaluator newCompiledInstance(String blockName) throws EvaluationException {
-        return new CompiledEvaluator(block(blockName));
+    /**
+     * A fresh instance of the named block (null: the first) in plain double arithmetic, without the exact fallback
+     * of the filtered evaluator: one arithmetic an implementation may use, for judging whether a vector is fair
+     * ({@link FairVectors}, the fuzzer's screen). Never the reference: its decisions may differ from the exact ones.
+     */
+    public FunctionBlockInstance newDoubleInstance(String blockName) throws EvaluationException {
+        return new FunctionBlockInstance(blockName == null ? blocks.get(0) : block(blockName), false);
     }
 
     /**

@@ -51,7 +51,7 @@ final class Pwl {
     }
 
     /** First index whose x is &gt;= u, for short point lists where a scan beats bisection. */
-    private static int linearLowerBound(double[] x, double u) {
+    static int linearLowerBound(double[] x, double u) {
         int i = 0;
         while (x[i] < u) {
             i++;

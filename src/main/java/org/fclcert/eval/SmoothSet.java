@@ -77,7 +77,7 @@ final class SmoothSet {
                 case MAX -> Math.max(acc, c);
                 case BSUM, NSUM, SUM -> acc + c;
                 case PROBOR -> acc + c - acc * c;
-                case ESUM, HSUM, DSUM, NMAX -> FunctionBlockInstance.or(sNorm, acc, c);
+                case ESUM, HSUM, DSUM, NMAX -> Norms.or(sNorm, acc, c);
             };
         }
         return accu == AccumulationMethod.BSUM ? Math.min(1.0, acc) : acc;

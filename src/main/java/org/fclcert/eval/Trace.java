@@ -67,7 +67,10 @@ public final class Trace {
     private final List<AccumulatedSet> accumulatedSets = new ArrayList<>();
     private final List<Result> results = new ArrayList<>();
 
+    private boolean decidedExactly;
+
     void clear() {
+        decidedExactly = false;
         termDegrees.clear();
         ruleDegrees.clear();
         activations.clear();
@@ -93,6 +96,22 @@ public final class Trace {
 
     void add(Result r) {
         results.add(r);
+    }
+
+    /**
+     * The filtered evaluator could not settle a decision with its error bounds and redid the evaluation exactly: the
+     * results are replaced by the exact path's (the degrees and sets above stay the double computation's, which
+     * may differ from the exact ones in their last digits and, at the undecided point, in what they show).
+     */
+    void decidedExactly(List<Result> exactResults) {
+        decidedExactly = true;
+        results.clear();
+        results.addAll(exactResults);
+    }
+
+    /** Whether the results come from the exact path (see {@link #decidedExactly(List)}). */
+    public boolean decidedExactly() {
+        return decidedExactly;
     }
 
     public List<TermDegree> termDegrees() {

@@ -134,7 +134,7 @@ public final class ScreenedFairness implements FairnessJudge {
      */
     private static Map<String, Double> fastLast(ReferenceProgram program, List<Map<String, Double>> steps, String moved,
             DoubleUnaryOperator move) throws EvaluationException {
-        FunctionBlockInstance fb = program.loaded().newInstance();
+        FunctionBlockInstance fb = program.loaded().newDoubleInstance(null);
         for (Map<String, Double> step : steps) {
             for (Map.Entry<String, Double> e : step.entrySet()) {
                 double v = e.getValue();

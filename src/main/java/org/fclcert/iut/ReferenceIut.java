@@ -11,7 +11,7 @@ import org.fclcert.check.Analysis;
 import org.fclcert.check.AnalysisMemo;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
-import org.fclcert.eval.CompiledEvaluator;
+import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.iut.IutException.Kind;
 import org.fclcert.model.Diagnostic;
@@ -36,8 +36,8 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     private Program program;
     private LoadedProgram loaded;
-    /** Evaluated by the fast path (CompiledEvaluator): the reference's results, names resolved once per load. */
-    private final Map<String, CompiledEvaluator> instances = new HashMap<>();
+    /** The reference evaluator (filtered exact evaluation, the one `fclcert eval` runs), one instance per block. */
+    private final Map<String, FunctionBlockInstance> instances = new HashMap<>();
 
     @Override
     public IutInfo hello() {
@@ -94,7 +94,7 @@ final class ReferenceIut implements ImplementationUnderTest {
 
     @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
-        CompiledEvaluator instance = instance(block);
+        FunctionBlockInstance instance = instance(block);
         try {
             for (Map.Entry<String, Double> input : inputs.entrySet()) {
                 instance.setInput(instance.inputIndex(input.getKey()), input.getValue());
@@ -113,15 +113,15 @@ final class ReferenceIut implements ImplementationUnderTest {
         }
     }
 
-    private CompiledEvaluator instance(String block) throws IutException {
+    private FunctionBlockInstance instance(String block) throws IutException {
         if (loaded == null) {
             throw new IutException(Kind.EVAL_ERROR, "no program is loaded");
         }
         String name = block == null ? loaded.functionBlockNames().get(0) : block;
-        CompiledEvaluator instance = instances.get(Names.key(name));
+        FunctionBlockInstance instance = instances.get(Names.key(name));
         if (instance == null) {
             try {
-                instance = loaded.newCompiledInstance(name);
+                instance = loaded.newInstance(name);
             } catch (EvaluationException e) {
                 throw new IutException(Kind.EVAL_ERROR, e.toString());
             }

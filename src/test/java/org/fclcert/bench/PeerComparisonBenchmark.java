@@ -13,7 +13,7 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.function.ToDoubleFunction;
 import org.fclcert.check.Analysis;
-import org.fclcert.eval.CompiledEvaluator;
+import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.model.Program;
@@ -35,7 +35,7 @@ import org.openjdk.jmh.annotations.Warmup;
  * fclcert side by side with jfuzzylite 6.0.1 (and, for reading, jFuzzyLogic) in one JMH run, on the same
  * programs ({@link PeerPrograms}, each in the layout its reader needs) and the same cycle of operating
  * points. An evaluation is: set every input, evaluate, read the output, with names resolved once on both
- * sides (fclcert's {@link CompiledEvaluator} sets its inputs in declaration order and reads its output by
+ * sides (fclcert's {@link FunctionBlockInstance} sets its inputs in declaration order and reads its output by
  * index, jfuzzylite sets each of its input variable objects). Reading is the
  * whole front end: fclcert's strict reader and all checks (every diagnostic), jfuzzylite's FclImporter
  * building an Engine, jFuzzyLogic's FIS.createFromString.
@@ -76,16 +76,13 @@ public class PeerComparisonBenchmark {
      * that the benchmark methods call {@code step} directly and the JIT treats both libraries alike.
      */
     static final class Reference implements Side {
-        private final CompiledEvaluator fb;
+        private final FunctionBlockInstance fb;
         private final int out;
 
         Reference(String text) throws EvaluationException {
             Analysis a = Analysis.analyze(StrictReader.openLevel(), "<bench>", text);
             Program p = a.program().orElseThrow(() -> new IllegalStateException("fclcert rejects: " + a.diagnostics()));
-            fb = Evaluator.load(p).newCompiledInstance();
-            if (!fb.isCompiled()) {
-                throw new IllegalStateException("the benchmark program is not on the flat plan");
-            }
+            fb = Evaluator.load(p).newInstance();
             out = fb.outputIndex(fb.outputNames().get(0));
         }
 
@@ -97,10 +94,7 @@ public class PeerComparisonBenchmark {
             return fb.output(out);
         }
 
-        /**
-         * Runs the cycle long enough for the instance to generate its straight-line code (after 2 000
-         * evaluations), so that the exactness check at set-up sees the path the benchmark measures.
-         */
+        /** Runs the cycle a while before the exactness check at set-up (and to count the exact fallbacks). */
         Reference warm(double[][] cycle) throws EvaluationException {
             for (int k = 0; k < 2500; k++) {
                 step(cycle[k % cycle.length]);
@@ -152,12 +146,15 @@ public class PeerComparisonBenchmark {
             this.ref = new Reference(standard).warm(cycle);
             this.peer = peer;
             exactness(program, cycle, exact, ref, peer);
+            // the reference's exact fallback is on: how many of the warm-up evaluations needed it
+            System.out.println("fallbacks: " + program + " " + ref.fb.fallbacks() + " of " + ref.fb.evaluations()
+                    + " evaluations redone in exact arithmetic");
         }
     }
 
     /**
      * The valve on both sides. A state per program, so that each benchmark's JVM (one fork per benchmark) has
-     * run only the program it measures: the call sites the programs share (fclcert's generated kernels,
+     * run only the program it measures: the call sites the programs share (fclcert's evaluator,
      * jfuzzylite's engine) then see no other program's types.
      */
     @State(Scope.Thread)

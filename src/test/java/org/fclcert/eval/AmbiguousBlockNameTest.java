@@ -24,7 +24,7 @@ class AmbiguousBlockNameTest {
         String expected = "the function block name 'fuzzy_fb' is ambiguous: the program has both 'Fuzzy_FB' and"
                 + " 'FUZZY_FB' (names are not case-sensitive)";
         assertEquals(expected, assertThrows(EvaluationException.class, () -> loaded.newInstance("fuzzy_fb")).getMessage());
-        assertThrows(EvaluationException.class, () -> loaded.newCompiledInstance("FUZZY_FB"));
+        assertThrows(EvaluationException.class, () -> loaded.newDoubleInstance("FUZZY_FB"));
         assertThrows(EvaluationException.class, () -> loaded.newExactInstance("Fuzzy_FB", NumberReading.DECIMAL));
 
         Program distinct = new StrictReader().read("two.fcl", block("Fuzzy_FB", 1) + block("Other", 2))

@@ -83,8 +83,9 @@ class DecisionPointTest {
     /*
      * y : INT, singletons a := -10, b := -85, up := (0,0)(1,1), down := (0,1)(1,0), x = 0.3: degrees 0.3 and
      * 0.7, CoGS = (−10 · 0.3 − 85 · 0.7) / (0.3 + 0.7) = (−3 − 59.5) / 1 = −62.5, half away from zero: −63.
-     * The double path computes −62.49999999999999 and rounds it to −62: the vector is a knife edge (doubles miss
-     * the exact .5), which FairVectors reports.
+     * Plain doubles compute −62.49999999999999 and round it to −62: the vector is a knife edge for judging other
+     * implementations (doubles miss the exact .5), which FairVectors reports; the reference's bound on the CoGS
+     * cannot exclude .5, so it decides the rounding exactly: −63 (issue 24).
      */
     @Test
     void integerOutputExactlyHalfWayRoundsAwayFromZero() throws EvaluationException {
@@ -94,10 +95,33 @@ class DecisionPointTest {
                         + " END_RULEBLOCK").replace("y : REAL", "y : INT");
         LoadedProgram p = load(text);
         assertEquals(-63.0, exact(p, 0.3));
-        assertEquals(-62.0, fast(p, 0.3), "the double path's known knife edge; if this changes, update the docs");
+        assertEquals(-63.0, fast(p, 0.3));
+        FunctionBlockInstance plain = p.newDoubleInstance(null);
+        plain.set("x", 0.3);
+        plain.evaluate();
+        assertEquals(-62.0, plain.get("y"), "plain doubles: the knife edge FairVectors must see");
         FairVectors.Verdict v = FairVectors.judge(p, null, java.util.List.of(java.util.Map.of("x", 0.3)),
                 FairVectors.DEFAULT_AGREEMENT);
         assertTrue(!v.fair() && v.knifeEdges().get(0).output().equals("y"), v.toString());
+    }
+
+    /*
+     * Issue 24: y : INT with one singleton s := -62.5, fired at any degree d: CoGS = (−62.5 · d) / d = −62.5 exactly,
+     * half away from zero: −63, for every input that fires the rule. x = 0.3, 0.7, 0.13, 0.55, 0.67, 1: d = x (up :=
+     * (0,0)(1,1)); plain doubles give −62.49999999999999 at 0.55 and 0.67 (−62.5 · d / d), the reference −63. x = 0:
+     * nothing fires, DEFAULT 0.
+     */
+    @Test
+    void integerOutputOfOneSingletonAtAHalfIsAlwaysRoundedAwayFromZero() throws EvaluationException {
+        LoadedProgram p = load(program("TERM up := (0, 0) (1, 1);",
+                "DEFUZZIFY y TERM s := -62.5; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY",
+                "RULEBLOCK r AND : MIN; ACCU : MAX; RULE 1 : IF x IS up THEN y IS s; END_RULEBLOCK")
+                .replace("y : REAL", "y : INT"));
+        for (double x : new double[] {0.3, 0.7, 0.13, 0.55, 0.67, 1}) {
+            assertEquals(-63.0, exact(p, x), "x = " + x);
+            assertEquals(-63.0, fast(p, x), "x = " + x);
+        }
+        assertEquals(0.0, fast(p, 0));
     }
 
     /*

@@ -26,116 +26,105 @@ import org.fclcert.model.VariableKind;
 import org.junit.jupiter.api.Test;
 
 /**
- * Property test of issue 12: the fast double path and the exact judging path agree on thousands of random
- * programs built to sit on decision points — literals on a coarse decimal grid (so clip levels meet vertices,
- * maxima tie, degrees are exactly 0, ½ or 1, CoGS lands on .5), inputs mostly on the same grid, every Table 3
- * pair, NOT and IS NOT, both activations, MAX/BSUM/NSUM, constant and variable weights, variable points, RANGE
- * and none, CoG/CoA/LM/RM/MoM on points, CoGS/LM/RM/MoM on singletons, INT outputs, DEFAULT and NC, bare
- * conclusions read by a later block. Each program runs four vectors in order on one instance of each path.
- * A difference beyond 1e-9 (outputs span at most 100) is allowed only where {@link FairVectors} calls the step a
- * knife edge, judged without the fast path among its arithmetics (the fast path must not vouch for itself; an
- * integer output rounded from exactly k + ½ then counts as a knife edge outright); the program is then not
- * compared further (its state may differ from there on). With this seed: 11 993 vectors, 3 differences, all
- * integer outputs at exactly .5 (57.5, −52.5, −57.5 computed as …49999999999999 in doubles). The counts of
- * compared vectors and knife edges are asserted so that the test cannot pass by comparing nothing.
+ * Property test of issues 12 and 24: the reference evaluator (filtered exact evaluation: doubles with error bounds,
+ * exact arithmetic where a bound cannot settle a decision) and the exact path agree on 10 000 random programs built
+ * to sit on decision points — literals on a coarse decimal grid (so clip levels meet vertices, maxima tie, degrees
+ * are exactly 0, ½ or 1, CoGS lands on .5), inputs mostly on the same grid, every Table 3 pair, NOT and IS NOT,
+ * both activations, MAX/BSUM/NSUM, constant and variable weights, variable points, RANGE and none,
+ * CoG/CoA/LM/RM/MoM on points, CoGS/LM/RM/MoM on singletons, INT outputs, DEFAULT and NC, bare conclusions read by
+ * a later block. Each program runs four vectors in order; each step is evaluated by the reference and by the exact
+ * path from the very state the reference starts the step in. No exemption: every error code and every integer
+ * output must be the same, every REAL output within the bound the reference reports for it
+ * ({@link FunctionBlockInstance#bound}) plus the exact value's own rounding to a double. The counts of compared
+ * vectors, of vectors where a rule fired and of evaluations that fell back to exact arithmetic are asserted, so
+ * that the test cannot pass by comparing nothing (and they are printed with FCLCERT_VERBOSE set).
  */
 class FastExactAgreementTest {
-    private static final int PROGRAMS = 3000;
+    private static final int PROGRAMS = Integer.getInteger("fclcert.agreementPrograms", 10_000);
+    private static final Map<String, AtomicInteger> REASONS = new java.util.concurrent.ConcurrentHashMap<>();
     private static final int STEPS = 4;
     private static final long SEED = 12_0_61131L;
 
     @Test
-    void fastAndExactPathsAgreeOutsideKnifeEdges() {
+    void referenceAndExactPathAgreeAtEveryDecisionPoint() {
         List<String> failures = new CopyOnWriteArrayList<>();
         AtomicInteger compared = new AtomicInteger();
-        AtomicInteger differing = new AtomicInteger();
-        AtomicInteger knifeEdges = new AtomicInteger();
         AtomicInteger fired = new AtomicInteger();
+        java.util.concurrent.atomic.AtomicLong fallbacks = new java.util.concurrent.atomic.AtomicLong();
         IntStream.range(0, PROGRAMS).parallel().forEach(p -> {
             try {
-                check(p, compared, differing, knifeEdges, fired);
+                check(p, compared, fired, fallbacks);
             } catch (AssertionError | EvaluationException | RuntimeException e) {
                 failures.add("program " + p + ": " + e);
             }
         });
         if (System.getenv("FCLCERT_VERBOSE") != null) {
             System.err.println("programs " + PROGRAMS + ", vectors compared " + compared + ", fired " + fired
-                    + ", differing " + differing + ", knife edges " + knifeEdges);
+                    + ", fell back to exact arithmetic " + fallbacks + " " + REASONS);
         }
-        assertEquals(List.of(), failures.subList(0, Math.min(10, failures.size())));
+        assertEquals(List.of(), failures.subList(0, Math.min(10, failures.size())), failures.size() + " failures");
         assertTrue(compared.get() >= PROGRAMS * STEPS * 9 / 10, "vectors compared: " + compared);
         assertTrue(fired.get() > compared.get() / 2, "vectors where a rule fired: " + fired);
-        // the generator is built to hit decision points: the two paths must disagree somewhere, and only there
-        assertTrue(knifeEdges.get() > 0 && knifeEdges.get() == differing.get(),
-                "knife edges " + knifeEdges + ", differences " + differing);
+        // the generator is built to hit decision points: some must be too close for the bounds (the rate, high here
+        // because CoA and LM/RM/MoM over sums are always decided exactly, is in docs/performance.md)
+        assertTrue(fallbacks.get() > 0 && fallbacks.get() < compared.get(), "fallbacks: " + fallbacks);
     }
 
-    private static void check(int p, AtomicInteger compared, AtomicInteger differing, AtomicInteger knifeEdges,
-            AtomicInteger fired) throws EvaluationException {
+    private static void check(int p, AtomicInteger compared, AtomicInteger fired,
+            java.util.concurrent.atomic.AtomicLong fallbacks) throws EvaluationException {
         Random rnd = new Random(SEED + p);
         Gen g = new Gen(rnd);
         Program program = g.program();
         LoadedProgram loaded = Evaluator.load(program);
         FunctionBlockInstance fast = loaded.newInstance();
         ExactInstance exact = loaded.newExactInstance();
-        List<Map<String, Double>> steps = new ArrayList<>();
-        for (int s = 0; s < STEPS; s++) {
-            Map<String, Double> in = g.vector();
-            steps.add(in);
-            String fastError = null;
-            String exactError = null;
-            try {
+        try {
+            for (int s = 0; s < STEPS; s++) {
+                Map<String, Double> in = g.vector();
+                String fastError = null;
+                String exactError = null;
                 for (Map.Entry<String, Double> e : in.entrySet()) {
                     fast.set(e.getKey(), e.getValue());
                 }
-                fast.evaluate();
-            } catch (EvaluationException e) {
-                fastError = e.code();
-            }
-            try {
-                for (Map.Entry<String, Double> e : in.entrySet()) {
-                    exact.set(e.getKey(), e.getValue());
+                double[] start = fast.state();
+                long before = fast.fallbacks();
+                try {
+                    fast.evaluate();
+                } catch (EvaluationException e) {
+                    fastError = e.code();
                 }
-                exact.evaluate();
-            } catch (EvaluationException e) {
-                exactError = e.code();
-            }
-            compared.incrementAndGet();
-            String difference = null;
-            if (fastError != null || exactError != null) {
-                if (!java.util.Objects.equals(fastError, exactError)) {
-                    difference = "fast error " + fastError + ", exact error " + exactError;
+                if (fast.fallbacks() > before) {
+                    REASONS.computeIfAbsent(fast.lastUndecided(), k -> new AtomicInteger()).incrementAndGet();
                 }
-            } else {
+                try {
+                    exact.evaluateFrom(start);
+                } catch (EvaluationException e) {
+                    exactError = e.code();
+                }
+                compared.incrementAndGet();
+                if (fastError != null || exactError != null) {
+                    if (!java.util.Objects.equals(fastError, exactError)) {
+                        throw new AssertionError("step " + (s + 1) + " " + in + ": reference error " + fastError
+                                + ", exact error " + exactError + "\n" + new org.fclcert.write.CanonicalWriter().write(program));
+                    }
+                    return;
+                }
                 Map<String, Double> f = fast.outputs();
                 Map<String, Double> e = exact.outputs();
                 for (String out : f.keySet()) {
-                    if (!(Math.abs(f.get(out) - e.get(out)) <= 1e-9 * Math.max(1, Math.abs(e.get(out))))) {
-                        difference = out + ": fast " + f.get(out) + ", exact " + e.get(out);
-                        break;
+                    double bound = fast.bound(out) + Math.ulp(e.get(out));
+                    if (!(Math.abs(f.get(out) - e.get(out)) <= bound) && !f.get(out).equals(e.get(out))) {
+                        throw new AssertionError("step " + (s + 1) + " " + in + ": " + out + " reference " + f.get(out)
+                                + ", exact " + e.get(out) + ", bound " + fast.bound(out) + "\n"
+                                + new org.fclcert.write.CanonicalWriter().write(program));
                     }
                 }
                 if (e.get("z") != -999 || e.get("y") != -999) {
                     fired.incrementAndGet();
                 }
             }
-            if (difference != null) {
-                differing.incrementAndGet();
-                // without the fast path among the arithmetics: it must not vouch for itself
-                FairVectors.Verdict v = FairVectors.judge(loaded, null, steps, FairVectors.DEFAULT_AGREEMENT, false);
-                if (v.fair(s + 1)) {
-                    throw new AssertionError("step " + (s + 1) + " " + steps + ": " + difference
-                            + " on a fair vector\n" + new org.fclcert.write.CanonicalWriter().write(program));
-                }
-                knifeEdges.incrementAndGet();
-                if (System.getenv("FCLCERT_VERBOSE") != null) {
-                    System.err.println("program " + p + " " + difference + ": " + v.knifeEdges());
-                }
-                return;
-            }
-            if (fastError != null) {
-                return;
-            }
+        } finally {
+            fallbacks.addAndGet(fast.fallbacks());
         }
     }
 
