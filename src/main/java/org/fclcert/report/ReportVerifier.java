@@ -119,40 +119,52 @@ public final class ReportVerifier {
         return Optional.empty();
     }
 
+    /** A directory checked: its inconsistencies (empty: it holds up) and the report rebuilt from its results (or null). */
+    public record Verified(List<String> inconsistencies, Report report) {
+        public Verified {
+            inconsistencies = List.copyOf(inconsistencies);
+        }
+    }
+
+    /** As {@link #check}, the inconsistencies alone. */
+    public static List<String> verify(Path dir, Path corpusDir) throws IOException {
+        return check(dir, corpusDir).inconsistencies();
+    }
+
     /**
      * Checks a report directory: the results rebuilt ({@link #rebuild}) must be consistent and sealed, and the four
      * reports must be exactly what that rebuilt report renders to (with the generation time of {@code report.json}).
-     * Returns every inconsistency found, the first one first; empty when the directory holds up.
+     * Returns every inconsistency found, the first one first (none when the directory holds up), with the rebuilt report.
      */
-    public static List<String> verify(Path dir, Path corpusDir) throws IOException {
+    public static Verified check(Path dir, Path corpusDir) throws IOException {
         Path results = dir.resolve(ResultsWriter.FILE_NAME);
         if (!Files.isRegularFile(results)) {
-            return List.of(results + ": no such file");
+            return new Verified(List.of(results + ": no such file"), null);
         }
         Path json = dir.resolve(ReportFiles.JSON);
         Report written;
         try {
             written = Files.isRegularFile(json) ? JsonReport.read(json) : null;
         } catch (IOException e) {
-            return List.of(json + ": not a report: " + e.getMessage().lines().findFirst().orElse(""));
+            return new Verified(List.of(json + ": not a report: " + e.getMessage().lines().findFirst().orElse("")), null);
         }
         if (written == null) {
-            return List.of(json + ": no such file");
+            return new Verified(List.of(json + ": no such file"), null);
         }
         Rebuilt rebuilt;
         try {
             rebuilt = rebuild(results, corpusDir, Instant.parse(written.generatedAt()));
         } catch (ResultsFile.InvalidResultsException e) {
-            return List.of(e.getMessage());
+            return new Verified(List.of(e.getMessage()), null);
         } catch (RuntimeException e) {
-            return List.of(json + ": its generation time '" + written.generatedAt() + "' cannot be read");
+            return new Verified(List.of(json + ": its generation time '" + written.generatedAt() + "' cannot be read"), null);
         }
         List<String> out = new ArrayList<>(rebuilt.inconsistencies());
         if (rebuilt.report().origin() == null || rebuilt.report().origin().digest() == null) {
             out.addAll(rebuilt.notes());
         }
         if (!out.isEmpty()) {
-            return out;
+            return new Verified(out, rebuilt.report());
         }
         Report r = rebuilt.report();
         // a live run's reports say how they were judged: rebuild with the same words, all else must match
@@ -163,7 +175,7 @@ public final class ReportVerifier {
         compare(out, dir.resolve(ReportFiles.MARKDOWN), MarkdownReport.render(asWritten));
         compare(out, dir.resolve(ReportFiles.HTML), HtmlReport.render(asWritten));
         compare(out, dir.resolve(ReportFiles.JUNIT), JunitReport.render(asWritten));
-        return out;
+        return new Verified(out, rebuilt.report());
     }
 
     /** The report without its origin's warnings (Origin.apply works them out again). */
