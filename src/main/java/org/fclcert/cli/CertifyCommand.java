@@ -113,6 +113,10 @@ final class CertifyCommand implements Callable<Integer> {
                     + " the cases not run by then are reported as skipped with the reason")
     Duration budget;
 
+    @Option(names = "--seed", paramLabel = "N", description = "The run seed the fresh vectors and disguises are drawn"
+            + " from (default: drawn anew; every report records it, and the same seed replays the run exactly)")
+    Long seed;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
@@ -175,7 +179,7 @@ final class CertifyCommand implements Callable<Integer> {
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
                 .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
-                .presentAs(presentAs).budget(budget).build();
+                .presentAs(presentAs).budget(budget).seed(seed).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
         TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
@@ -299,8 +303,14 @@ final class CertifyCommand implements Callable<Integer> {
         if (r.rejections().doubtful()) {
             out.println("Negative cases: " + r.rejections().sentence());
         }
+        if (r.origin() != null) {
+            r.origin().warnings().forEach(w -> out.println(TerminalText.visible(w)));
+        }
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
+        if (r.origin() != null && r.origin().provenance() != null) {
+            out.println("Run seed: " + r.origin().provenance().seed() + "; results digest: " + r.origin().digest());
+        }
         String axis = r.semantic() != null ? " (language axis)" : "";
         out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
         out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));

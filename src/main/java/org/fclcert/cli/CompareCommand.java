@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.fclcert.report.ComparisonPage;
-import org.fclcert.report.JsonReport;
+import org.fclcert.report.ReportVerifier;
 import org.fclcert.report.Report;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -23,7 +23,11 @@ import picocli.CommandLine.Spec;
                 + " 'fclcert certify' and writes index.md and index.html (implementations side by side, the verdicts"
                 + " of every Table 8/9/10 row, the telling deviations with cases and values, the causes of failure,"
                 + " Table 11). Prints the summary table.",
-            "Exit 0 when the page was written, 2 when a report cannot be read or the page cannot be written."})
+            "Each directory is checked as 'fclcert report --verify' does (its results chain, its corpus, every verdict"
+                + " judged again from the recorded evidence, the reports what the results give); the page is made"
+                + " from the verdicts so recomputed.",
+            "Exit 0 when the page was written, 1 when a directory is inconsistent (the first inconsistency is named),"
+                + " 2 when a report cannot be read or the page cannot be written."})
 final class CompareCommand implements Callable<Integer> {
     static final String MARKDOWN = "index.md";
     static final String HTML = "index.html";
@@ -51,7 +55,14 @@ final class CompareCommand implements Callable<Integer> {
             }
             Report report;
             try {
-                report = JsonReport.read(json);
+                ReportVerifier.Verified verified = ReportVerifier.check(dir, null);
+                if (!verified.inconsistencies().isEmpty()) {
+                    err.println("fclcert compare: " + TerminalText.visible(dir.toString()) + " is inconsistent: "
+                            + TerminalText.visible(verified.inconsistencies().get(0)));
+                    err.flush();
+                    return CertifyCommand.FAILED;
+                }
+                report = verified.report();
             } catch (IOException e) {
                 err.println("fclcert compare: " + json + " cannot be read as a report: " + firstLine(e.getMessage()));
                 err.flush();

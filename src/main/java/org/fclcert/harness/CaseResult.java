@@ -21,7 +21,7 @@ import java.util.Optional;
 @JsonSerialize(converter = CaseResultJson.FromResult.class)
 @JsonDeserialize(converter = CaseResultJson.ToResult.class)
 public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup,
-        Presented presented) {
+        Presented presented, List<Exchange> replies) {
 
     public CaseResult {
         Objects.requireNonNull(plan, "plan");
@@ -29,6 +29,21 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
         evidence = evidence == null ? Evidence.NONE : evidence;
         export = export == null ? Export.NOT_RUN : export;
         setup = setup == null ? Setup.NOT_RUN : setup;
+        replies = replies == null ? null : List.copyOf(replies);
+    }
+
+    /** A result without recorded replies (see {@link #withReplies}). */
+    public CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, Export export, Setup setup,
+            Presented presented) {
+        this(plan, verdict, evidence, export, setup, presented, null);
+    }
+
+    /**
+     * This result with the implementation's replies to the case's requests ({@link Exchange}): the evidence
+     * the case line keeps, from which the case is judged again.
+     */
+    public CaseResult withReplies(List<Exchange> value) {
+        return new CaseResult(plan, verdict, evidence, export, setup, presented, value);
     }
 
     /** A result of the language axis only (no program presented in a library's layout). */
@@ -38,7 +53,7 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
 
     /** This result with its semantic axis. */
     public CaseResult withPresented(Presented value) {
-        return new CaseResult(plan, verdict, evidence, export, setup, value);
+        return new CaseResult(plan, verdict, evidence, export, setup, value, replies);
     }
 
     /** The semantic axis of this case, when the run presented programs in a library's layout. */

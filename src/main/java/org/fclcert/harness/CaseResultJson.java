@@ -37,7 +37,8 @@ record CaseResultJson(
         String program,
         Long durationMs,
         RejectionPlace rejection,
-        PresentedJson presented) {
+        PresentedJson presented,
+        List<Exchange> replies) {
 
     /** The semantic axis of a case ({@link CaseResult.Presented}), flat like the case itself. */
     @JsonInclude(JsonInclude.Include.NON_NULL)
@@ -74,7 +75,7 @@ record CaseResultJson(
                 m == null ? null : m.expected(), m == null ? null : m.actual(), e.error(), e.maxError(),
                 e.reference(), r.setup().tolerance(), r.export().status(), r.export().message(), r.verdict().notes(),
                 r.setup().block(), r.setup().program(), r.setup().durationMs(), r.verdict().rejection(),
-                PresentedJson.of(r.presented()));
+                PresentedJson.of(r.presented()), r.replies());
     }
 
     CaseResult toResult() {
@@ -85,7 +86,7 @@ record CaseResultJson(
                 new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError, reference),
                 new CaseResult.Export(exportStatus, exportMessage),
                 new CaseResult.Setup(block, tolerance, program, durationMs),
-                presented == null ? null : presented.toPresented());
+                presented == null ? null : presented.toPresented(), replies);
     }
 
     private static CaseResult.Mismatch mismatch(Object expected, Object actual) {

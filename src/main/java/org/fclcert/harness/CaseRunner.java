@@ -35,6 +35,15 @@ final class CaseRunner {
     }
 
     Ran run(ImplementationUnderTest iut, RunCase c) {
+        return run(iut, c, iut, c);
+    }
+
+    /**
+     * As {@link #run(ImplementationUnderTest, RunCase)}, with {@code c} the case as sent ({@link Disguise}) over
+     * {@code iut}, and {@code plain} the same case as the corpus writes it, over {@code plainIut}: the reference's
+     * trace and the semantic axis work on the plain case.
+     */
+    Ran run(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain) {
         long start = System.nanoTime();
         ResultBuilder r = new ResultBuilder(c);
         boolean gaveUp = false;
@@ -59,14 +68,14 @@ final class CaseRunner {
             r.errored("the implementation overflowed the stack", "java.lang.StackOverflowError");
         }
         if (!c.expectReject()) {
-            r.traceReference(c);
+            r.traceReference(plain);
         }
         CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
         if (presenter != null && !c.expectReject()) {
             if (gaveUp) {
                 result = notPresented(c, result, "the implementation was given up");
             } else {
-                Presenter.Presentation p = presenter.present(iut, c);
+                Presenter.Presentation p = presenter.present(plainIut, plain);
                 result = result.withPresented(p.presented());
                 gaveUp = p.gaveUp();
             }

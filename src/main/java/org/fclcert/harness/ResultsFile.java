@@ -128,6 +128,8 @@ public record ResultsFile(RunHeader header, List<CaseResult> results, List<DataC
                     }
                     dataCheckList.clear();
                     dataCheckList.addAll(entries);
+                } else if (type.equals(ResultsChain.END)) {
+                    continue;   // the chain's seal: ResultsChain reads it
                 } else {
                     problems.add(where + ": line of unknown type '" + type.replaceAll("[^A-Za-z0-9_-]", "?")
                             .substring(0, Math.min(type.length(), 40)) + "' ignored");

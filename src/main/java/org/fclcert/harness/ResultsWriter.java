@@ -20,6 +20,8 @@ public final class ResultsWriter implements ResultSink, Closeable {
     public static final String FILE_NAME = "results.jsonl";
 
     private final BufferedWriter out;
+    private final ResultsChain chain = new ResultsChain();
+    private ResultsChain.Seal seal;
 
     private ResultsWriter(BufferedWriter out) {
         this.out = out;
@@ -56,9 +58,35 @@ public final class ResultsWriter implements ResultSink, Closeable {
         ObjectNode line = Json.mapper().createObjectNode();
         line.put("type", type);
         line.setAll((ObjectNode) Json.mapper().valueToTree(value));
-        out.write(Json.mapper().writeValueAsString(line));
+        writeChained(line);
+    }
+
+    /** Writes a line carrying the hash of the line before it ({@link ResultsChain}). */
+    private void writeChained(ObjectNode line) throws IOException {
+        if (seal != null) {
+            throw new IOException("the results are sealed: the run's end line is written");
+        }
+        line.put("prev", chain.head());
+        String text = Json.mapper().writeValueAsString(line);
+        out.write(text);
         out.write('\n');
         out.flush();
+        chain.append(text);
+    }
+
+    /**
+     * Writes the run's end line, {@code {"type":"end", "digest":…, "endedAt":…}}, and returns the seal; nothing can
+     * be written after it. Called once every case (and the probes) finished; a run cut short has no end line.
+     */
+    public ResultsChain.Seal finish(String endedAt) throws IOException {
+        ResultsChain.Seal s = chain.seal(endedAt);
+        ObjectNode line = Json.mapper().createObjectNode();
+        line.put("type", ResultsChain.END);
+        line.put("digest", s.digest());
+        line.put("endedAt", endedAt);
+        writeChained(line);
+        seal = s;
+        return s;
     }
 
     @Override

@@ -9,16 +9,29 @@ import java.util.Map;
  */
 public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt,
         @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
-        String presentAs) {
+        String presentAs,
+        @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+        Provenance provenance) {
 
     /** A header of a run on the language axis only. */
     public RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt) {
-        this(iut, toolkit, corpus, selection, startedAt, null);
+        this(iut, toolkit, corpus, selection, startedAt, null, null);
+    }
+
+    /** A header without provenance (a run made without a seed: no fresh vectors, no disguise). */
+    public RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection selection, String startedAt,
+            String presentAs) {
+        this(iut, toolkit, corpus, selection, startedAt, presentAs, null);
     }
 
     /** The same header, the positive cases also presented in {@code dialect}'s layout (null: not presented). */
     public RunHeader presentedAs(String dialect) {
-        return new RunHeader(iut, toolkit, corpus, selection, startedAt, dialect);
+        return new RunHeader(iut, toolkit, corpus, selection, startedAt, dialect, provenance);
+    }
+
+    /** The same header with the run's provenance (its seed among it). */
+    public RunHeader withProvenance(Provenance value) {
+        return new RunHeader(iut, toolkit, corpus, selection, startedAt, presentAs, value);
     }
 
     /**

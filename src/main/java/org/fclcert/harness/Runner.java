@@ -19,6 +19,8 @@ public final class Runner {
 
     private final CaseRunner caseRunner;
     private final RunListener listener;
+    /** The run seed: each case gets fresh vectors and a disguise drawn from it ({@link FreshEvidence}); null: none. */
+    private Long seed;
 
     public Runner(ExportCheck exportCheck, RunListener listener) {
         this(exportCheck, listener, null);
@@ -37,6 +39,12 @@ public final class Runner {
     /** Runner with the reference export check. */
     public Runner(RunListener listener) {
         this(new ReferenceExportCheck(), listener);
+    }
+
+    /** This runner, every case run with fresh vectors and a disguise drawn from {@code runSeed} ({@link FreshEvidence}). */
+    public Runner withSeed(long runSeed) {
+        seed = runSeed;
+        return this;
     }
 
     public List<CaseResult> run(ImplementationUnderTest iut, RunHeader header, List<RunCase> cases,
@@ -65,7 +73,7 @@ public final class Runner {
                         + " (restart budget exhausted)");
             } else {
                 int cuts = stop == null ? 0 : stop.cuts();
-                CaseRunner.Ran ran = caseRunner.run(iut, c);
+                CaseRunner.Ran ran = seed == null ? caseRunner.run(iut, c) : FreshEvidence.run(caseRunner, iut, c, seed);
                 if (stop != null && stop.cuts() != cuts) {
                     // the stop cut one of its requests short: what the case recorded since is fclcert's doing
                     result = notRun(c, STOPPED + stop.reason());

@@ -80,6 +80,10 @@ public class CertifyMojo extends AbstractMojo {
      * Time the whole run may take, cases and probes, in seconds; the cases not run by then are reported as skipped
      * with the reason, and the goal fails.
      */
+    /** The run seed the fresh vectors and disguises are drawn from; unset: drawn anew (the reports record it). */
+    @Parameter(property = "fclcert.seed")
+    private Long seed;
+
     @Parameter(property = "fclcert.budgetSeconds", defaultValue = Defaults.RUN_BUDGET_SECONDS)
     private long budgetSeconds;
 
@@ -145,7 +149,7 @@ public class CertifyMojo extends AbstractMojo {
                 .outDir(reportsDirectory.toPath())
                 .probe(probe ? new Prober.Options(probeCap, Duration.ofSeconds(probeBudgetSeconds), Set.of()) : null)
                 .presentAs(layout).rerun(ProgressLog.reproduce(RunHeader.Toolkit.CASE))
-                .budget(Duration.ofSeconds(budgetSeconds)).build();
+                .budget(Duration.ofSeconds(budgetSeconds)).seed(seed).build();
         Certification.Outcome outcome;
         try {
             outcome = Certification.run(request, new ProgressLog(getLog()));

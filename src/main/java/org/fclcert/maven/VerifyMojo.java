@@ -12,7 +12,7 @@ import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
-import org.fclcert.report.JsonReport;
+import org.fclcert.report.ReportVerifier;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
 
@@ -60,9 +60,17 @@ public class VerifyMojo extends AbstractMojo {
         if (!Files.isRegularFile(file)) {
             throw new MojoExecutionException("No certification report at " + file + ": run fclcert:certify first");
         }
+        // the gate judges the evidence again, never the report's own verdict fields (ReportVerifier)
         Report report;
         try {
-            report = JsonReport.read(file);
+            ReportVerifier.Verified verified = ReportVerifier.check(reportsDirectory.toPath(), null);
+            if (!verified.inconsistencies().isEmpty()) {
+                throw new MojoFailureException("fclcert:verify: the certification in " + reportsDirectory
+                        + " is inconsistent: " + verified.inconsistencies().get(0)
+                        + (verified.inconsistencies().size() > 1 ? " (and " + (verified.inconsistencies().size() - 1)
+                                + " more; fclcert report --verify lists them)" : ""));
+            }
+            report = verified.report();
         } catch (IOException e) {
             throw new MojoExecutionException("Cannot read " + file + ": " + e.getMessage(), e);
         }

@@ -14,7 +14,10 @@ import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseSelection;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.ReferenceExportCheck;
+import org.fclcert.harness.Provenance;
 import org.fclcert.harness.ResultSink;
+import org.fclcert.harness.ResultsChain;
+import org.fclcert.harness.RunSeed;
 import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.ResultsWriter;
 import org.fclcert.harness.RunCase;
@@ -33,6 +36,7 @@ import org.fclcert.iut.StopSignal;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
+import org.fclcert.report.Origin;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportBuilder;
 import org.fclcert.report.ReportFiles;
@@ -74,10 +78,11 @@ public final class Certification {
      * @param budget      the time the whole run may take, the cases and the probes (null: {@link Defaults#RUN_BUDGET});
      *                    when it runs out the run is stopped, and the cases not run are reported as skipped with the
      *                    reason
+     * @param seed        the run seed the fresh vectors and disguises are drawn from ({@code --seed}); null: drawn anew
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget) {
+            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget, Long seed) {
 
         public Request {
             budget = budget == null ? Defaults.RUN_BUDGET : budget;
@@ -129,6 +134,7 @@ public final class Certification {
         private PresentAs presentAs = PresentAs.AUTO;
         private String rerun;
         private Duration budget = Defaults.RUN_BUDGET;
+        private Long seed;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -200,9 +206,15 @@ public final class Certification {
             return this;
         }
 
+        /** The run seed ({@code --seed}: replays a run's fresh vectors and disguises); null: drawn anew. */
+        public Builder seed(Long value) {
+            seed = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters, presentAs, rerun, budget);
+                    probe, filters, presentAs, rerun, budget, seed);
         }
     }
 
@@ -310,10 +322,14 @@ public final class Certification {
             if (selected.isEmpty()) {
                 throw new NothingSelected(request.corpusName());
             }
+            Provenance.CorpusIdentity corpusIdentity = CorpusCheck.identify(request.corpus());
+            long seed = request.seed() != null ? request.seed() : RunSeed.fresh();
             try (ImplementationUnderTest iut = stop.guard(open(request))) {
                 IutInfo info = hello(iut, request.iutSpec());
                 RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
-                        request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun());
+                        request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun())
+                        .withProvenance(Provenance.of(seed, info, request.iutSpec(), request.options().classpath(),
+                                corpusIdentity));
                 RunHeader header = request.presentAs().resolve(request.iutSpec())
                         .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
                 Path dir = request.outDir() != null ? request.outDir()
@@ -341,7 +357,7 @@ public final class Certification {
             Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
             RecordingIut recording = new RecordingIut(iut);
             List<CaseResult> done = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout)
-                    .run(recording, header, selected, sink, stop);
+                    .withSeed(RunSeed.parse(header.provenance().seed())).run(recording, header, selected, sink, stop);
             hooks.casesFinished();
             List<DataCheckEntry> dataCheckList = List.of();
             if (request.probe() != null) {
@@ -354,8 +370,11 @@ public final class Certification {
             }
             // a stop from here on finds every case run: it waits for the reports, and the run is complete
             String stopped = stop.reason();
+            ResultsChain.Seal[] seal = {null};
+            control.write(() -> seal[0] = results.finish(Instant.now().toString()));
             hooks.resultsComplete();
-            Report report = ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now());
+            Report report = Origin.apply(ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now()),
+                    header.provenance(), seal[0], Origin.JUDGED_LIVE, List.of());
             control.write(() -> ReportFiles.writeAll(report, dir));
             return new Outcome(report, dir, stopped);
         } catch (IOException e) {

@@ -90,7 +90,7 @@ public final class HtmlReport {
     private void header() {
         out.append("<h1>FCL compliance statement: ").append(Texts.html(r.iut().name() + " " + r.iut().version()))
                 .append("</h1>\n<p class=\"meta\">IEC 61131-7 clause 6.1, measured by fclcert ")
-                .append(Texts.html(r.toolkit().version())).append(" on ").append(Texts.html(r.generatedAt()))
+                .append(Texts.html(r.toolkit().version())).append(" on the run of ").append(Texts.html(r.run().startedAt()))
                 .append("<br>Implementation: ").append(Texts.html(Texts.implementation(r)).replaceAll("`([^`]*)`", "<code>$1</code>"))
                 .append(" · corpus <code>").append(Texts.html(r.corpus().dir())).append("</code>, ")
                 .append(r.corpus().cases()).append(" cases, sha256 <code>").append(Texts.html(r.corpus().sha256()))
@@ -100,10 +100,19 @@ public final class HtmlReport {
             out.append("<p class=\"small\">What the adapter cannot observe: ").append(Texts.html(String.join("; ", unseen)))
                     .append("</p>\n");
         }
+        if (r.origin() != null) {
+            r.origin().warnings().forEach(w -> out.append("<div class=\"verdict no\">").append(Texts.html(w))
+                    .append("</div>\n"));
+        }
         boolean ok = r.basicLevel().conformant();
         out.append("<div class=\"verdict ").append(ok ? "ok" : "no").append("\">Basic Level: ")
                 .append(ok ? "conformant" : "not conformant").append("<div class=\"small\">")
                 .append(Texts.html(r.basicLevel().reason())).append("</div></div>\n");
+        if (r.origin() != null) {
+            out.append("<details><summary>Provenance</summary><ul class=\"small\">");
+            r.origin().lines().forEach(l -> out.append("<li>").append(Texts.html(l.strip())).append("</li>"));
+            out.append("</ul></details>\n");
+        }
         Report.Summary s = r.summary();
         out.append("<p class=\"counts\"><span><b>").append(s.cases()).append("</b> cases</span>")
                 .append(count("passed", s.passed())).append(count("failed", s.failed()))

@@ -14,6 +14,11 @@ public final class JsonReport {
         Json.mapper().writer().with(SerializationFeature.INDENT_OUTPUT).writeValue(file.toFile(), report);
     }
 
+    /** The text {@link #write} writes. */
+    public static String text(Report report) throws IOException {
+        return Json.mapper().writer().with(SerializationFeature.INDENT_OUTPUT).writeValueAsString(report);
+    }
+
     public static Report read(Path file) throws IOException {
         return Json.mapper().readValue(org.fclcert.model.Limits.readFile(file), Report.class);
     }

@@ -116,6 +116,19 @@ public final class JunitReport {
         property(x, "toolkit.version", r.toolkit().version());
         property(x, "corpus.sha256", r.corpus().sha256());
         property(x, "basicLevel.conformant", String.valueOf(r.basicLevel().conformant()));
+        if (r.origin() != null) {
+            if (r.origin().provenance() != null) {
+                property(x, "run.seed", r.origin().provenance().seed());
+            }
+            property(x, "results.digest", String.valueOf(r.origin().digest()));
+            property(x, "run.endedAt", String.valueOf(r.origin().endedAt()));
+            for (int i = 0; i < r.origin().lines().size(); i++) {
+                property(x, "provenance." + (i + 1), r.origin().lines().get(i).strip());
+            }
+            for (int i = 0; i < r.origin().warnings().size(); i++) {
+                property(x, "warning." + (i + 1), r.origin().warnings().get(i));
+            }
+        }
         x.writeCharacters("\n  ");
         x.writeEndElement();
     }

@@ -51,9 +51,12 @@ public final class MarkdownReport {
     private void header() {
         line("# FCL compliance statement: " + Texts.cell(r.iut().name()) + " " + Texts.cell(r.iut().version()));
         line("");
-        line("IEC 61131-7 (clause 6.1), measured by fclcert " + Texts.cell(r.toolkit().version()) + " on "
-                + r.generatedAt() + ".");
+        line("IEC 61131-7 (clause 6.1), measured by fclcert " + Texts.cell(r.toolkit().version()) + " on the run of "
+                + Texts.cell(r.run().startedAt()) + ".");
         line("");
+        if (r.origin() != null) {
+            r.origin().warnings().forEach(w -> line("**" + Texts.cell(w) + "**\n"));
+        }
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
@@ -79,6 +82,12 @@ public final class MarkdownReport {
         line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
                 + Texts.cell(r.basicLevel().reason()) + ").");
         line("");
+        if (r.origin() != null) {
+            line("Provenance:");
+            line("");
+            r.origin().lines().forEach(l -> line("- " + Texts.cell(l.strip())));
+            line("");
+        }
         if (r.semantic() != null) {
             line("Two verdicts per feature row: **" + Report.LANGUAGE_AXIS + "**; **" + Report.SEMANTIC_AXIS + "**.");
             line("");

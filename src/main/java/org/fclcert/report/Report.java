@@ -28,7 +28,8 @@ public record Report(
         Claims claims,
         List<Causes.Cause> causes,
         List<CaseResult> cases,
-        SemanticAxis semantic) {
+        SemanticAxis semantic,
+        Origin origin) {
 
     public static final int FORMAT_VERSION = 1;
 
@@ -38,6 +39,15 @@ public record Report(
         interpretation = List.copyOf(interpretation);
         causes = causes == null ? List.of() : List.copyOf(causes);
         cases = List.copyOf(cases);
+    }
+
+    /** A report without its origin (see {@link Origin#apply}). */
+    public Report(int formatVersion, String generatedAt, RunHeader.Iut iut, RunHeader.Toolkit toolkit,
+            RunHeader.CorpusInfo corpus, Run run, Summary summary, Rejections rejections, BasicLevel basicLevel,
+            List<FeatureRow> features, List<DataCheckEntry> dataCheckList, List<InterpretationEntry> interpretation,
+            Claims claims, List<Causes.Cause> causes, List<CaseResult> cases, SemanticAxis semantic) {
+        this(formatVersion, generatedAt, iut, toolkit, corpus, run, summary, rejections, basicLevel, features,
+                dataCheckList, interpretation, claims, causes, cases, semantic, null);
     }
 
     /** A report of the language axis only. */

@@ -115,7 +115,9 @@ final class Texts {
     static String repro(Report report, String caseId) {
         String rerun = report.toolkit().rerun();
         if (rerun != null) {
-            return rerun.replace(org.fclcert.harness.RunHeader.Toolkit.CASE, caseId);
+            String seed = report.origin() != null && report.origin().provenance() != null
+                    ? " -Dfclcert.seed=" + shellQuote(report.origin().provenance().seed()) : "";
+            return rerun.replace(org.fclcert.harness.RunHeader.Toolkit.CASE, caseId) + seed;
         }
         StringBuilder b = new StringBuilder("./fclcert certify --iut ").append(shellQuote(report.iut().spec()));
         if (report.iut().classpath() != null) {
@@ -125,6 +127,9 @@ final class Texts {
         // the default corpus is conformance/ at a checkout's root, else the bundled one: neither needs naming
         if (dir != null && !dir.equals("conformance") && !dir.equals(org.fclcert.corpus.BundledCorpus.NAME)) {
             b.append(" --corpus ").append(shellQuote(dir));
+        }
+        if (report.origin() != null && report.origin().provenance() != null) {
+            b.append(" --seed ").append(shellQuote(report.origin().provenance().seed()));
         }
         return b.append(" --case ").append(shellQuote(caseId)).toString();
     }

@@ -1,0 +1,51 @@
+package org.fclcert.harness;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.fclcert.iut.ImplementationUnderTest;
+
+/**
+ * Runs a case with evidence no earlier run could have produced: its fresh vectors ({@link FreshVectors}) after
+ * its own, its text disguised ({@link Disguise}), both drawn from the run seed, and the implementation's replies
+ * kept in the result ({@link CaseResult#replies}). The case passes only when the corpus vectors and the fresh ones
+ * pass. {@link Rejudge} prepares a case the same way to judge its evidence again.
+ */
+public final class FreshEvidence {
+    private FreshEvidence() {
+    }
+
+    /** A case as this run sends it: {@code plain} the corpus case with its fresh vectors, and its disguise. */
+    record Prepared(RunCase corpus, RunCase plain, Disguise disguise) {
+        RunCase sent() {
+            return disguise.apply(plain);
+        }
+
+        int fresh() {
+            return plain.vectors().size() - corpus.vectors().size();
+        }
+
+        /** The result with what the run did to the case said in a note. */
+        CaseResult noted(CaseResult r, long seed) {
+            List<String> notes = new ArrayList<>(r.verdict().notes());
+            String vectors = fresh() == 0 ? "no fresh vectors" : "steps " + (corpus.vectors().size() + 1) + "–"
+                    + plain.vectors().size() + " are fresh vectors drawn for this run";
+            notes.add("run seed " + RunSeed.text(seed) + ": " + vectors + "; the program was sent disguised ("
+                    + disguise.renamed() + " names renamed, " + disguise.lineShift() + " line(s) put in front"
+                    + (corpus.expectReject() ? ", the error's line moved with them" : "") + ")");
+            return new CaseResult(r.plan(), new CaseResult.Verdict(r.status(), r.message(), notes,
+                    r.verdict().rejection()), r.evidence(), r.export(), r.setup(), r.presented(), r.replies());
+        }
+    }
+
+    static Prepared prepare(RunCase c, long seed) {
+        RunCase plain = FreshVectors.withFresh(c, seed);
+        return new Prepared(c, plain, Disguise.draw(plain, RunSeed.forCase(seed, c.id(), "disguise")));
+    }
+
+    static CaseRunner.Ran run(CaseRunner runner, ImplementationUnderTest iut, RunCase c, long seed) {
+        Prepared p = prepare(c, seed);
+        DisguisedIut wire = new DisguisedIut(iut, p.disguise());
+        CaseRunner.Ran ran = runner.run(wire, p.sent(), iut, p.plain());
+        return new CaseRunner.Ran(p.noted(ran.result(), seed).withReplies(wire.exchanges()), ran.gaveUp());
+    }
+}
