@@ -198,6 +198,12 @@ final class CertifyCommand implements Callable<Integer> {
     private int finish(PrintWriter stdout, PrintWriter err, Certification.Outcome outcome) {
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
+        org.fclcert.sandbox.Isolation isolation = report.iut().isolation();
+        if (isolation != null && (isolation.kind() == org.fclcert.sandbox.Isolation.Kind.UNAVAILABLE
+                || isolation.kind() == org.fclcert.sandbox.Isolation.Kind.DISABLED)) {
+            err.println("fclcert certify: warning: the implementation was not sandboxed: " + isolation.description());
+            err.flush();
+        }
         if (outcome.stopped() != null) {
             Report.Summary s = report.summary();
             long notRun = report.cases().stream().filter(c -> c.message() != null

@@ -315,7 +315,7 @@ public final class Certification {
                 RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
                         request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun());
                 RunHeader header = request.presentAs().resolve(request.iutSpec())
-                        .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
+                        .map(d -> plain.presentedAs(d.cliName())).orElse(plain).withIsolation(iut.isolation());
                 Path dir = request.outDir() != null ? request.outDir()
                         : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
                 return runAndReport(request, iut, header, selected, dir, listener, hooks, control, deadline);
@@ -470,7 +470,11 @@ public final class Certification {
 
     private static ImplementationUnderTest open(Request request) throws CannotCertify {
         try {
-            return Iuts.open(request.iutSpec(), request.options());
+            // the outputs stay hidden from a sandboxed implementation even where they lie inside the bound system
+            List<Path> outputs = java.util.stream.Stream.of(request.outDir(), request.reportsRoot())
+                    .filter(java.util.Objects::nonNull).toList();
+            return Iuts.open(request.iutSpec(), request.options()
+                    .withSandbox(request.options().sandbox().hiding(outputs)));
         } catch (IutException e) {
             throw new CannotCertify("cannot start the implementation '" + request.iutSpec() + "': " + e.getMessage()
                     + tail(e.stderrTail()));

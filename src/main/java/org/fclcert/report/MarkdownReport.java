@@ -55,6 +55,7 @@ public final class MarkdownReport {
                 + r.generatedAt() + ".");
         line("");
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
+        line("- Isolation: " + Texts.cell(Texts.isolation(r)));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));
