@@ -137,7 +137,8 @@ public final class Sandbox {
     }
 
     private List<String> wrap(List<String> target, Binds binds, List<Path> writable, boolean oneRequest) {
-        long size = settings.limits().fileSizeBytes();
+        // a little above the file size limit, so a single big file meets that limit (SIGXFSZ, named) first
+        long size = settings.limits().fileSizeBytes() + (64L << 20);
         List<String> a = new ArrayList<>(List.of(engine.bwrap().toString()));
         if (!engine.root()) {
             a.addAll(List.of("--unshare-user", "--disable-userns"));
