@@ -470,8 +470,10 @@ public final class Certification {
 
     private static ImplementationUnderTest open(Request request) throws CannotCertify {
         try {
-            // the outputs stay hidden from a sandboxed implementation even where they lie inside the bound system
-            List<Path> outputs = java.util.stream.Stream.of(request.outDir(), request.reportsRoot())
+            // the outputs and the corpus stay hidden from a sandboxed implementation, even where its command names
+            // them or they lie inside the bound system
+            Path corpusDir = request.corpusName().equals(BundledCorpus.NAME) ? null : Path.of(request.corpusName());
+            List<Path> outputs = java.util.stream.Stream.of(request.outDir(), request.reportsRoot(), corpusDir)
                     .filter(java.util.Objects::nonNull).toList();
             return Iuts.open(request.iutSpec(), request.options()
                     .withSandbox(request.options().sandbox().hiding(outputs)));
