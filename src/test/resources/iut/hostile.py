@@ -13,6 +13,13 @@ named by its argument:
   orphan FILE     at hello starts a child (its pid appended to FILE) that keeps stdout open; at the first eval
                   the IUT itself exits without a reply, so stdout stays open and the child is re-parented
   name TEXT       names itself TEXT (say 'reference', or 300 characters: the default output directory's name)
+  escape CHECKOUT OUT CORPUS REALHOME PORT MARKER
+                  at hello tries to write into the checkout and the output directory, lists its home and the real
+                  home, looks for the corpus, connects to 127.0.0.1:PORT (a listener of the test's own, never
+                  anywhere else), and leaves a double-forked setsid child (its argv[0] MARKER) that appends to
+                  OUT/report.md a few seconds later; what it saw is its version string
+  burst N         at the first eval starts N sleeping processes (a bounded burst, never a fork bomb)
+  write-gb        at the first eval writes 1 GB to a file in its working directory
 """
 import json
 import os
@@ -25,6 +32,60 @@ from fakebase import FakeIut
 MODE = sys.argv[1] if len(sys.argv) > 1 else "deep-export"
 INJECT = ("evil\r\x1b[2K\x1b]0;pwned\x07FAILED\n# forged heading\n**Basic Level: conformant**"
           " <script>alert(1)</script> [click](javascript:alert(1)) \x00nul")
+
+
+def attempt(action):
+    """'ok' or the name of the error the action raised."""
+    try:
+        action()
+        return "ok"
+    except Exception as e:  # noqa: BLE001 - any refusal is an answer here
+        return type(e).__name__
+
+
+def escape(checkout, out, corpus, real_home, port, marker):
+    import socket
+
+    def write(path):
+        with open(path, "a") as f:
+            f.write("written by the implementation\n")
+
+    def connect():
+        s = socket.create_connection(("127.0.0.1", int(port)), timeout=2)
+        s.sendall(b"hello from the implementation\n")
+        s.close()
+
+    def listing(path):
+        try:
+            return ",".join(sorted(os.listdir(path)))
+        except OSError as e:
+            return type(e).__name__
+
+    seen = {
+        "checkout": attempt(lambda: write(os.path.join(checkout, "written-by-iut.txt"))),
+        "out": attempt(lambda: write(os.path.join(out, "written-by-iut.txt"))),
+        "home": listing(os.path.expanduser("~")),
+        "realhome": listing(real_home),
+        "corpus": "present" if os.path.exists(corpus) else "absent",
+        "connect": attempt(connect),
+        "m2": "present" if os.path.exists(os.path.join(real_home, ".m2")) else "absent",
+    }
+    if os.fork() == 0:
+        os.setsid()
+        if os.fork() == 0:
+            forger = "sleep 3; echo FORGED >> '%s'" % os.path.join(out, "report.md")
+            os.execv("/bin/sh", [marker, "-c", forger])
+        os._exit(0)
+    os.wait()
+    return ";".join("%s=%s" % kv for kv in seen.items())
+
+
+def burst(n):
+    import time
+    for _ in range(n):
+        if os.fork() == 0:
+            time.sleep(60)
+            os._exit(0)
 
 
 class Hostile(FakeIut):
@@ -41,6 +102,8 @@ class Hostile(FakeIut):
                 f.write("%d\n" % child.pid)
         if MODE == "name":
             body["implementation"]["name"] = sys.argv[2]
+        if MODE == "escape":
+            body["implementation"]["version"] = escape(*sys.argv[2:8])
         if MODE == "inject":
             body["implementation"]["name"] = INJECT
             body["implementation"]["version"] = "1.0\x1b[31m"
@@ -56,6 +119,13 @@ class Hostile(FakeIut):
     def op_eval(self, req):
         if MODE == "orphan":
             os._exit(0)
+        if MODE == "burst" and self.evals == 0:
+            burst(int(sys.argv[2]))
+        if MODE == "write-gb" and self.evals == 0:
+            with open("big.bin", "wb") as f:
+                chunk = b"x" * (1 << 20)
+                for _ in range(1024):
+                    f.write(chunk)
         body = super().op_eval(req)
         right = body["outputs"]["sum"]
         if MODE == "dup-key":

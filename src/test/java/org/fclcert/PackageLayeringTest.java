@@ -35,6 +35,7 @@ import org.junit.jupiter.api.Test;
  *   harness           harness              runs corpus cases against an implementation, results.jsonl
  *   probe             probe                measures the Table 11 data check list
  *   inputs            corpus, iut          the conformance corpus; implementations under test
+ *   isolation         sandbox              launching implementation processes in a bubblewrap sandbox
  *   writers           write                programs written back as text (canonical FCL, dialects)
  *   meaning           eval, check          the reference evaluator; the check rules and feature detector
  *   dialect readers   syntax.dialect       other libraries' FCL dialects, read into the same model
@@ -54,6 +55,7 @@ class PackageLayeringTest {
             List.of("harness"),
             List.of("probe"),
             List.of("corpus", "iut"),
+            List.of("sandbox"),
             List.of("write", "plot"),
             List.of("eval", "check"),
             List.of("syntax.dialect"),

@@ -81,7 +81,7 @@ final class CertifyCommand implements Callable<Integer> {
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output directory (default: fclcert-reports/<iut-name>, which git ignores; with --case,"
-                    + " fclcert-reports/<iut-name> of the system's temporary directory, so that reproducing a case"
+                    + " fclcert-reports-<user>/<iut-name> of the system's temporary directory, so that reproducing a case"
                     + " writes nothing into the checkout)")
     Path out;
 
@@ -174,10 +174,19 @@ final class CertifyCommand implements Callable<Integer> {
         boolean probing = forceProbe || !noProbe && !reproducing;
         Prober.Options probe = probing ? new Prober.Options(probeCap, probeBudget, Set.of()) : null;
         Corpus loaded = loadCorpus();
+        java.nio.file.Path reportsRoot = Certification.DEFAULT_REPORTS_ROOT;
+        if (reproducing && out == null) {
+            try {
+                reportsRoot = Certification.scratchReportsRoot();
+            } catch (java.io.IOException e) {
+                throw new CannotRun("cannot make a private directory for the reports in the temporary directory: "
+                        + e.getMessage());
+            }
+        }
         Certification.Request request = Certification.Request.builder(iut.spec, loaded)
                 .options(iut.options()).classpath(iut.classpath)
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
-                .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
+                .reportsRoot(reportsRoot)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
                 .presentAs(presentAs).budget(budget).seed(seed).build();
         boolean terminal = System.console() != null;
@@ -202,6 +211,12 @@ final class CertifyCommand implements Callable<Integer> {
     private int finish(PrintWriter stdout, PrintWriter err, Certification.Outcome outcome) {
         Report report = outcome.report();
         print(stdout, report, outcome.directory());
+        org.fclcert.sandbox.Isolation isolation = report.iut().isolation();
+        if (isolation != null && (isolation.kind() == org.fclcert.sandbox.Isolation.Kind.UNAVAILABLE
+                || isolation.kind() == org.fclcert.sandbox.Isolation.Kind.DISABLED)) {
+            err.println("fclcert certify: warning: the implementation was not sandboxed: " + isolation.description());
+            err.flush();
+        }
         if (outcome.stopped() != null) {
             Report.Summary s = report.summary();
             long notRun = report.cases().stream().filter(c -> c.message() != null

@@ -39,11 +39,25 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
      * one was given) that reaches it again.
      */
     public record Iut(String name, String version, String command, String spec, String classpath,
-            List<String> claims, Map<String, Long> declaredLimits) {
+            List<String> claims, Map<String, Long> declaredLimits,
+            @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+            org.fclcert.sandbox.Isolation isolation) {
         public Iut {
             claims = claims == null ? List.of() : List.copyOf(claims);
             declaredLimits = declaredLimits == null ? Map.of() : Map.copyOf(declaredLimits);
         }
+
+        /** An implementation whose isolation is not recorded (results written before fclcert recorded it). */
+        public Iut(String name, String version, String command, String spec, String classpath, List<String> claims,
+                Map<String, Long> declaredLimits) {
+            this(name, version, command, spec, classpath, claims, declaredLimits, null);
+        }
+    }
+
+    /** The same header, recording the isolation the implementation ran under. */
+    public RunHeader withIsolation(org.fclcert.sandbox.Isolation isolation) {
+        return new RunHeader(new Iut(iut.name(), iut.version(), iut.command(), iut.spec(), iut.classpath(),
+                iut.claims(), iut.declaredLimits(), isolation), toolkit, corpus, selection, startedAt, presentAs);
     }
 
     /**

@@ -16,6 +16,8 @@ import java.util.OptionalLong;
 import java.util.stream.Stream;
 import org.fclcert.iut.IutException.Kind;
 import org.fclcert.model.Names;
+import org.fclcert.sandbox.Isolation;
+import org.fclcert.sandbox.Sandbox;
 
 /**
  * fuzzylite 6.0 (GPL-3, C++) as an implementation under test, driven through its command line as a
@@ -39,6 +41,7 @@ final class FuzzyliteIut implements ImplementationUnderTest {
     private final String spec;
     private final String binary;
     private final IutOptions options;
+    private final Sandbox sandbox;
 
     private IutInfo info;
     private Boolean measureMemory;
@@ -54,6 +57,12 @@ final class FuzzyliteIut implements ImplementationUnderTest {
         this.spec = spec;
         this.binary = binary;
         this.options = options;
+        this.sandbox = Sandbox.of(options.sandbox());
+    }
+
+    @Override
+    public Isolation isolation() {
+        return sandbox.isolation();
     }
 
     /** {@code fuzzylite} or {@code fuzzylite:PATH}. */
@@ -233,7 +242,9 @@ final class FuzzyliteIut implements ImplementationUnderTest {
         }
         Path rss = measure && memoryMeasurable() ? file("rss.txt") : null;
         try {
-            FuzzyliteProcess.Run run = FuzzyliteProcess.run(command, rss, options.timeout(), options.stderrTailBytes());
+            List<Path> writable = workDir == null ? List.of() : List.of(workDir);
+            FuzzyliteProcess.Run run = FuzzyliteProcess.run(command, rss, options.timeout(), options.stderrTailBytes(),
+                    sandbox, writable);
             run.peakRssBytes().ifPresent(bytes -> peakRss = Math.max(peakRss, bytes));
             return run;
         } catch (IutException e) {
@@ -252,11 +263,12 @@ final class FuzzyliteIut implements ImplementationUnderTest {
     }
 
     /** A non-zero exit is a crash (fuzzylite itself always exits with 0, even after an error). */
-    private static void crashCheck(FuzzyliteProcess.Run run, String what) throws IutException {
+    private void crashCheck(FuzzyliteProcess.Run run, String what) throws IutException {
         if (run.exitCode() != 0) {
             String said = FuzzyliteText.firstMessage(run.stdout());
             throw new IutException(Kind.CRASH, "fuzzylite exited with code " + run.exitCode() + " while " + what
                     + (run.exitCode() > 128 ? " (killed by signal " + (run.exitCode() - 128) + ")" : "")
+                    + sandbox.limitHit(run.exitCode()).map(s -> "; " + s).orElse("")
                     + (said.isEmpty() ? "" : "; it wrote: " + quote(said)), run.stderr());
         }
     }
@@ -274,6 +286,7 @@ final class FuzzyliteIut implements ImplementationUnderTest {
         if (workDir == null) {
             try {
                 workDir = Files.createTempDirectory("fclcert-fuzzylite-");
+                sandbox.grantWrite(workDir);
             } catch (IOException e) {
                 throw new IutException(Kind.INFRA, "cannot create a temporary directory for fuzzylite's files: "
                         + e.getMessage());

@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.OptionalLong;
 import java.util.concurrent.TimeUnit;
 import org.fclcert.iut.IutException.Kind;
+import org.fclcert.sandbox.Sandbox;
+import org.fclcert.sandbox.SandboxSettings;
 
 /**
  * One launch of the fuzzylite command line: its standard output and error (both drained on their own
@@ -34,6 +36,15 @@ final class FuzzyliteProcess {
      *     does not end in time (it is killed first)
      */
     static Run run(List<String> command, Path rssFile, Duration timeout, int tailBytes) throws IutException {
+        return run(command, rssFile, timeout, tailBytes, Sandbox.of(SandboxSettings.none()), List.of());
+    }
+
+    /**
+     * Runs {@code command} to its end through {@code sandbox}, with the {@code writable} directories (where the
+     * launch reads its program and writes its answer) bound read-write.
+     */
+    static Run run(List<String> command, Path rssFile, Duration timeout, int tailBytes, Sandbox sandbox,
+            List<Path> writable) throws IutException {
         List<String> full = new ArrayList<>();
         if (rssFile != null) {
             full.addAll(List.of(GNU_TIME, "-f", "%M", "-o", rssFile.toString()));
@@ -41,7 +52,7 @@ final class FuzzyliteProcess {
         full.addAll(command);
         Process process;
         try {
-            process = new ProcessBuilder(full).start();
+            process = sandbox.oneRequest(full, writable).start();
         } catch (IOException e) {
             throw new IutException(Kind.INFRA, "could not start " + command.get(0) + " (" + e.getMessage()
                     + "); install fuzzylite (Debian/Ubuntu: apt-get install fuzzylite) or give its path as fuzzylite:PATH");

@@ -67,6 +67,14 @@ public interface ImplementationUnderTest extends AutoCloseable {
         return java.util.OptionalDouble.empty();
     }
 
+    /**
+     * The isolation the implementation runs under, as the certificate records it. Adapters that launch a process
+     * answer with their sandbox's; everything else is called inside fclcert's JVM.
+     */
+    default org.fclcert.sandbox.Isolation isolation() {
+        return org.fclcert.sandbox.Isolation.inProcess("called inside fclcert's own JVM");
+    }
+
     /** Ends the session and frees its resources; never throws. */
     @Override
     void close();

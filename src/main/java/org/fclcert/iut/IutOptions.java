@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
+import org.fclcert.sandbox.SandboxSettings;
 
 /**
  * How fclcert drives an implementation under test.
@@ -15,9 +16,10 @@ import java.util.Objects;
  * @param stderrTailBytes how much of the end of a process IUT's standard error is kept for reports
  * @param classpath      jars or class directories searched for a {@code java:CLASS} IUT (empty = the
  *                       classpath fclcert runs on)
+ * @param sandbox        how implementation processes are launched (the sandbox is on by default)
  */
-public record IutOptions(
-        Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath) {
+public record IutOptions(Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes,
+        List<Path> classpath, SandboxSettings sandbox) {
 
     /** The per-request timeout unless the user sets one (the front ends show it through orchestration.Defaults). */
     public static final int DEFAULT_TIMEOUT_SECONDS = 5;
@@ -35,6 +37,12 @@ public record IutOptions(
             throw new IllegalArgumentException("restart budget, reply size and stderr tail size must not be negative");
         }
         classpath = List.copyOf(classpath);
+        Objects.requireNonNull(sandbox, "sandbox");
+    }
+
+    /** Options with the default sandbox. */
+    public IutOptions(Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath) {
+        this(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, SandboxSettings.defaults());
     }
 
     public static IutOptions defaults() {
@@ -43,22 +51,26 @@ public record IutOptions(
     }
 
     public IutOptions withTimeout(Duration newTimeout) {
-        return new IutOptions(newTimeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath);
+        return new IutOptions(newTimeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, sandbox);
     }
 
     public IutOptions withRestartBudget(int budget) {
-        return new IutOptions(timeout, budget, maxReplyBytes, stderrTailBytes, classpath);
+        return new IutOptions(timeout, budget, maxReplyBytes, stderrTailBytes, classpath, sandbox);
     }
 
     public IutOptions withMaxReplyBytes(int bytes) {
-        return new IutOptions(timeout, restartBudget, bytes, stderrTailBytes, classpath);
+        return new IutOptions(timeout, restartBudget, bytes, stderrTailBytes, classpath, sandbox);
     }
 
     public IutOptions withStderrTailBytes(int bytes) {
-        return new IutOptions(timeout, restartBudget, maxReplyBytes, bytes, classpath);
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, bytes, classpath, sandbox);
     }
 
     public IutOptions withClasspath(List<Path> entries) {
-        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, entries);
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, entries, sandbox);
+    }
+
+    public IutOptions withSandbox(SandboxSettings settings) {
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, settings);
     }
 }

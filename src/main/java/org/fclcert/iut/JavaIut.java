@@ -218,6 +218,12 @@ final class JavaIut implements ImplementationUnderTest {
     }
 
     @Override
+    public org.fclcert.sandbox.Isolation isolation() {
+        return org.fclcert.sandbox.Isolation.inProcess("a java: implementation is called inside fclcert's own JVM,"
+                + " with fclcert's rights (it does not run in the sandbox)");
+    }
+
+    @Override
     public void close() {
         worker.shutdownNow();
         if (loader != null) {

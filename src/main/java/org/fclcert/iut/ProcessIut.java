@@ -12,6 +12,8 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.OptionalLong;
 import org.fclcert.iut.IutException.Kind;
+import org.fclcert.sandbox.Isolation;
+import org.fclcert.sandbox.Sandbox;
 
 /**
  * An IUT that is a separate process speaking JSON lines ({@code docs/iut-protocol.md}).
@@ -32,6 +34,9 @@ final class ProcessIut implements ImplementationUnderTest {
     private final List<String> command;
     private final IutOptions options;
     private final ObjectMapper mapper = Protocol.mapper();
+    private final Sandbox sandbox;
+    /** CPU time of the process tree at the last reply (or start): what one request's CPU is counted from. */
+    private Duration cpuMark = Duration.ZERO;
 
     private ProcessSession session;
     private int starts;
@@ -47,6 +52,12 @@ final class ProcessIut implements ImplementationUnderTest {
         this.spec = spec;
         this.command = List.copyOf(command);
         this.options = options;
+        this.sandbox = Sandbox.of(options.sandbox());
+    }
+
+    @Override
+    public Isolation isolation() {
+        return sandbox.isolation();
     }
 
     @Override
@@ -188,7 +199,8 @@ final class ProcessIut implements ImplementationUnderTest {
                     + " is used up; last failure: " + lastFailure);
         }
         try {
-            session = ProcessSession.start(command, options, starts + 1);
+            session = ProcessSession.start(command, sandbox, options, starts + 1);
+            cpuMark = Duration.ZERO;
         } catch (IOException e) {
             throw new IutException(Kind.INFRA, "could not start " + command + ": " + e.getMessage());
         }
@@ -225,6 +237,7 @@ final class ProcessIut implements ImplementationUnderTest {
                     throw fail(Kind.PROTOCOL, "the IUT wrote a line before '" + op + "' was sent, unasked: "
                             + Protocol.quote(line.text()));
                 }
+                checkCpu(op);
                 return parse(line.text(), op, id);
             }
             if (event instanceof ReplyReader.EndOfStream) {
@@ -289,8 +302,30 @@ final class ProcessIut implements ImplementationUnderTest {
         }
     }
 
-    private static String exitNote(OptionalLong exitCode) {
-        return exitCode.isPresent() ? " (exit code " + exitCode.getAsLong() + ")" : "";
+    private String exitNote(OptionalLong exitCode) {
+        if (exitCode.isEmpty()) {
+            return "";
+        }
+        return " (exit code " + exitCode.getAsLong() + sandbox.limitHit(exitCode.getAsLong()).map(s -> ": " + s)
+                .orElse("") + ")";
+    }
+
+    /**
+     * The CPU time the process tree spent since the last reply (this request, and whatever ran between requests)
+     * against the sandbox's per-request limit; over it, the IUT is killed like one that timed out.
+     */
+    private void checkCpu(String op) throws IutException {
+        if (!sandbox.active()) {
+            return;
+        }
+        Duration now = session.cpuTime();
+        Duration used = now.minus(cpuMark);
+        cpuMark = now;
+        if (used.compareTo(sandbox.limits().cpuPerRequest()) > 0) {
+            throw fail(Kind.TIMEOUT, "the IUT used " + used.toMillis() + " ms of CPU time on '" + op
+                    + "', more than the sandbox's limit of " + sandbox.limits().cpuPerRequest().toMillis()
+                    + " ms per request");
+        }
     }
 
 }

@@ -14,6 +14,7 @@ import java.util.concurrent.TimeoutException;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.LongStream;
 import java.util.stream.Stream;
+import org.fclcert.sandbox.Sandbox;
 
 /**
  * One run of an IUT process: its pipes, the threads that drain them, and killing it (with the
@@ -36,9 +37,16 @@ final class ProcessSession {
         this.writer = Executors.newSingleThreadExecutor(r -> daemon(r, name + "-stdin"));
     }
 
-    static ProcessSession start(List<String> command, IutOptions options, int number) throws IOException {
-        Process process = new ProcessBuilder(command).start();
+    /** Starts {@code command} through the sandbox (which leaves it unwrapped when it is off or unavailable). */
+    static ProcessSession start(List<String> command, Sandbox sandbox, IutOptions options, int number)
+            throws IOException {
+        Process process = sandbox.processBuilder(command).start();
         return new ProcessSession(process, options, number);
+    }
+
+    /** CPU time of the process and what it started, so far (the per-request CPU limit is counted on it). */
+    java.time.Duration cpuTime() {
+        return Sandbox.cpuTime(process.toHandle());
     }
 
     private static Thread daemon(Runnable r, String name) {

@@ -102,6 +102,11 @@ public final class RecordingIut implements ImplementationUnderTest {
     }
 
     @Override
+    public org.fclcert.sandbox.Isolation isolation() {
+        return inner.isolation();
+    }
+
+    @Override
     public OptionalDouble lastEvalMillis() {
         return inner.lastEvalMillis();
     }

@@ -148,6 +148,11 @@ final class ReferenceIut implements ImplementationUnderTest {
     }
 
     @Override
+    public org.fclcert.sandbox.Isolation isolation() {
+        return org.fclcert.sandbox.Isolation.inProcess("the reference evaluator is fclcert's own code, called in its JVM");
+    }
+
+    @Override
     public void close() {
         instances.clear();
     }

@@ -225,6 +225,11 @@ public final class StopSignal {
         }
 
         @Override
+        public org.fclcert.sandbox.Isolation isolation() {
+            return delegate.isolation();
+        }
+
+        @Override
         public OptionalDouble lastEvalMillis() {
             return delegate.lastEvalMillis();
         }

@@ -227,10 +227,12 @@ public final class Certification {
 
     /**
      * The parent of the default output directory of a run of selected cases ({@code --case}): a directory
-     * of the system's temporary directory, so that reproducing a failure writes nothing into a checkout.
+     * of the system's temporary directory, so that reproducing a failure writes nothing into a checkout; private to
+     * the user ({@code fclcert-reports-<user>}, mode 700, never a link: {@link OutputDirectory#privateScratch}).
      */
-    public static Path scratchReportsRoot() {
-        return Path.of(System.getProperty("java.io.tmpdir"), "fclcert-reports");
+    public static Path scratchReportsRoot() throws IOException {
+        return OutputDirectory.privateScratch(Path.of(System.getProperty("java.io.tmpdir")),
+                System.getProperty("user.name"));
     }
 
     /** Where a case that did not pass leaves its protocol transcript, relative to the output directory. */
@@ -277,7 +279,11 @@ public final class Certification {
         Hooks NONE = new Hooks() {
         };
 
-        /** The cases are about to run on {@code iut}; their results stream to {@code resultsFile} in {@code directory}. */
+        /**
+         * The cases are about to run on {@code iut}; their outputs end up in {@code directory}, and until the run
+         * ends its results stream to {@code resultsFile} in the run's private sibling of it (where they stay when the
+         * run is cut off before its end).
+         */
         default void started(ImplementationUnderTest iut, Path directory, Path resultsFile) {
         }
 
@@ -324,17 +330,22 @@ public final class Certification {
             }
             Provenance.CorpusIdentity corpusIdentity = CorpusCheck.identify(request.corpus());
             long seed = request.seed() != null ? request.seed() : RunSeed.fresh();
-            try (ImplementationUnderTest iut = stop.guard(open(request))) {
+            // an explicit output directory is locked before the implementation starts: a second run refuses at once
+            try (OutputDirectory claimed = request.outDir() != null ? OutputDirectory.claim(request.outDir()) : null;
+                    ImplementationUnderTest iut = stop.guard(open(request))) {
                 IutInfo info = hello(iut, request.iutSpec());
                 RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
                         request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun())
                         .withProvenance(Provenance.of(seed, info, request.iutSpec(), request.options().classpath(),
                                 corpusIdentity));
                 RunHeader header = request.presentAs().resolve(request.iutSpec())
-                        .map(d -> plain.presentedAs(d.cliName())).orElse(plain);
+                        .map(d -> plain.presentedAs(d.cliName())).orElse(plain).withIsolation(iut.isolation());
                 Path dir = request.outDir() != null ? request.outDir()
                         : request.reportsRoot().resolve(defaultDirectoryName(request.iutSpec(), info.name()));
-                return runAndReport(request, iut, header, selected, dir, listener, hooks, control, deadline);
+                try (OutputDirectory late = claimed == null ? OutputDirectory.claim(dir) : null) {
+                    return runAndReport(request, iut, header, selected, claimed != null ? claimed : late, listener,
+                            hooks, control, deadline);
+                }
             }
         } finally {
             control.ended();
@@ -342,18 +353,15 @@ public final class Certification {
     }
 
     private static Outcome runAndReport(Request request, ImplementationUnderTest iut, RunHeader header,
-            List<RunCase> selected, Path dir, RunListener listener, Hooks hooks, RunControl control, long deadline)
-            throws CannotCertify {
+            List<RunCase> selected, OutputDirectory out, RunListener listener, Hooks hooks, RunControl control,
+            long deadline) throws CannotCertify {
+        // everything is written into the run's private sibling and moved into place at the end
+        Path dir = out.staging();
         Path resultsFile = dir.resolve(RESULTS);
-        try {
-            removeEarlierReports(dir);
-        } catch (IOException e) {
-            throw new CannotCertify("cannot remove the earlier reports in " + dir + ": " + e.getMessage());
-        }
         StopSignal stop = control.signal;
         try (ResultsWriter results = ResultsWriter.create(resultsFile)) {
             ResultSink sink = control.guard(results);
-            hooks.started(iut, dir, resultsFile);
+            hooks.started(iut, out.target(), resultsFile);
             Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
             RecordingIut recording = new RecordingIut(iut);
             List<CaseResult> done = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout)
@@ -375,30 +383,22 @@ public final class Certification {
             hooks.resultsComplete();
             Report report = Origin.apply(ReportBuilder.build(header, done, List.of(), dataCheckList, Instant.now()),
                     header.provenance(), seal[0], Origin.JUDGED_LIVE, List.of());
-            control.write(() -> ReportFiles.writeAll(report, dir));
-            return new Outcome(report, dir, stopped);
+            control.write(() -> {
+                ReportFiles.writeAll(report, dir);
+                out.publish(EARLIER_OUTPUTS, TRANSCRIPTS);
+            });
+            return new Outcome(report, out.target(), stopped);
         } catch (IOException e) {
             throw new CannotCertify("cannot write the results or reports in " + dir + ": " + e.getMessage());
         }
     }
 
     /**
-     * Removes the reports and transcripts of an earlier run in {@code dir}: a run killed before its reports are
-     * written (SIGKILL, a power cut) must not leave an earlier run's reports next to its own results.jsonl.
+     * The outputs of an earlier run in the output directory that a run replaces (with the transcripts): none of them
+     * may stay beside the new run's results.
      */
-    private static void removeEarlierReports(Path dir) throws IOException {
-        for (String name : List.of(ReportFiles.JSON, ReportFiles.MARKDOWN, ReportFiles.HTML, ReportFiles.JUNIT)) {
-            Files.deleteIfExists(dir.resolve(name));
-        }
-        Path transcripts = dir.resolve(TRANSCRIPTS);
-        if (Files.isDirectory(transcripts)) {
-            try (var files = Files.newDirectoryStream(transcripts, "*.requests.jsonl")) {
-                for (Path f : files) {
-                    Files.deleteIfExists(f);
-                }
-            }
-        }
-    }
+    private static final List<String> EARLIER_OUTPUTS = List.of(RESULTS, ReportFiles.JSON, ReportFiles.MARKDOWN,
+            ReportFiles.HTML, ReportFiles.JUNIT);
 
     /**
      * Writes, for each case that does not pass, the protocol requests it made ({@link #transcriptFile}), so
@@ -489,7 +489,13 @@ public final class Certification {
 
     private static ImplementationUnderTest open(Request request) throws CannotCertify {
         try {
-            return Iuts.open(request.iutSpec(), request.options());
+            // the outputs and the corpus stay hidden from a sandboxed implementation, even where its command names
+            // them or they lie inside the bound system
+            Path corpusDir = request.corpusName().equals(BundledCorpus.NAME) ? null : Path.of(request.corpusName());
+            List<Path> outputs = java.util.stream.Stream.of(request.outDir(), request.reportsRoot(), corpusDir)
+                    .filter(java.util.Objects::nonNull).toList();
+            return Iuts.open(request.iutSpec(), request.options()
+                    .withSandbox(request.options().sandbox().hiding(outputs)));
         } catch (IutException e) {
             throw new CannotCertify("cannot start the implementation '" + request.iutSpec() + "': " + e.getMessage()
                     + tail(e.stderrTail()));

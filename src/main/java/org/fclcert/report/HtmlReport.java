@@ -95,6 +95,7 @@ public final class HtmlReport {
                 .append(" · corpus <code>").append(Texts.html(r.corpus().dir())).append("</code>, ")
                 .append(r.corpus().cases()).append(" cases, sha256 <code>").append(Texts.html(r.corpus().sha256()))
                 .append("</code></p>\n");
+        out.append("<p class=\"small\">Isolation: ").append(Texts.html(Texts.isolation(r))).append("</p>\n");
         List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             out.append("<p class=\"small\">What the adapter cannot observe: ").append(Texts.html(String.join("; ", unseen)))

@@ -58,6 +58,7 @@ public final class MarkdownReport {
             r.origin().warnings().forEach(w -> line("**" + Texts.cell(w) + "**\n"));
         }
         line("- Implementation: " + Texts.implementation(r, Texts::cell));
+        line("- Isolation: " + Texts.cell(Texts.isolation(r)));
         java.util.List<String> unseen = org.fclcert.iut.Iuts.unobservable(r.iut().spec());
         if (!unseen.isEmpty()) {
             line("- What the adapter cannot observe: " + String.join("; ", unseen));

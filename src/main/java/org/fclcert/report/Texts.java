@@ -176,6 +176,18 @@ final class Texts {
                 .reduce((a, b) -> a + ", " + b).orElse("no case") + ".";
     }
 
+    /**
+     * How the implementation was isolated from the host, as recorded (a run without the sandbox says so first;
+     * results written before fclcert recorded it say that).
+     */
+    static String isolation(Report r) {
+        org.fclcert.sandbox.Isolation isolation = r.iut().isolation();
+        if (isolation == null) {
+            return "not recorded (results written without an isolation record)";
+        }
+        return (isolation.unisolated() ? "NOT SANDBOXED: " : "") + isolation.description();
+    }
+
     /** The header's implementation line: its name and version, then how it was reached. */
     static String implementation(Report r) {
         return implementation(r, s -> s);

@@ -205,13 +205,15 @@ class HostileIutTest {
     void childrenOutlivingTheImplementationSurviveNeitherCertifyNorProbe() throws Exception {
         // issue 18 item 5: the IUT exits at each eval, its child keeps stdout open; one survivor per restart was
         // left (6 after a certify, 34 after a probe)
+        // --no-sandbox: the test reads the host pids the children write (in the sandbox its PID namespace ends them
+        // all, SandboxedRunTest); this is the kill path of an unsandboxed run
         Path pids = dir.resolve("pids");
-        Report r = certify("orphan " + pids, "--timeout", "1s");
+        Report r = certify("orphan " + pids, "--timeout", "1s", "--no-sandbox");
         assertEquals(CaseStatus.ERRORED, result(r, "B-FB-001").status());
         assertTrue(Files.readAllLines(pids).size() >= 2, "restarted, a child each time");
         noSurvivors(pids);
         Path probed = dir.resolve("probe-pids");
-        int exit = Main.run("probe", "--iut", HOSTILE + "orphan " + probed, "--timeout", "1s", "--cap", "4",
+        int exit = Main.run("probe", "--iut", HOSTILE + "orphan " + probed, "--no-sandbox", "--timeout", "1s", "--cap", "4",
                 "--budget", "6s");
         assertEquals(0, exit, err.toString(StandardCharsets.UTF_8));
         assertTrue(Files.readAllLines(probed).size() >= 2, "restarted, a child each time");

@@ -43,6 +43,7 @@ class InterruptedRunTest {
     @TempDir
     Path dir;
 
+    /** Run with --no-sandbox: the test reads the host pids it writes (the sandbox's own cleanup: SandboxedRunTest). */
     private String slow(double delay) {
         return "process:python3 src/test/resources/iut/slow.py " + delay + " " + dir.resolve("pids");
     }
@@ -145,7 +146,7 @@ class InterruptedRunTest {
 
     private void interruptCertify(String signal, boolean wholeGroup, int exitCode) throws Exception {
         Path out = dir.resolve("out");
-        Process p = start("certify", "--iut", slow(0.25), "--corpus", CORPUS, "--out", out.toString(), "--no-probe");
+        Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe");
         awaitLines(out.resolve("results.jsonl"), 2);   // the header and the first case: the second is under way
         signal(signal, wholeGroup ? "-" + p.pid() : String.valueOf(p.pid()));
         assertEquals(exitCode, awaitExit(p), () -> "stderr: " + safeText("stderr"));
@@ -189,7 +190,7 @@ class InterruptedRunTest {
         Path out = dir.resolve("out");
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         PrintWriter errWriter = new PrintWriter(err, true, StandardCharsets.UTF_8);
-        int exit = Main.run(new PrintWriter(new ByteArrayOutputStream()), errWriter, "certify", "--iut", slow(0.85),
+        int exit = Main.run(new PrintWriter(new ByteArrayOutputStream()), errWriter, "certify", "--iut", slow(0.85), "--no-sandbox",
                 "--timeout", "1s", "--budget", "2s", "--corpus", CORPUS, "--out", out.toString(), "--probe-cap", "4");
         assertEquals(2, exit, err.toString(StandardCharsets.UTF_8));
         Report r = agreeing(out, "not run: the run was stopped: the run budget of 2s ran out");
@@ -206,7 +207,7 @@ class InterruptedRunTest {
     @Test
     void anInterruptedProbeStopsItsImplementationAndShowsWhatItMeasured() throws Exception {
         Path out = dir.resolve("probe");
-        Process p = start("probe", "--iut", slow(0.02), "--cap", "64", "--out", out.toString());
+        Process p = start("probe", "--iut", slow(0.02), "--no-sandbox", "--cap", "64", "--out", out.toString());
         awaitLines(dir.resolve("pids"), 2);
         Thread.sleep(3000);   // some rows measured, one under way
         signal("INT", String.valueOf(p.pid()));
@@ -230,7 +231,7 @@ class InterruptedRunTest {
         // the data-types row alone is 50 requests: 42 s at 0.85 s each, and the execution-time row's warm-up 425 s
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         int exit = Main.run(new PrintWriter(out, true, StandardCharsets.UTF_8), new PrintWriter(new ByteArrayOutputStream()),
-                "probe", "--iut", slow(0.85), "--timeout", "1s", "--cap", "8", "--budget", "2s", "--format", "json");
+                "probe", "--iut", slow(0.85), "--no-sandbox", "--timeout", "1s", "--cap", "8", "--budget", "2s", "--format", "json");
         assertEquals(0, exit);
         List<DataCheckEntry> rows = List.of(new com.fasterxml.jackson.databind.ObjectMapper()
                 .readValue(out.toByteArray(), DataCheckEntry[].class));

@@ -33,7 +33,10 @@ class HostileProcessIutTest {
     void aChildThatOutlivesTheIutAndKeepsItsStdoutIsKilledToo(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
             throws Exception {
         java.nio.file.Path pids = dir.resolve("pids");
-        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(1000)).withRestartBudget(1);
+        // without the sandbox: the test reads the host pids the children write (the sandbox's PID namespace ends
+        // them all anyway, SandboxedRunTest)
+        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(1000)).withRestartBudget(1)
+                .withSandbox(org.fclcert.sandbox.SandboxSettings.none());
         try (ImplementationUnderTest iut = Iuts.open(ProcessIutTest.fake("hostile.py", "orphan", pids.toString()),
                 options)) {
             iut.load(PROGRAM);
