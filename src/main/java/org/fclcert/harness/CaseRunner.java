@@ -9,6 +9,7 @@ import org.fclcert.corpus.ExpectedError;
 import org.fclcert.corpus.Vector;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutHealth;
 import org.fclcert.iut.LoadOutcome;
 
 /**
@@ -35,6 +36,13 @@ final class CaseRunner {
     }
 
     Ran run(ImplementationUnderTest iut, RunCase c) {
+        IutHealth before = iut.health();
+        Ran ran = runCounted(iut, c);
+        IutHealth during = iut.health().since(before);
+        return new Ran(ran.result().withBreakdowns(during.crashes(), during.restarts()), ran.gaveUp());
+    }
+
+    private Ran runCounted(ImplementationUnderTest iut, RunCase c) {
         long start = System.nanoTime();
         ResultBuilder r = new ResultBuilder(c);
         boolean gaveUp = false;
