@@ -149,10 +149,27 @@ public record CaseResult(PlannedCase plan, Verdict verdict, Evidence evidence, E
 
     /**
      * How the case was run: the function block evaluated (null: the first), the tolerance described,
-     * the program text (kept only for a case that did not pass, so a report can show it) and how long it took.
+     * the program text (kept only for a case that did not pass, so a report can show it), how long it took, and
+     * how often the implementation broke down ({@code crashes}: crashed, hung or broke the protocol, its process
+     * killed) and was restarted while the case ran (null when it did neither).
      */
-    public record Setup(String block, String tolerance, String program, Long durationMs) {
+    public record Setup(String block, String tolerance, String program, Long durationMs, Integer crashes,
+            Integer restarts) {
         public static final Setup NOT_RUN = new Setup(null, null, null, null);
+
+        /** A setup in which the implementation neither broke down nor was restarted. */
+        public Setup(String block, String tolerance, String program, Long durationMs) {
+            this(block, tolerance, program, durationMs, null, null);
+        }
+    }
+
+    /** This result with the breakdowns and restarts of the implementation while it ran (none: unchanged). */
+    public CaseResult withBreakdowns(int crashes, int restarts) {
+        if (crashes == 0 && restarts == 0) {
+            return this;
+        }
+        return new CaseResult(plan, verdict, evidence, export, new Setup(setup.block(), setup.tolerance(),
+                setup.program(), setup.durationMs(), crashes, restarts), presented);
     }
 
     /** A skipped result for a planned case that never ran. */

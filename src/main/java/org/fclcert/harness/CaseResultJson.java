@@ -38,7 +38,9 @@ record CaseResultJson(
         Long durationMs,
         RejectionPlace rejection,
         PresentedJson presented,
-        List<Exchange> replies) {
+        List<Exchange> replies,
+        Integer crashes,
+        Integer restarts) {
 
     /** The semantic axis of a case ({@link CaseResult.Presented}), flat like the case itself. */
     @JsonInclude(JsonInclude.Include.NON_NULL)
@@ -75,7 +77,7 @@ record CaseResultJson(
                 m == null ? null : m.expected(), m == null ? null : m.actual(), e.error(), e.maxError(),
                 e.reference(), r.setup().tolerance(), r.export().status(), r.export().message(), r.verdict().notes(),
                 r.setup().block(), r.setup().program(), r.setup().durationMs(), r.verdict().rejection(),
-                PresentedJson.of(r.presented()), r.replies());
+                PresentedJson.of(r.presented()), r.replies(), r.setup().crashes(), r.setup().restarts());
     }
 
     CaseResult toResult() {
@@ -85,7 +87,7 @@ record CaseResultJson(
         return new CaseResult(plan, new CaseResult.Verdict(status, message, notes, rejection),
                 new CaseResult.Evidence(s, mismatch(expected, actual), error, maxError, reference),
                 new CaseResult.Export(exportStatus, exportMessage),
-                new CaseResult.Setup(block, tolerance, program, durationMs),
+                new CaseResult.Setup(block, tolerance, program, durationMs, crashes, restarts),
                 presented == null ? null : presented.toPresented(), replies);
     }
 

@@ -9,6 +9,7 @@ import org.fclcert.corpus.ExpectedError;
 import org.fclcert.corpus.Vector;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutHealth;
 import org.fclcert.iut.LoadOutcome;
 
 /**
@@ -41,9 +42,17 @@ final class CaseRunner {
     /**
      * As {@link #run(ImplementationUnderTest, RunCase)}, with {@code c} the case as sent ({@link Disguise}) over
      * {@code iut}, and {@code plain} the same case as the corpus writes it, over {@code plainIut}: the reference's
-     * trace and the semantic axis work on the plain case.
+     * trace and the semantic axis work on the plain case. The implementation's breakdowns during the case are
+     * counted by the difference of its health around it.
      */
     Ran run(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain) {
+        IutHealth before = iut.health();
+        Ran ran = runCounted(iut, c, plainIut, plain);
+        IutHealth during = iut.health().since(before);
+        return new Ran(ran.result().withBreakdowns(during.crashes(), during.restarts()), ran.gaveUp());
+    }
+
+    private Ran runCounted(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain) {
         long start = System.nanoTime();
         ResultBuilder r = new ResultBuilder(c);
         boolean gaveUp = false;

@@ -14,7 +14,7 @@ final class IutFaults {
             case CRASH -> "crashed";
             case TIMEOUT -> "timed out";
             case PROTOCOL -> "broke the protocol";
-            case GAVE_UP -> "was given up (restart budget exhausted)";
+            case GAVE_UP -> "was given up";
             case INFRA -> "could not be driven";
             case STOPPED -> "was stopped by fclcert";
         };

@@ -8,8 +8,10 @@ import org.fclcert.iut.StopSignal;
 
 /**
  * Runs the selected cases one after another on one implementation and hands each result to the sink as
- * soon as it is known, so an interrupted run keeps what it did. Once the implementation has exhausted its
- * restart budget the remaining cases are skipped with that reason (never counted as passed). A run that is
+ * soon as it is known, so an interrupted run keeps what it did. A crash or a hang costs only the request that
+ * caused it (the implementation is restarted); once the implementation is given up (iut's restart policy: it
+ * cannot be started, or each of its last requests broke it down) the remaining cases are skipped with that reason
+ * (never counted as passed). A run that is
  * stopped ({@link StopSignal}: Ctrl-C, SIGTERM, the run budget) records the case under way and every later
  * case as skipped with the reason, so that the results still hold every selected case exactly once.
  */
@@ -70,7 +72,7 @@ public final class Runner {
                 result = notRun(c, STOPPED + stop.reason());
             } else if (gaveUpAt != null) {
                 result = notRun(c, "not run: the implementation was given up at case " + gaveUpAt
-                        + " (restart budget exhausted)");
+                        + " (it could not be started, or each of its last requests crashed or hung)");
             } else {
                 int cuts = stop == null ? 0 : stop.cuts();
                 CaseRunner.Ran ran = seed == null ? caseRunner.run(iut, c) : FreshEvidence.run(caseRunner, iut, c, seed);

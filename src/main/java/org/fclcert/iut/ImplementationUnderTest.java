@@ -75,6 +75,14 @@ public interface ImplementationUnderTest extends AutoCloseable {
         return org.fclcert.sandbox.Isolation.inProcess("called inside fclcert's own JVM");
     }
 
+    /**
+     * How often the implementation broke down and was restarted so far (a process IUT); none for an implementation
+     * that is never restarted. The harness counts a case's crashes by the difference around it.
+     */
+    default IutHealth health() {
+        return IutHealth.NONE;
+    }
+
     /** Ends the session and frees its resources; never throws. */
     @Override
     void close();

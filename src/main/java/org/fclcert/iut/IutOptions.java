@@ -10,8 +10,10 @@ import org.fclcert.sandbox.SandboxSettings;
  * How fclcert drives an implementation under test.
  *
  * @param timeout        longest wait for one reply (process IUT) or one call (Java IUT)
- * @param restartBudget  how many times a crashed or hung IUT is restarted before requests fail with
- *                       {@link IutException.Kind#GAVE_UP}
+ * @param restartBudget  how many times in a row a crashed or hung IUT is restarted: once this many + 1
+ *                       requests in a row have broken it down, requests fail with {@link IutException.Kind#GAVE_UP}
+ *                       (a process IUT, {@code RestartPolicy}; for a Java IUT the abandoned calls in all, for
+ *                       fuzzylite the timed-out launches in all)
  * @param maxReplyBytes  longest reply line accepted from a process IUT; longer is a protocol fault
  * @param stderrTailBytes how much of the end of a process IUT's standard error is kept for reports
  * @param classpath      jars or class directories searched for a {@code java:CLASS} IUT (empty = the

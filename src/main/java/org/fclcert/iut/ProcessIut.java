@@ -21,8 +21,9 @@ import org.fclcert.sandbox.Sandbox;
  * <p>The process is started on the first request and greeted with {@code hello}. After a crash, a
  * timeout or a protocol fault it is killed (with its child processes) and the failing request throws;
  * the next request starts it again, greets it, and — unless that request is itself a {@code load} —
- * replays the last program it had accepted. Each restart counts against the restart budget; once it
- * is used up every request fails with {@link Kind#GAVE_UP}.
+ * replays the last program it had accepted. A breakdown costs only the request that caused it; the
+ * {@link RestartPolicy} says when the implementation is given up instead, after which every request fails
+ * with {@link Kind#GAVE_UP}.
  */
 final class ProcessIut implements ImplementationUnderTest {
     private static final long STDERR_WAIT_MILLIS = 500;
@@ -39,9 +40,7 @@ final class ProcessIut implements ImplementationUnderTest {
     private Duration cpuMark = Duration.ZERO;
 
     private ProcessSession session;
-    private int starts;
-    private boolean gaveUp;
-    private String lastFailure = "";
+    private final RestartPolicy policy;
     private IutInfo info;
     private String acceptedProgram;
     private long nextId;
@@ -53,6 +52,7 @@ final class ProcessIut implements ImplementationUnderTest {
         this.command = List.copyOf(command);
         this.options = options;
         this.sandbox = Sandbox.of(options.sandbox());
+        this.policy = new RestartPolicy(options.restartBudget());
     }
 
     @Override
@@ -62,8 +62,17 @@ final class ProcessIut implements ImplementationUnderTest {
 
     @Override
     public IutInfo hello() throws IutException {
-        ensureRunning(false);
+        try {
+            ensureRunning(false);
+        } catch (IutException e) {
+            throw counted(e);
+        }
         return info;
+    }
+
+    @Override
+    public IutHealth health() {
+        return policy.health();
     }
 
     @Override
@@ -159,52 +168,69 @@ final class ProcessIut implements ImplementationUnderTest {
     }
 
     private <T> T call(ObjectNode request, Reading<T> reading, boolean replay) throws IutException {
-        ensureRunning(replay);
-        JsonNode reply = exchange(request);
         try {
-            return reading.read(reply);
-        } catch (IutException e) {
-            if (e.kind() == Kind.PROTOCOL) {
-                throw fail(Kind.PROTOCOL, e.getMessage());
+            ensureRunning(replay);
+            JsonNode reply = exchange(request);
+            T value;
+            try {
+                value = reading.read(reply);
+            } catch (IutException e) {
+                if (e.kind() == Kind.PROTOCOL) {
+                    throw fail(Kind.PROTOCOL, e.getMessage());
+                }
+                policy.answered();
+                throw new IutException(e.kind(), e.getMessage(), stderrTail());
             }
-            throw new IutException(e.kind(), e.getMessage(), stderrTail());
+            policy.answered();
+            return value;
+        } catch (IutException e) {
+            throw counted(e);
         }
+    }
+
+    /** Counts a request that broke the implementation down (its process was killed) for the restart policy. */
+    private IutException counted(IutException e) {
+        if (e.kind() == Kind.CRASH || e.kind() == Kind.TIMEOUT || e.kind() == Kind.PROTOCOL) {
+            policy.brokeDown(e.getMessage());
+        }
+        return e;
     }
 
     /** Starts the process if none runs (greeting it, and replaying the accepted program if asked). */
     private void ensureRunning(boolean replay) throws IutException {
-        if (gaveUp) {
-            throw new IutException(Kind.GAVE_UP, "stopped after " + (starts - 1)
-                    + " restarts (the restart budget); last failure: " + lastFailure);
+        if (policy.gaveUp() != null) {
+            throw new IutException(Kind.GAVE_UP, "given up: " + policy.gaveUp());
         }
         if (session != null && session.isAlive()) {
             return;
         }
         if (session != null) {
-            lastFailure = "the IUT exited between requests" + exitNote(session.exitCode(0));
+            // an exit between requests is no request's fault: the restart below is counted, not a crash
             session.kill();
             session = null;
         }
         start();
-        info = greet();
+        try {
+            info = greet();
+        } catch (IutException e) {
+            policy.helloFailed(e.getMessage());
+            throw e;
+        }
+        policy.helloAnswered();
         if (replay && acceptedProgram != null) {
             exchange(Protocol.load(acceptedProgram));
         }
     }
 
     private void start() throws IutException {
-        if (starts > options.restartBudget()) {
-            gaveUp = true;
-            throw new IutException(Kind.GAVE_UP, "the restart budget of " + options.restartBudget()
-                    + " is used up; last failure: " + lastFailure);
-        }
+        IutHealth before = policy.health();
         try {
-            session = ProcessSession.start(command, sandbox, options, starts + 1);
+            session = ProcessSession.start(command, sandbox, options, before.restarts() + 1);
             cpuMark = Duration.ZERO;
         } catch (IOException e) {
             throw new IutException(Kind.INFRA, "could not start " + command + ": " + e.getMessage());
         }
-        starts++;
+        policy.started();
     }
 
     private IutInfo greet() throws IutException {
@@ -277,7 +303,6 @@ final class ProcessIut implements ImplementationUnderTest {
 
     /** Kills the process after a failure and builds the exception, with the end of its stderr. */
     private IutException fail(Kind kind, String message) {
-        lastFailure = message;
         String tail = "";
         if (session != null) {
             sampleMemory();
@@ -306,8 +331,8 @@ final class ProcessIut implements ImplementationUnderTest {
         if (exitCode.isEmpty()) {
             return "";
         }
-        return " (exit code " + exitCode.getAsLong() + sandbox.limitHit(exitCode.getAsLong()).map(s -> ": " + s)
-                .orElse("") + ")";
+        return " (" + ExitStatus.describe(exitCode.getAsLong()) + sandbox.limitHit(exitCode.getAsLong())
+                .map(s -> ": " + s).orElse("") + ")";
     }
 
     /**

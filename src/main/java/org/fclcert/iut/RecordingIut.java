@@ -97,6 +97,11 @@ public final class RecordingIut implements ImplementationUnderTest {
     }
 
     @Override
+    public IutHealth health() {
+        return inner.health();
+    }
+
+    @Override
     public OptionalLong peakMemoryBytes() {
         return inner.peakMemoryBytes();
     }

@@ -220,6 +220,11 @@ public final class StopSignal {
         }
 
         @Override
+        public IutHealth health() {
+            return delegate.health();
+        }
+
+        @Override
         public OptionalLong peakMemoryBytes() {
             return delegate.peakMemoryBytes();
         }

@@ -86,7 +86,14 @@ public record Report(
         }
     }
 
-    public record Summary(int cases, int passed, int failed, int errored, int skipped) {
+    /**
+     * The case counts, and how often the implementation broke down (crashed, hung or broke the protocol, each
+     * costing its case) and was restarted over the run: the sums of the cases' own counts.
+     */
+    public record Summary(int cases, int passed, int failed, int errored, int skipped, int crashes, int restarts) {
+        public Summary(int cases, int passed, int failed, int errored, int skipped) {
+            this(cases, passed, failed, errored, skipped, 0, 0);
+        }
     }
 
     /**

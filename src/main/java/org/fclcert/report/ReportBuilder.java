@@ -69,7 +69,13 @@ public final class ReportBuilder {
 
     private static Report.Summary summary(List<CaseResult> cases) {
         return new Report.Summary(cases.size(), count(cases, CaseStatus.PASSED), count(cases, CaseStatus.FAILED),
-                count(cases, CaseStatus.ERRORED), count(cases, CaseStatus.SKIPPED));
+                count(cases, CaseStatus.ERRORED), count(cases, CaseStatus.SKIPPED),
+                cases.stream().mapToInt(c -> orZero(c.setup().crashes())).sum(),
+                cases.stream().mapToInt(c -> orZero(c.setup().restarts())).sum());
+    }
+
+    private static int orZero(Integer count) {
+        return count == null ? 0 : Math.max(0, count);
     }
 
     private static Report.Rejections rejections(List<CaseResult> cases) {

@@ -269,7 +269,8 @@ class RunnerTest {
                 positive("B-COGS-002", PLUS_ONE.vectors())));
         assertEquals(List.of(CaseStatus.ERRORED, CaseStatus.SKIPPED, CaseStatus.SKIPPED),
                 results.stream().map(CaseResult::status).toList());
-        assertEquals("not run: the implementation was given up at case B-COGS-001 (restart budget exhausted)",
+        assertEquals("not run: the implementation was given up at case B-COGS-001 (it could not be started, or each of its"
+                + " last requests crashed or hung)",
                 results.get(2).message());
         assertEquals(List.of("load"), iut.calls);
     }

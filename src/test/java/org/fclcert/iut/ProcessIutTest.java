@@ -68,23 +68,63 @@ class ProcessIutTest {
     }
 
     @Test
-    void repeatedCrashesUseUpTheRestartBudgetAndThenTheIutGivesUp() throws IutException {
-        try (ImplementationUnderTest iut = open(FAST.withRestartBudget(2), "crash_on_fifth_eval.py")) {
-            int crashes = 0;
-            IutException last = null;
-            for (int i = 0; i < 40 && (last == null || last.kind() != Kind.GAVE_UP); i++) {
+    void crashesThatAreNotInARowCostOnlyTheirRequestAndNeverGiveUp() throws IutException {
+        // each process of crash_every.py 3 answers two requests and dies of SIGSEGV on its third
+        try (ImplementationUnderTest iut = open(FAST.withRestartBudget(1), "crash_every.py", "3")) {
+            int answered = 0;
+            int crashed = 0;
+            for (int i = 1; i <= 30; i++) {
                 try {
-                    iut.eval(null, inputs(0, 0));
+                    // the eval counter of the process: 1 and 2, never more, since every third request kills it
+                    assertEquals((double) (answered % 2 + 1), iut.eval(null, inputs(1, 2)).get("evals"));
+                    answered++;
                 } catch (IutException e) {
-                    last = e;
-                    crashes += e.kind() == Kind.CRASH ? 1 : 0;
+                    assertEquals(Kind.CRASH, e.kind(), e.getMessage());
+                    assertEquals(0, i % 3, "request " + i + " crashed");
+                    assertTrue(e.getMessage().contains("exit code 139: killed by signal 11 (SIGSEGV"), e.getMessage());
+                    assertTrue(e.stderrTail().contains("about to crash on request 3"), e.stderrTail());
+                    crashed++;
                 }
             }
-            // first start + 2 restarts = 3 processes, each crashing on its fifth eval
-            assertEquals(3, crashes);
-            assertEquals(Kind.GAVE_UP, last.kind());
-            assertTrue(last.getMessage().contains("fifth") || last.getMessage().contains("exit code 3"), last.getMessage());
+            assertEquals(20, answered);
+            assertEquals(10, crashed);
+            // ten crashes; nine restarts so far (the tenth is made by the next request)
+            assertEquals(new IutHealth(10, 9), iut.health());
+            assertEquals(1.0, iut.eval(null, inputs(1, 2)).get("evals"));
+            assertEquals(new IutHealth(10, 10), iut.health());
+        }
+    }
+
+    @Test
+    void anIutThatBreaksDownOnEveryRequestIsGivenUpAfterItsRestartsInARow() throws IutException {
+        try (ImplementationUnderTest iut = open(FAST.withRestartBudget(2), "crash_every.py", "1")) {
+            iut.hello();
+            for (int i = 0; i < 3; i++) {
+                assertEquals(Kind.CRASH, assertThrows(IutException.class, () -> iut.eval(null, inputs(0, 0))).kind());
+            }
+            // three in a row is the budget of two restarts in a row used up: no fourth process is started
+            IutException given = assertThrows(IutException.class, () -> iut.eval(null, inputs(0, 0)));
+            assertEquals(Kind.GAVE_UP, given.kind());
+            assertTrue(given.getMessage().contains("each of the last 3 requests crashed, hung or broke the protocol"),
+                    given.getMessage());
+            assertEquals(new IutHealth(3, 2), iut.health());
             assertEquals(Kind.GAVE_UP, assertThrows(IutException.class, iut::hello).kind());
+        }
+    }
+
+    @Test
+    void anIutWhoseHelloFailsThreeTimesInARowCannotBeStarted() throws IutException {
+        try (ImplementationUnderTest iut = Iuts.open("process:python3 -c 'import sys; sys.exit(4)'",
+                FAST.withRestartBudget(100))) {
+            for (int i = 0; i < RestartPolicy.FAILED_STARTS; i++) {
+                IutException e = assertThrows(IutException.class, iut::hello);
+                assertEquals(Kind.CRASH, e.kind(), e.getMessage());
+                assertTrue(e.getMessage().contains("exit code 4"), e.getMessage());
+            }
+            IutException given = assertThrows(IutException.class, () -> iut.load(PROGRAM));
+            assertEquals(Kind.GAVE_UP, given.kind());
+            assertTrue(given.getMessage().contains("it could not be started: 3 starts in a row failed their hello"),
+                    given.getMessage());
         }
     }
 
