@@ -299,8 +299,7 @@ final class CertifyCommand implements Callable<Integer> {
         if (r.rejections().doubtful()) {
             out.println("Negative cases: " + r.rejections().sentence());
         }
-        out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
-                + r.basicLevel().reason() + ")");
+        out.println("Basic Level: " + r.basicLevel().sentence());
         String axis = r.semantic() != null ? " (language axis)" : "";
         out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
         out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));
@@ -319,6 +318,9 @@ final class CertifyCommand implements Callable<Integer> {
         }
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + TerminalText.visible(String.join(", ", r.claims().notRealised())));
+        }
+        if (!r.claims().notDetermined().isEmpty()) {
+            out.println("Claimed, not determined: " + TerminalText.visible(String.join(", ", r.claims().notDetermined())));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);
