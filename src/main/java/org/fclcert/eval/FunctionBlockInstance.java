@@ -364,7 +364,7 @@ public final class FunctionBlockInstance {
         }
         double stored = store(o.slot(), result);
         if (trace != null) {
-            trace.add(new Trace.Result(o.variable(), stored, outcome));
+            trace.add(new Trace.Result(o.variable(), stored, outcome, result));
         }
     }
 
