@@ -321,8 +321,7 @@ final class CertifyCommand implements Callable<Integer> {
         if (r.origin() != null) {
             r.origin().warnings().forEach(w -> out.println(TerminalText.visible(w)));
         }
-        out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
-                + r.basicLevel().reason() + ")");
+        out.println("Basic Level: " + r.basicLevel().sentence());
         if (r.origin() != null && r.origin().provenance() != null) {
             out.println("Run seed: " + r.origin().provenance().seed() + "; results digest: " + r.origin().digest());
         }
@@ -344,6 +343,9 @@ final class CertifyCommand implements Callable<Integer> {
         }
         if (!r.claims().notRealised().isEmpty()) {
             out.println("Claimed but not realised: " + TerminalText.visible(String.join(", ", r.claims().notRealised())));
+        }
+        if (!r.claims().notDetermined().isEmpty()) {
+            out.println("Claimed, not determined: " + TerminalText.visible(String.join(", ", r.claims().notDetermined())));
         }
         out.println("Reports: " + dir.resolve(ReportFiles.MARKDOWN) + ", " + ReportFiles.HTML + ", "
                 + ReportFiles.JSON + ", " + ReportFiles.JUNIT + ", " + Certification.RESULTS);

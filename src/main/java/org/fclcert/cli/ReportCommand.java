@@ -75,7 +75,7 @@ final class ReportCommand implements Callable<Integer> {
             PrintWriter o = spec.commandLine().getOut();
             o.println(report.summary().cases() + " cases (" + report.summary().passed() + " passed, "
                     + report.summary().skipped() + " skipped); Basic Level: "
-                    + (report.basicLevel().conformant() ? "conformant" : "not conformant"));
+                    + report.basicLevel().verdict());
             o.println("Reports written to " + dir);
             o.flush();
             err.flush();

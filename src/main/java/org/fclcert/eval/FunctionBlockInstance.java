@@ -672,7 +672,7 @@ public final class FunctionBlockInstance {
         slotErrors[o.slot()] = methodBound;
         double stored = store(o.slot(), result);
         if (trace != null) {
-            trace.add(new Trace.Result(o.variable(), stored, outcome));
+            trace.add(new Trace.Result(o.variable(), stored, outcome, result));
         }
     }
 

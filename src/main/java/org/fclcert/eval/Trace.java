@@ -57,8 +57,14 @@ public final class Trace {
         ASSIGNED
     }
 
-    /** The crisp value given to one variable, after conversion to its data type. */
-    public record Result(String variable, double value, Outcome outcome) {
+    /**
+     * The crisp value given to one variable, after conversion to its data type ({@code value}), and the value before
+     * it ({@code computed}: the defuzzified, DEFAULT or kept value, which an integer output rounds half away from zero).
+     */
+    public record Result(String variable, double value, Outcome outcome, double computed) {
+        public Result(String variable, double value, Outcome outcome) {
+            this(variable, value, outcome, value);
+        }
     }
 
     private final List<TermDegree> termDegrees = new ArrayList<>();

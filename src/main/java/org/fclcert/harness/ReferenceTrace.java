@@ -50,10 +50,21 @@ public record ReferenceTrace(int step, List<RuleDegree> rules, List<OutputValue>
      * accumulated degree), else the vertices of the set over the defuzzification interval, left to right.
      */
     public record OutputValue(String variable, double value, String outcome, boolean singletons,
-            List<List<Double>> set) {
+            List<List<Double>> set,
+            @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_NULL)
+            Double computed) {
         public OutputValue {
             Objects.requireNonNull(variable, "variable");
             set = set == null ? List.of() : set.stream().map(List::copyOf).toList();
+        }
+
+        public OutputValue(String variable, double value, String outcome, boolean singletons, List<List<Double>> set) {
+            this(variable, value, outcome, singletons, set, null);
+        }
+
+        /** True when the output's data type changed the value (an integer type rounds half away from zero). */
+        boolean converted() {
+            return computed != null && Double.isFinite(computed) && computed.doubleValue() != value;
         }
     }
 
@@ -72,7 +83,8 @@ public record ReferenceTrace(int step, List<RuleDegree> rules, List<OutputValue>
             Trace.AccumulatedSet set = t.accumulatedSet(r.variable()).orElse(null);
             outputs.add(new OutputValue(r.variable(), r.value(), r.outcome().name().toLowerCase(Locale.ROOT)
                     .replace('_', ' '), set != null && set.singletons(), set == null ? List.of()
-                    : set.breakpoints().stream().map(b -> List.of(b.u(), b.degree())).toList()));
+                    : set.breakpoints().stream().map(b -> List.of(b.u(), b.degree())).toList(),
+                    r.computed() != r.value() && Double.isFinite(r.computed()) ? r.computed() : null));
         }
         return new ReferenceTrace(step, rules, outputs);
     }
@@ -112,6 +124,12 @@ public record ReferenceTrace(int step, List<RuleDegree> rules, List<OutputValue>
     }
 
     private static String outcome(OutputValue o, boolean nothingFired) {
+        String line = outcomeBeforeConversion(o, nothingFired);
+        return o.converted() ? line + "; that is " + number(o.computed()) + ", rounded half away from zero to the"
+                + " output's integer type: " + o.variable() + " = " + number(o.value()) : line;
+    }
+
+    private static String outcomeBeforeConversion(OutputValue o, boolean nothingFired) {
         String none = nothingFired ? "no rule fired" : "no rule concluding " + o.variable() + " fired";
         return switch (o.outcome()) {
             case "default" -> none + " → DEFAULT applies: " + o.variable() + " = " + number(o.value());

@@ -78,9 +78,20 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
     /**
      * The corpus: its directory as given, the number of cases in it, the sha256 over the sorted case
      * files' bytes, and how many Basic Level cases (not flagged interpretation) it holds — the Basic
-     * verdict needs them all.
+     * verdict needs them all. {@code rowCases}: for each feature row, how many cases (not flagged
+     * interpretation) of the row's level or below name it in their {@code tests} — what that row's verdict needs
+     * to have run; empty in a header written before it existed.
      */
-    public record CorpusInfo(String dir, int cases, String sha256, int basicCases) {
+    public record CorpusInfo(String dir, int cases, String sha256, int basicCases,
+            @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_EMPTY)
+            Map<String, Integer> rowCases) {
+        public CorpusInfo {
+            rowCases = rowCases == null ? Map.of() : Map.copyOf(rowCases);
+        }
+
+        public CorpusInfo(String dir, int cases, String sha256, int basicCases) {
+            this(dir, cases, sha256, basicCases, Map.of());
+        }
     }
 
     /** The filters of the run and the cases they selected, in run order. */

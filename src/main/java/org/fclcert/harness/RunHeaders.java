@@ -31,9 +31,25 @@ public final class RunHeaders {
                 new RunHeader.Iut(info.name(), info.version(), info.command(), spec, classpath, info.claims(),
                         info.declaredLimits()),
                 new RunHeader.Toolkit(Toolkit.version(), rerun),
-                new RunHeader.CorpusInfo(corpusDir, all.size(), sha256, basic),
+                new RunHeader.CorpusInfo(corpusDir, all.size(), sha256, basic, rowCases(all)),
                 new RunHeader.Selection(filters.get(0), filters.get(1), filters.get(2),
                         selected.stream().map(RunCase::plan).toList()),
                 Instant.now().toString());
+    }
+
+    /** Per feature row, the cases of its level or below (not interpretation) whose {@code tests} name it. */
+    static java.util.Map<String, Integer> rowCases(List<RunCase> all) {
+        java.util.Map<String, Integer> rows = new java.util.TreeMap<>();
+        for (RunCase c : all) {
+            if (c.interpretation()) {
+                continue;
+            }
+            for (String t : c.tests()) {
+                org.fclcert.model.Feature.byId(t.toUpperCase(java.util.Locale.ROOT))
+                        .filter(f -> c.level().compareTo(f.level()) <= 0)
+                        .ifPresent(f -> rows.merge(f.id(), 1, Integer::sum));
+            }
+        }
+        return rows;
     }
 }

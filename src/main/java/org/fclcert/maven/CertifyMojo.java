@@ -29,6 +29,7 @@ import org.fclcert.orchestration.PresentAs;
 import org.fclcert.report.JunitReport;
 import org.fclcert.report.Report;
 import org.fclcert.report.ReportFiles;
+import org.fclcert.report.Tally;
 
 /**
  * Runs the conformance corpus against an implementation under test and writes the reports to
@@ -164,7 +165,8 @@ public class CertifyMojo extends AbstractMojo {
         } catch (java.io.IOException e) {
             throw new MojoExecutionException("cannot write " + surefire + ": " + e.getMessage(), e);
         }
-        // Surefire's summary, counted as the JUnit file counts (unclaimed features' cases skipped)
+        // the failures, then Surefire's summary: the blocks above and the counts below are one tally (Tally)
+        ProgressLog.failures(r, getLog());
         JunitReport.Counts counts = JunitReport.counts(r);
         String summary = counts.surefireLine() + " - " + r.iut().name() + " " + r.iut().version();
         if (counts.failures() + counts.errors() > 0) {
@@ -172,12 +174,28 @@ public class CertifyMojo extends AbstractMojo {
         } else {
             getLog().info(summary);
         }
-        getLog().info("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant ("
-                + r.basicLevel().reason() + ")"));
+        getLog().info(Tally.of(r).skippedSentence());
+        getLog().info("Basic Level: " + r.basicLevel().sentence());
+        if (!r.claims().notRealised().isEmpty()) {
+            getLog().info("Claimed but not realised: " + String.join(", ", r.claims().notRealised()));
+        }
+        if (!r.claims().notDetermined().isEmpty()) {
+            getLog().info("Claimed, not determined: " + String.join(", ", r.claims().notDetermined()));
+        }
         if (r.semantic() != null) {
             getLog().info(r.semantic().sentence());
         }
+        if (!r.causes().isEmpty()) {
+            getLog().info("Failures by cause:");
+        }
         r.causes().stream().limit(5).forEach(c -> getLog().info("  " + c.sentence()));
+        if (r.causes().size() > 5) {
+            getLog().info("  … and " + (r.causes().size() - 5) + " more causes (report.md, \"Failures by cause\")");
+        }
+        getLog().info(r.dataCheckList().isEmpty()
+                ? "Table 11 (data check list): not measured (-Dfclcert.probe=true or <probe>true</probe> measures it,"
+                        + " within probeBudgetSeconds)"
+                : "Table 11 (data check list): measured, " + r.dataCheckList().size() + " rows (report.md)");
         getLog().info("Reports: " + outcome.directory().resolve(ReportFiles.MARKDOWN) + ", "
                 + surefire);
         if (outcome.stopped() != null) {

@@ -40,7 +40,7 @@ final class ReportGate {
         List<String> problems = new ArrayList<>();
         if (failOn != FailOn.NONE && failOn != FailOn.ANY && !report.basicLevel().conformant()) {
             // the reason names the cases (the first ten): listing them again would print the list twice
-            problems.add("Basic Level not conformant: " + report.basicLevel().reason() + table8Rows(report));
+            problems.add("Basic Level " + report.basicLevel().sentence() + table8Rows(report));
         }
         if (failOn == FailOn.CLAIMED) {
             List<String> claimed = claims.isEmpty() ? report.iut().claims() : claims;
@@ -84,8 +84,8 @@ final class ReportGate {
     /** The Table 8 rows that are not realised, named, so that a Basic Level failure says which rows keep it out. */
     private static String table8Rows(Report report) {
         List<String> rows = report.features().stream()
-                .filter(f -> f.table() == 8 && f.status() != FeatureStatus.REALISED)
-                .map(f -> f.id() + " (" + f.description() + ": " + f.status().label() + ")").toList();
+                .filter(f -> f.table() == 8 && f.status() != FeatureStatus.REALISED && f.status() != FeatureStatus.NOT_TESTED)
+                .map(f -> f.id() + " (" + f.description() + ": " + f.sentence() + ")").toList();
         return rows.isEmpty() ? "" : "; Table 8 rows not realised: " + String.join(", ", rows);
     }
 }

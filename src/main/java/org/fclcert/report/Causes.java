@@ -15,103 +15,139 @@ import org.fclcert.harness.CaseStatus;
 import org.fclcert.model.Feature;
 
 /**
- * Groups the cases that did not pass by their cause, so that a report says "47 cases: one statement per line"
- * instead of listing 47 rejections. A cause is derived, in this order, from what the implementation said and
- * did: for a program it rejected, its message and the program line the message points at (matched against a
- * short list of known reasons, else the message with its case-specific parts removed); for a wrong value, the
- * case's feature and the kind of deviation (NaN, small as from sampling, large); for an accepted invalid
- * program, an evaluation error, a crash or a timeout, that outcome and its normalised message. Rules are
- * documented in {@code docs/report-format.md}, "Causes".
+ * Groups the cases that did not pass by their cause, so that a report says "30 cases: rejected at load: 'RANGE' is
+ * not supported at the Basic Level" instead of listing 30 rejections. The evidence is what the implementation said
+ * and did:
+ * <ul>
+ * <li>a program it rejected, an evaluation it refused, a crash: grouped by its message, clustered by what is
+ * particular to one case removed ({@link MessageCluster}: positions, numbers, the program's own names, the statement
+ * it quotes, letter case), and shown verbatim as the first case of the group said it;</li>
+ * <li>a wrong value: by the feature the failing step isolates ({@link Attribution}) and the kind of deviation (NaN,
+ * small as from sampling, large);</li>
+ * <li>an accepted invalid program, a timeout, a protocol fault: that outcome.</li>
+ * </ul>
+ * Only a rejection with no message at all gets fclcert's guess at the construct on the line it points at, marked as
+ * a hint. Rules are documented in {@code docs/report-format.md}, "Causes".
  */
 public final class Causes {
     /** A relative error up to this is "small": the size of the error of a sampled defuzzification. */
     static final double SMALL = 0.01;
+    /** What a group shows of the message it quotes. */
+    static final int SHOWN = 200;
 
     private static final Pattern HARNESS_PREFIX = Pattern.compile(
             "^rejected a program the standard accepts(?: at line (\\d+))?: ");
     private static final Pattern ANTLR_POSITION = Pattern.compile("\\bline (\\d+):\\d+ ");
-    private static final Pattern QUOTED = Pattern.compile("\\bin line: (.*)$");
     private static final Pattern WRONG_STEP = Pattern.compile("^step \\d+ of \\d+: ");
 
     private Causes() {}
 
-    /** One cause and the cases it explains; {@code kind} is the outcome it belongs to. */
+    /**
+     * One cause and the cases it explains; {@code kind} is the outcome it belongs to, {@code cause} what the
+     * implementation said (verbatim, from the first case of the group) or, for wrong values, the isolated feature and
+     * the kind of deviation; {@code example} the first case's message.
+     */
     public record Cause(String kind, String cause, int count, List<String> cases, String example) {
         public Cause {
             cases = List.copyOf(cases);
         }
 
-        /** {@code 47 cases: rejected at load: one statement per line}. */
+        /** {@code 30 cases: rejected at load: 'RANGE' is not supported at the Basic Level}. */
         public String sentence() {
             return count + (count == 1 ? " case: " : " cases: ") + kind + ": " + cause;
         }
     }
 
+    /** How one case is filed: its outcome, the key that clusters it, and what its group shows. */
+    record Label(String kind, String key, String shown) {
+    }
+
     /** The causes of every failed or errored case (interpretation cases excluded), the largest group first. */
     public static List<Cause> of(List<CaseResult> cases) {
         Map<String, List<CaseResult>> groups = new LinkedHashMap<>();
-        Map<String, String[]> labels = new LinkedHashMap<>();
+        Map<String, Label> labels = new LinkedHashMap<>();
         for (CaseResult c : cases) {
             if (c.interpretation() || (c.status() != CaseStatus.FAILED && c.status() != CaseStatus.ERRORED)) {
                 continue;
             }
-            String[] label = classify(c);
-            String key = label[0] + "\u0000" + label[1];
+            Label label = label(c);
+            String key = label.kind() + "\u0000" + label.key();
             groups.computeIfAbsent(key, k -> new ArrayList<>()).add(c);
             labels.putIfAbsent(key, label);
         }
         List<Cause> out = new ArrayList<>();
-        groups.forEach((key, members) -> out.add(new Cause(labels.get(key)[0], labels.get(key)[1], members.size(),
-                members.stream().map(CaseResult::id).toList(), String.valueOf(members.get(0).message()))));
+        groups.forEach((key, members) -> out.add(new Cause(labels.get(key).kind(), labels.get(key).shown(),
+                members.size(), members.stream().map(CaseResult::id).toList(), String.valueOf(members.get(0).message()))));
         out.sort(Comparator.comparingInt(Cause::count).reversed().thenComparing(Cause::kind).thenComparing(Cause::cause));
         return out;
     }
 
-    /** The cause of a positive case's rejection at load; empty when the case was not rejected at load. */
+    /** The cause of a positive case's rejection at load (what it said); empty when the case was not rejected at load. */
     public static Optional<String> rejectionCause(CaseResult c) {
         if (c.status() != CaseStatus.FAILED || c.message() == null || !HARNESS_PREFIX.matcher(c.message()).find()) {
             return Optional.empty();
         }
-        return Optional.of(classify(c)[1]);
+        return Optional.of(label(c).shown());
     }
 
-    /** {kind, cause} of one case. */
+    /** {kind, what the group shows} of one case. */
     static String[] classify(CaseResult c) {
+        Label label = label(c);
+        return new String[] {label.kind(), label.shown()};
+    }
+
+    static Label label(CaseResult c) {
         String message = c.message() == null ? "" : c.message();
+        String program = CaseFacts.program(c);
         if (c.status() == CaseStatus.ERRORED) {
             if (message.contains("the implementation timed out")) {
-                return new String[] {"errored", "timed out"};
+                return fixed("errored", "timed out");
             }
             if (message.contains("the implementation broke the protocol")) {
-                return new String[] {"errored", "broke the protocol"};
+                return fixed("errored", "broke the protocol");
             }
             if (message.contains("the implementation was given up")) {
-                return new String[] {"errored", "given up (restart budget exhausted)"};
+                return fixed("errored", "given up (restart budget exhausted)");
             }
-            return new String[] {"errored", crash(message)};
+            String crash = crash(message);
+            return new Label("errored", MessageCluster.key(crash, program), crash);
         }
         Matcher rejected = HARNESS_PREFIX.matcher(message);
         if (rejected.find()) {
-            String said = message.substring(rejected.end());
-            // the statement as the library quotes it (fuzzylite: "in line: x : REAL := 1.0"), else the program line
-            Matcher quoted = QUOTED.matcher(said);
-            String statement = quoted.find() ? quoted.group(1) : lineOf(rejected.group(1), said).text(CaseFacts.program(c));
-            return new String[] {"rejected at load", rejection(said, statement)};
+            String said = message.substring(rejected.end()).strip();
+            if (said.isEmpty()) {
+                // the implementation said nothing: fclcert's guess at the construct, marked as one
+                String statement = lineOf(rejected.group(1), said).text(program);
+                String hint = hint(statement).map(h -> "no message; hint: the line it points at has " + h)
+                        .orElse("no message");
+                return fixed("rejected at load", hint);
+            }
+            return said(said, program, "rejected at load");
         }
         if (message.startsWith("accepted a program the standard rejects")) {
-            return new String[] {"accepted an invalid program", "no error reported where the standard requires one"};
+            return fixed("accepted an invalid program", "no error reported where the standard requires one");
         }
         String step = WRONG_STEP.matcher(message).replaceFirst("");
         if (step.startsWith("the implementation reported an evaluation error")
                 || step.startsWith("the implementation refused")) {
             String said = step.replaceFirst("^[^:]*: ", "").replaceFirst("^the IUT reported an error on '\\w+': ", "");
-            return new String[] {"refused to evaluate", normalise(said.split("[\\t\\n]", 2)[0])};
+            return said(said.split("[\\t\\n]", 2)[0], program, "refused to evaluate");
         }
         Optional<String> deviation = deviation(c);
         if (deviation.isPresent()) {
-            return new String[] {"wrong value", feature(c) + ": " + deviation.get()};
+            return fixed("wrong value", feature(c) + ": " + deviation.get());
         }
-        return new String[] {"failed", normalise(message)};
+        return said(message, program, "failed");
+    }
+
+    private static Label fixed(String kind, String cause) {
+        return new Label(kind, cause, cause);
+    }
+
+    /** What the implementation said: clustered by {@link MessageCluster}, shown as this case has it. */
+    private static Label said(String said, String program, String kind) {
+        String shown = said.length() <= SHOWN ? said : said.substring(0, SHOWN) + "…";
+        return new Label(kind, MessageCluster.key(said, program), shown);
     }
 
     /** The program line a rejection points at, from the harness's "at line N" or ANTLR's "line N:C". */
@@ -133,53 +169,37 @@ public final class Causes {
         return new OptionalLine(m.find() ? Integer.parseInt(m.group(1)) : 0);
     }
 
-    private record Rule(Pattern pattern, boolean onStatement, Function<Matcher, String> cause) {
-    }
-
-    private static Rule message(String regex, Function<Matcher, String> cause) {
-        return new Rule(Pattern.compile(regex), false, cause);
+    private record Rule(Pattern pattern, Function<Matcher, String> cause) {
     }
 
     private static Rule statement(String regex, Function<Matcher, String> cause) {
-        return new Rule(Pattern.compile(regex, Pattern.CASE_INSENSITIVE), true, cause);
+        return new Rule(Pattern.compile(regex, Pattern.CASE_INSENSITIVE), cause);
     }
 
-    /** Known reasons, first match wins: what the message says, or what the statement it points at is. */
+    /** Constructs a statement may have that some implementations do not read, first match wins. */
     private static final List<Rule> RULES = List.of(
-            message("<\\(\\*>|unknown block definition <\\(\\*", m -> "`(* *)` comments"),
-            message("(?:Defuzzifier|constructor) <(\\w+)> not registered", m -> "`" + m.group(1) + "` spelling of METHOD"),
-            message("unexpected token <METHOD:>", m -> "`METHOD:` without a blank before the colon"),
-            message("expected <END_\\w+> before <", m -> "one statement per line"),
-            message("in line: \\w+\\s*:\\s*\\w+\\s+\\w+\\s*:", m -> "one statement per line"),
-            message("'MoM'", m -> "`MoM` (mean of maximum)"),
-            message("no viable alternative at character '_'", m -> "a name or number with `_`"),
-            message("expecting TYPE_REAL|mismatched input '(\\w*INT|LREAL)'", m -> "data types other than REAL"),
-            message("unknown block definition <VAR>|mismatched input 'VAR'", m -> "`VAR` (local variables)"),
-            message("unknown block definition <(\\w*[a-z]\\w*)>", m -> "keyword in lower or mixed case (`" + m.group(1) + "`)"),
-            message("1_000", m -> "digit separators (`1_000`)"),
-            statement("^RANGE\\s*\\(", m -> "`RANGE (a .. b)` without `:=`"),
+            statement("^RANGE\\s*\\(", m -> "`RANGE (a .. b)`"),
             statement("^\\w+\\s*,", m -> "several variables in one declaration"),
-            statement("^\\w+\\s*:\\s*\\w+\\s*:=", m -> "declared initial value"),
-            statement("^\\w+\\s*:\\s*\\w+\\s+\\w+\\s*:", m -> "one statement per line"),
-            statement("^\\w+\\s*:\\s*(?!REAL\\b)[A-Z]+\\s*$", m -> "data types other than REAL"),
+            statement("^\\w+\\s*:\\s*\\w+\\s*:=", m -> "a declared initial value"),
+            statement("^\\w+\\s*:\\s*\\w+\\s+\\w+\\s*:", m -> "several statements on one line"),
+            statement("^\\w+\\s*:\\s*(?!REAL\\b)[A-Z]+\\s*$", m -> "a data type other than REAL"),
             statement("\\bTHEN\\b.*,", m -> "several subconclusions separated by commas"),
-            message("from <([A-Za-z_]\\w*)> to scalar|For input string: \"([A-Za-z_]\\w*)\"|Cannot find variable: '(\\w+)'",
-                    m -> "a variable where a number is expected (term points, degrees)"),
-            message("Variable (\\w+) does not exist|does not contain (?:input|output) variable <(\\w+)>",
-                    m -> "a variable it does not know (names are case-sensitive to it)"),
-            // last: a comment on the line is the cause only when nothing else on it is
-            new Rule(Pattern.compile("\\(\\*"), true, m -> "`(* *)` comments"));
+            statement("^VAR\\s*$", m -> "`VAR` (local variables)"),
+            statement("\\bMoM\\b", m -> "`MoM` (mean of maximum)"),
+            // last: a comment on the line is the construct only when nothing else on it is
+            statement("\\(\\*", m -> "a `(* *)` comment"));
 
-    static String rejection(String said, String statement) {
+    /** fclcert's guess at the construct of a statement an implementation rejected without a word, if it has one. */
+    static Optional<String> hint(String statement) {
         String code = statement.replaceAll("\\(\\*.*?(\\*\\)|$)", " ").strip();
         for (Rule rule : RULES) {
-            boolean comment = rule.onStatement() && rule.pattern().pattern().equals("\\(\\*");
-            Matcher m = rule.pattern().matcher(!rule.onStatement() ? said : comment ? statement : code);
+            boolean comment = rule.pattern().pattern().equals("\\(\\*");
+            Matcher m = rule.pattern().matcher(comment ? statement : code);
             if (m.find()) {
-                return rule.cause().apply(m);
+                return Optional.of(rule.cause().apply(m));
             }
         }
-        return normalise(said);
+        return Optional.empty();
     }
 
     /** The message without what is particular to one case: positions, quoted statements, numbers. */
@@ -206,14 +226,16 @@ public final class Causes {
         return "crashed: " + normalise(message.replaceFirst("^[^:]*: ", ""));
     }
 
-    /** The case's own feature: its id without the number (B-COGS-001 tests B-COGS), else its first tested feature. */
+    /**
+     * The feature a wrong value is filed under: the one row its failing step isolates ({@link Attribution}); among
+     * several, the case's own (its id without the number: B-COGS-001 tests B-COGS), else the first.
+     */
     static String feature(CaseResult c) {
-        String id = c.id().replaceFirst("-\\d+$", "");
-        Optional<Feature> f = Feature.byId(id.toUpperCase(Locale.ROOT));
-        if (f.isEmpty() && !c.tests().isEmpty()) {
-            f = Feature.byId(c.tests().get(0).toUpperCase(Locale.ROOT));
-        }
-        return f.map(x -> x.id() + " (" + x.description() + ")").orElse(id);
+        List<String> rows = Attribution.rows(c);
+        String own = c.id().replaceFirst("-\\d+$", "").toUpperCase(Locale.ROOT);
+        String id = rows.size() == 1 ? rows.get(0) : rows.contains(own) ? own : !rows.isEmpty() ? rows.get(0)
+                : Feature.byId(own).isPresent() || c.tests().isEmpty() ? own : c.tests().get(0).toUpperCase(Locale.ROOT);
+        return Feature.byId(id).map(x -> x.id() + " (" + x.description() + ")").orElse(id);
     }
 
     /** NaN, a small (relative error ≤ 1 %) or a large deviation, on the first wrong output of the case. */

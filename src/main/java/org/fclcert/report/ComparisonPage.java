@@ -120,7 +120,8 @@ public final class ComparisonPage {
         }));
         rows.add(row("Basic Level (Table 8)", e -> {
             Report.BasicLevel b = e.report().basicLevel();
-            return b.conformant() ? "conformant" : "**not conformant** (" + b.passed() + " of " + b.required()
+            return b.conformant() ? "conformant" : b.notDetermined() ? "not determined (" + b.run() + " of "
+                    + b.required() + " run)" : "**not conformant** (" + b.passed() + " of " + b.required()
                     + " Basic cases passed)";
         }));
         rows.add(row("Standard Extensions realised (Table 9)", e -> realised(e.report(), 9)));
@@ -238,7 +239,7 @@ public final class ComparisonPage {
     }
 
     private static String verdict(Report.FeatureRow f) {
-        String language = mark(f.status()) + " " + f.passed() + "/" + f.cases().size();
+        String language = mark(f.status()) + " " + Texts.passedOfCounted(f);
         if (f.semantic() == null) {
             return language;
         }
@@ -247,7 +248,8 @@ public final class ComparisonPage {
     }
 
     private static String mark(FeatureStatus s) {
-        return s == FeatureStatus.REALISED || s == FeatureStatus.NOT_TESTED ? s.label() : "**" + s.label() + "**";
+        return s == FeatureStatus.REALISED || s == FeatureStatus.NOT_TESTED || s == FeatureStatus.NOT_DETERMINED
+                ? s.label() : "**" + s.label() + "**";
     }
 
     /** Positive cases on which some implementation computed something else than the standard, or broke down. */

@@ -38,12 +38,12 @@ public enum FailOn {
     public String explain(Report report) {
         return switch (this) {
             case NONE -> "";
-            case BASIC -> "Basic Level not conformant: " + report.basicLevel().reason();
+            case BASIC -> "Basic Level " + report.basicLevel().sentence();
             case CLAIMED -> report.basicLevel().conformant()
                     ? "claimed but not realised: " + String.join(", ", report.claims().notRealised())
                             + (report.claims().unknown().isEmpty() ? ""
                                     : "; unknown claims: " + String.join(", ", report.claims().unknown()))
-                    : "Basic Level not conformant: " + report.basicLevel().reason();
+                    : "Basic Level " + report.basicLevel().sentence();
             case ANY -> report.summary().failed() + " case(s) failed, " + report.summary().errored()
                     + " errored";
         };

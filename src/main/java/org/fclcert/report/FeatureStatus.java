@@ -4,12 +4,16 @@ import com.fasterxml.jackson.annotation.JsonCreator;
 import com.fasterxml.jackson.annotation.JsonValue;
 import java.util.Locale;
 
-/** Verdict on one feature row: all its cases passed, some did, none did, or no case of it was run. */
+/**
+ * Verdict on one feature row: all its cases passed, some did, none did, not all the cases it needs were run (or
+ * those that ran failed for other rows' reasons), or no case of it was run.
+ */
 public enum FeatureStatus {
     REALISED,
     PARTIAL,
     NOT_REALISED,
-    NOT_TESTED;
+    NOT_TESTED,
+    NOT_DETERMINED;
 
     @JsonValue
     public String word() {

@@ -30,7 +30,7 @@ public final class HtmlReport {
             h1{font-size:1.6em;margin:0 0 4px}h2{margin-top:36px;border-bottom:1px solid #d0d5db;padding-bottom:4px}
             .meta{color:#555;font-size:.9em}.meta code{background:#eceff3;padding:1px 4px;border-radius:3px}
             .verdict{margin:18px 0;padding:14px 18px;border-radius:8px;font-size:1.15em;font-weight:600}
-            .verdict.ok{background:#e3f5e6;border:1px solid #7cc68a}.verdict.no{background:#fdeaea;border:1px solid #e39b9b}
+            .verdict.ok{background:#e3f5e6;border:1px solid #7cc68a}.verdict.no{background:#fdeaea;border:1px solid #e39b9b}.verdict.open{background:#eceff3;border:1px solid #b5bcc5}
             .counts span{display:inline-block;margin-right:14px}
             table{border-collapse:collapse;width:100%;background:#fff;margin:8px 0 16px}
             th,td{border:1px solid #dde1e6;padding:6px 9px;text-align:left;vertical-align:top}
@@ -38,7 +38,7 @@ public final class HtmlReport {
             .st{font-weight:600;white-space:nowrap;border-radius:4px;padding:1px 7px}
             .realised,.passed{background:#dff3e3;color:#185c26}.partial{background:#fff1cc;color:#6d5200}
             .not-realised,.failed{background:#fadddd;color:#8a1c1c}.errored{background:#f3dcf5;color:#6a1b73}
-            .not-tested,.skipped,.unsupported,.not-run{background:#eceff3;color:#555}
+            .not-tested,.not-determined,.skipped,.unsupported,.not-run{background:#eceff3;color:#555}
             .filters{background:#fff;border:1px solid #dde1e6;border-radius:6px;padding:10px 12px;margin:10px 0}
             .filters label{margin-right:14px;white-space:nowrap}
             details{background:#fff;border:1px solid #dde1e6;border-radius:6px;margin:6px 0;padding:6px 10px}
@@ -106,8 +106,8 @@ public final class HtmlReport {
                     .append("</div>\n"));
         }
         boolean ok = r.basicLevel().conformant();
-        out.append("<div class=\"verdict ").append(ok ? "ok" : "no").append("\">Basic Level: ")
-                .append(ok ? "conformant" : "not conformant").append("<div class=\"small\">")
+        out.append("<div class=\"verdict ").append(ok ? "ok" : r.basicLevel().notDetermined() ? "open" : "no")
+                .append("\">Basic Level: ").append(r.basicLevel().verdict()).append("<div class=\"small\">")
                 .append(Texts.html(r.basicLevel().reason())).append("</div></div>\n");
         if (r.origin() != null) {
             out.append("<details><summary>Provenance</summary><ul class=\"small\">");
@@ -118,6 +118,8 @@ public final class HtmlReport {
         out.append("<p class=\"counts\"><span><b>").append(s.cases()).append("</b> cases</span>")
                 .append(count("passed", s.passed())).append(count("failed", s.failed()))
                 .append(count("errored", s.errored())).append(count("skipped", s.skipped())).append("</p>\n");
+        out.append("<p class=\"small tally\">Counted as in junit.xml and the Maven log: ")
+                .append(Texts.html(Tally.of(r).sentence())).append("</p>\n");
         if (r.rejections().rejected() > 0) {
             out.append("<p>Negative cases: ").append(Texts.html(r.rejections().sentence()))
                     .append(r.rejections().doubtful() ? " <span class=\"small\">(" + Texts.html(Report.REJECTION_CAVEAT)
@@ -127,7 +129,7 @@ public final class HtmlReport {
             out.append("<p><b>Incomplete run:</b> some selected cases were not run (shown as skipped).</p>\n");
         }
         if (!r.run().selection().whole()) {
-            out.append("<p><b>Partial selection:</b> verdicts cover only the cases run.</p>\n");
+            out.append("<p><b>Partial selection:</b> a verdict whose cases did not all run is not determined.</p>\n");
         }
     }
 
@@ -174,9 +176,14 @@ public final class HtmlReport {
         for (Report.FeatureRow f : rows) {
             out.append("<tr><td>").append(Texts.html(f.element())).append("</td><td><b>").append(f.id())
                     .append("</b> ").append(Texts.html(f.description())).append("</td><td><span class=\"st ")
-                    .append(f.status().word()).append("\">").append(f.status().label()).append("</span></td><td>")
-                    .append(f.passed()).append(" / ").append(f.cases().size()).append("</td><td>")
-                    .append(links(f.notPassed())).append("</td>");
+                    .append(f.status().word()).append("\">").append(f.status().label())
+                    .append(Texts.html(Texts.runOfRequired(f))).append("</span></td><td>")
+                    .append(f.passed()).append(" / ").append(f.passed() + f.failed() + f.errored()).append("</td><td>")
+                    .append(links(f.notPassed()))
+                    .append(f.notCounted().isEmpty() ? "" : (f.notPassed().isEmpty() ? "" : "; ")
+                            + "<span class=\"small\">not counted: " + Texts.html(String.join(", ", f.notCounted()))
+                            + "</span>")
+                    .append("</td>");
             if (semantic && f.semantic() != null) {
                 Report.Semantic sem = f.semantic();
                 out.append("<td><span class=\"st ").append(sem.status().word()).append("\">")
@@ -228,6 +235,9 @@ public final class HtmlReport {
             out.append("Claimed: ").append(Texts.html(String.join(", ", c.claimed()))).append("<br>Confirmed: ")
                     .append(Texts.html(String.join(", ", c.confirmed()))).append("<br><b>Claimed but not realised:</b> ")
                     .append(c.notRealised().isEmpty() ? "none" : Texts.html(String.join(", ", c.notRealised())));
+            if (!c.notDetermined().isEmpty()) {
+                out.append("<br>Claimed, not determined: ").append(Texts.html(String.join(", ", c.notDetermined())));
+            }
             if (!c.untested().isEmpty()) {
                 out.append("<br>Claimed, no case in this run: ").append(Texts.html(String.join(", ", c.untested())));
             }

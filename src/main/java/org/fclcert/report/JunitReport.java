@@ -66,23 +66,11 @@ public final class JunitReport {
     }
 
     public static Counts counts(Report r) {
-        int failures = 0;
-        int errors = 0;
-        int skipped = 0;
-        for (CaseResult c : r.cases()) {
-            CaseStatus status = unclaimed(r, c) != null ? CaseStatus.SKIPPED : c.status();
-            switch (status) {
-                case FAILED -> failures++;
-                case ERRORED -> errors++;
-                case SKIPPED -> skipped++;
-                case PASSED -> {
-                }
-            }
-        }
+        Tally t = Tally.of(r);
         // a presented run's second testcase per positive case counts too, as it does in the file
         Report.SemanticAxis sem = r.semantic() != null ? r.semantic() : new Report.SemanticAxis("", 0, 0, 0, 0, 0, 0);
-        return new Counts(r.cases().size() + sem.cases(), failures + sem.failed(), errors + sem.errored(),
-                skipped + sem.skipped() + sem.notPresentable());
+        return new Counts(t.cases() + sem.cases(), t.failures() + sem.failed(), t.errors() + sem.errored(),
+                t.unclaimed() + t.notRun() + sem.skipped() + sem.notPresentable());
     }
 
     /** The JUnit class of a case: its feature row, or for a negative case {@code fclcert.<level>.negative}. */
@@ -116,6 +104,13 @@ public final class JunitReport {
         property(x, "toolkit.version", r.toolkit().version());
         property(x, "corpus.sha256", r.corpus().sha256());
         property(x, "basicLevel.conformant", String.valueOf(r.basicLevel().conformant()));
+        property(x, "basicLevel.verdict", r.basicLevel().verdict());
+        Tally t = Tally.of(r);
+        property(x, "fclcert.passed", String.valueOf(t.passed()));
+        property(x, "fclcert.failures", String.valueOf(t.failures()));
+        property(x, "fclcert.errors", String.valueOf(t.errors()));
+        property(x, "fclcert.unclaimed", String.valueOf(t.unclaimed()));
+        property(x, "fclcert.notRun", String.valueOf(t.notRun()));
         if (r.origin() != null) {
             if (r.origin().provenance() != null) {
                 property(x, "run.seed", r.origin().provenance().seed());

@@ -68,20 +68,22 @@ public final class MarkdownReport {
         Report.Summary s = r.summary();
         line("- Cases run: " + s.cases() + ": " + s.passed() + " passed, " + s.failed() + " failed, " + s.errored()
                 + " errored, " + s.skipped() + " skipped");
+        line("- Counted as in junit.xml and the Maven log: " + Tally.of(r).sentence());
         if (r.rejections().rejected() > 0) {
             line("- Negative cases: " + r.rejections().sentence()
                     + (r.rejections().doubtful() ? " (" + Report.REJECTION_CAVEAT + ")" : ""));
         }
         if (!r.run().selection().whole()) {
-            line("- Selection: " + Texts.cell(selection()) + " (a partial run: verdicts cover only the cases run)");
+            line("- Selection: " + Texts.cell(selection()) + " (a partial run: a verdict whose cases did not all run is not determined)");
         }
         if (!r.run().complete()) {
             line("- **Incomplete run**: some selected cases were not run; they are reported as skipped.");
         }
         r.run().problems().forEach(p -> line("- Results file problem: " + Texts.cell(p)));
         line("");
-        line("**Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "NOT conformant") + "** ("
-                + Texts.cell(r.basicLevel().reason()) + ").");
+        Report.BasicLevel b = r.basicLevel();
+        line("**Basic Level: " + (Report.BasicLevel.NOT_CONFORMANT.equals(b.verdict()) ? "NOT conformant" : b.verdict())
+                + "** (" + Texts.cell(b.reason()) + ").");
         line("");
         if (r.origin() != null) {
             line("Provenance:");
@@ -180,14 +182,15 @@ public final class MarkdownReport {
         line("| --- | --- | --- | --- | --- |");
         for (Report.FeatureRow f : rows) {
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
-                    + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
-                    + String.join(", ", f.notPassed()) + " |");
+                    + verdict(f.status()) + Texts.runOfRequired(f) + " | " + Texts.passedOfCounted(f) + " | "
+                    + Texts.cell(Texts.notPassedText(f)) + " |");
         }
         line("");
     }
 
     private static String verdict(FeatureStatus status) {
-        return status == FeatureStatus.REALISED || status == FeatureStatus.NOT_TESTED ? status.label()
+        return status == FeatureStatus.REALISED || status == FeatureStatus.NOT_TESTED
+                || status == FeatureStatus.NOT_DETERMINED ? status.label()
                 : "**" + status.label() + "**";
     }
 
@@ -200,8 +203,8 @@ public final class MarkdownReport {
         for (Report.FeatureRow f : rows) {
             Report.Semantic sem = f.semantic();
             line("| " + Texts.cell(f.element()) + " | " + f.id() + ": " + Texts.cell(f.description()) + " | "
-                    + verdict(f.status()) + " | " + f.passed() + "/" + f.cases().size() + " | "
-                    + String.join(", ", f.notPassed()) + " | "
+                    + verdict(f.status()) + Texts.runOfRequired(f) + " | " + Texts.passedOfCounted(f) + " | "
+                    + Texts.cell(Texts.notPassedText(f)) + " | "
                     + (sem == null ? "" : verdict(sem.status()) + " | " + sem.passed() + "/" + sem.total() + " | "
                             + String.join(", ", sem.notPassed()) + " | " + sem.notPresentable())
                     + " |");
@@ -255,6 +258,9 @@ public final class MarkdownReport {
             line("- Claimed: " + Texts.cell(String.join(", ", c.claimed())));
             line("- Confirmed: " + none(c.confirmed()));
             line("- **Claimed but not realised**: " + none(c.notRealised()));
+            if (!c.notDetermined().isEmpty()) {
+                line("- Claimed, not determined: " + String.join(", ", c.notDetermined()));
+            }
             if (!c.untested().isEmpty()) {
                 line("- Claimed, no case in this run: " + String.join(", ", c.untested()));
             }

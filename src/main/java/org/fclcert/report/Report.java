@@ -119,9 +119,35 @@ public record Report(
 
     /**
      * Clause 6.1 b): conformant only when every Basic Level case of the corpus (not flagged interpretation)
-     * was run and passed. {@code required} is that number in the corpus, {@code run} how many were run.
+     * was run and passed. {@code required} is that number in the corpus, {@code run} how many were run (a case the
+     * run never reached is not run). {@code verdict}: {@value #CONFORMANT}, {@value #NOT_CONFORMANT} (a Basic
+     * case that ran did not pass) or {@value #NOT_DETERMINED} (none that ran failed, but not all ran).
      */
-    public record BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
+    public record BasicLevel(boolean conformant, int required, int run, int passed, String reason, String verdict) {
+        public static final String CONFORMANT = "conformant";
+        public static final String NOT_CONFORMANT = "not conformant";
+        public static final String NOT_DETERMINED = "not determined";
+
+        public BasicLevel {
+            if (verdict == null) {   // a report.json written before the field existed
+                verdict = conformant ? CONFORMANT : passed < run ? NOT_CONFORMANT : NOT_DETERMINED;
+            }
+        }
+
+        public BasicLevel(boolean conformant, int required, int run, int passed, String reason) {
+            this(conformant, required, run, passed, reason, null);
+        }
+
+        /** True when the run cannot say whether the implementation is conformant: no failure, not every case run. */
+        @com.fasterxml.jackson.annotation.JsonIgnore
+        public boolean notDetermined() {
+            return NOT_DETERMINED.equals(verdict);
+        }
+
+        /** {@code not determined (1 of 92 run)}, {@code conformant (all 92 Basic Level cases passed)}: for every front end. */
+        public String sentence() {
+            return verdict + " (" + reason + ")";
+        }
     }
 
     /**
@@ -132,10 +158,20 @@ public record Report(
      */
     public record FeatureRow(String id, int table, String level, String element, String description,
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
-            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) Semantic semantic) {
+            List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) Semantic semantic,
+            int required, int run, @JsonInclude(JsonInclude.Include.NON_EMPTY) List<String> notCounted) {
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
+            notCounted = notCounted == null ? List.of() : List.copyOf(notCounted);
+        }
+
+        /** A row without the counts of what its verdict needs (a report.json written before they existed). */
+        public FeatureRow(String id, int table, String level, String element, String description,
+                FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
+                List<String> notPassed, Semantic semantic) {
+            this(id, table, level, element, description, status, passed, failed, errored, skipped, cases, notPassed,
+                    semantic, 0, 0, List.of());
         }
 
         /** A row with the language verdict only. */
@@ -143,7 +179,31 @@ public record Report(
                 FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
                 List<String> notPassed) {
             this(id, table, level, element, description, status, passed, failed, errored, skipped, cases, notPassed,
-                    null);
+                    null, 0, 0, List.of());
+        }
+
+        /**
+         * The row's verdict in words, naming its cases: {@code partial (2 of 3 passed; not passed: E-X-001)},
+         * {@code not determined (1 of 6 run)}, with the cases whose failure counts against another row.
+         */
+        public String sentence() {
+            StringBuilder s = new StringBuilder(status.label());
+            List<String> parts = new java.util.ArrayList<>();
+            int counted = passed + failed + errored;
+            if (status == FeatureStatus.NOT_DETERMINED || status == FeatureStatus.NOT_TESTED) {
+                if (required > 0) {
+                    parts.add(run + " of " + required + " run");
+                }
+            } else if (counted > 0) {
+                parts.add(passed + " of " + counted + " passed");
+            }
+            if (!notPassed.isEmpty()) {
+                parts.add("not passed: " + String.join(", ", notPassed));
+            }
+            if (!notCounted.isEmpty()) {
+                parts.add("not counted: " + String.join(", ", notCounted));
+            }
+            return parts.isEmpty() ? s.toString() : s.append(" (").append(String.join("; ", parts)).append(')').toString();
         }
     }
 
@@ -182,10 +242,11 @@ public record Report(
      * The implementation's claims (feature ids from {@code hello}) against the measurements: {@code confirmed}
      * realised as claimed, {@code notRealised} claimed but partial or not realised (with the row's status),
      * {@code untested} claimed but without a case in this run, {@code unknown} not a feature id of the
-     * catalogue, {@code unclaimed} realised Extension or Open Level features the implementation did not claim.
+     * catalogue, {@code unclaimed} realised Extension or Open Level features the implementation did not claim,
+     * {@code notDetermined} claimed rows whose cases did not all run ({@code "E-COG (1 of 6 run)"}).
      */
     public record Claims(List<String> claimed, List<String> confirmed, List<String> notRealised,
-            List<String> untested, List<String> unknown, List<String> unclaimed) {
+            List<String> untested, List<String> unknown, List<String> unclaimed, List<String> notDetermined) {
         public Claims {
             claimed = List.copyOf(claimed);
             confirmed = List.copyOf(confirmed);
@@ -193,6 +254,12 @@ public record Report(
             untested = List.copyOf(untested);
             unknown = List.copyOf(unknown);
             unclaimed = List.copyOf(unclaimed);
+            notDetermined = notDetermined == null ? List.of() : List.copyOf(notDetermined);
+        }
+
+        public Claims(List<String> claimed, List<String> confirmed, List<String> notRealised, List<String> untested,
+                List<String> unknown, List<String> unclaimed) {
+            this(claimed, confirmed, notRealised, untested, unknown, unclaimed, List.of());
         }
     }
 }

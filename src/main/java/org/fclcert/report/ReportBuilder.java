@@ -36,7 +36,7 @@ public final class ReportBuilder {
         boolean complete = cases.stream().noneMatch(c -> c.status() == CaseStatus.SKIPPED && isUnrun(c));
         List<CaseResult> counted = cases.stream().filter(c -> !c.interpretation()).toList();
         boolean semantic = header.presentAs() != null;
-        List<Report.FeatureRow> features = featureRows(counted, semantic);
+        List<Report.FeatureRow> features = featureRows(header, counted, semantic);
         return new Report(Report.FORMAT_VERSION, generatedAt.toString(), header.iut(), header.toolkit(),
                 header.corpus(), new Report.Run(header.startedAt(), complete, header.selection(), problems),
                 summary(cases), rejections(cases), basicLevel(header, counted), features, dataCheckList, interpretation(cases),
@@ -102,22 +102,29 @@ public final class ReportBuilder {
 
     private static Report.BasicLevel basicLevel(RunHeader header, List<CaseResult> counted) {
         List<CaseResult> basic = counted.stream().filter(c -> "basic".equals(c.level())).toList();
+        List<CaseResult> ran = basic.stream().filter(c -> c.status() != CaseStatus.SKIPPED).toList();
         int required = header.corpus().basicCases();
         int passed = count(basic, CaseStatus.PASSED);
-        List<String> notPassed = basic.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id)
-                .toList();
+        List<String> failed = ran.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id).toList();
         String reason;
+        String verdict;
         if (required == 0) {
             reason = "the corpus has no Basic Level case";
-        } else if (!notPassed.isEmpty()) {
-            reason = notPassed.size() + " of " + basic.size() + " Basic Level cases did not pass: " + list(notPassed);
-        } else if (basic.size() < required) {
-            reason = "only " + basic.size() + " of the corpus's " + required + " Basic Level cases were run";
+            verdict = Report.BasicLevel.NOT_DETERMINED;
+        } else if (!failed.isEmpty()) {
+            // a Basic case that ran and did not pass decides the verdict, whatever did not run
+            reason = failed.size() + " of " + ran.size() + " Basic Level cases run did not pass: " + list(failed)
+                    + (ran.size() < required ? "; " + ran.size() + " of " + required + " run" : "");
+            verdict = Report.BasicLevel.NOT_CONFORMANT;
+        } else if (ran.size() < required) {
+            reason = ran.size() + " of " + required + " run";
+            verdict = Report.BasicLevel.NOT_DETERMINED;
         } else {
             reason = "all " + required + " Basic Level cases passed";
+            verdict = Report.BasicLevel.CONFORMANT;
         }
-        boolean conformant = required > 0 && notPassed.isEmpty() && passed >= required;
-        return new Report.BasicLevel(conformant, required, basic.size(), passed, reason);
+        boolean conformant = Report.BasicLevel.CONFORMANT.equals(verdict);
+        return new Report.BasicLevel(conformant, required, ran.size(), passed, reason, verdict);
     }
 
     /** At most ten ids, then how many more: a reason stays one readable line. */
@@ -163,23 +170,58 @@ public final class ReportBuilder {
                         .map(CaseResult::id).toList());
     }
 
-    private static List<Report.FeatureRow> featureRows(List<CaseResult> counted, boolean semantic) {
+    /**
+     * One row per catalogue feature. Its evidence is every case whose {@code tests} name it; a case that did not
+     * pass counts against it only when {@link Attribution} attributes the failure to it (else it is listed as not
+     * counted); the row is decided only when every case of its level or below that the corpus has for it ran
+     * ({@code corpus.rowCases}), else it is not determined.
+     */
+    private static List<Report.FeatureRow> featureRows(RunHeader header, List<CaseResult> counted, boolean semantic) {
         List<Report.FeatureRow> rows = new ArrayList<>();
         for (Feature f : Feature.values()) {
             if (f.dialectSyntax()) {
                 continue;   // a dialect's own syntax: no corpus case can test it (Feature#dialectSyntax)
             }
             List<CaseResult> evidence = counted.stream().filter(testing(f)).toList();
+            List<CaseResult> deciding = evidence.stream().filter(c -> Attribution.decides(c.level(), f)).toList();
+            int run = (int) deciding.stream().filter(c -> c.status() != CaseStatus.SKIPPED).count();
+            int required = rowCases(header, f, deciding.size());
             int passed = count(evidence, CaseStatus.PASSED);
-            int skipped = count(evidence, CaseStatus.SKIPPED);
-            FeatureStatus status = FeatureStatus.of(passed, evidence.size());
+            List<CaseResult> against = evidence.stream().filter(c -> Attribution.rows(c).contains(f.id())).toList();
+            List<String> notCounted = evidence.stream()
+                    .filter(c -> c.status() == CaseStatus.FAILED || c.status() == CaseStatus.ERRORED)
+                    .filter(c -> !against.contains(c))
+                    .map(c -> c.id() + " (" + Attribution.notCountedBecause(c, f) + ")").toList();
+            FeatureStatus status;
+            if (run < required) {
+                status = run == 0 && passed == 0 ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
+            } else if (passed + against.size() == 0) {
+                status = notCounted.isEmpty() ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
+            } else {
+                status = FeatureStatus.of(passed, passed + against.size());
+            }
             rows.add(new Report.FeatureRow(f.id(), f.table(), f.level().word(), f.element(), f.description(),
-                    status, passed, count(evidence, CaseStatus.FAILED), count(evidence, CaseStatus.ERRORED), skipped,
-                    evidence.stream().map(CaseResult::id).toList(),
-                    evidence.stream().filter(c -> c.status() != CaseStatus.PASSED).map(CaseResult::id).toList(),
-                    semantic ? semanticRow(evidence) : null));
+                    status, passed, count(against, CaseStatus.FAILED), count(against, CaseStatus.ERRORED),
+                    count(evidence, CaseStatus.SKIPPED), evidence.stream().map(CaseResult::id).toList(),
+                    against.stream().map(CaseResult::id).toList(), semantic ? semanticRow(evidence) : null,
+                    required, run, notCounted));
         }
         return rows;
+    }
+
+    /**
+     * How many cases the row's verdict needs: the corpus's count from the run header; for a header without it, the
+     * planned cases when nothing narrowed the run, else at least one more than were planned (never decided).
+     */
+    private static int rowCases(RunHeader header, Feature f, int planned) {
+        Integer known = header.corpus().rowCases().get(f.id());
+        if (known != null) {
+            return Math.max(known, planned);
+        }
+        if (!header.corpus().rowCases().isEmpty() || header.selection().whole()) {
+            return planned;
+        }
+        return planned + 1;
     }
 
     private static Predicate<CaseResult> testing(Feature f) {
@@ -204,6 +246,7 @@ public final class ReportBuilder {
         List<String> notRealised = new ArrayList<>();
         List<String> untested = new ArrayList<>();
         List<String> unknown = new ArrayList<>();
+        List<String> notDetermined = new ArrayList<>();
         Set<String> claimedIds = new TreeSet<>(String.CASE_INSENSITIVE_ORDER);
         for (String id : claimed) {
             Report.FeatureRow row = byId.get(id.toUpperCase(Locale.ROOT));
@@ -214,6 +257,9 @@ public final class ReportBuilder {
                 confirmed.add(row.id());
             } else if (row.status() == FeatureStatus.NOT_TESTED) {
                 untested.add(row.id());
+            } else if (row.status() == FeatureStatus.NOT_DETERMINED) {
+                notDetermined.add(row.id() + (row.run() < row.required() ? " (" + row.run() + " of " + row.required()
+                        + " run)" : " (its failures count against other rows)"));
             } else {
                 notRealised.add(row.id() + " (" + row.status().label() + ")");
             }
@@ -221,6 +267,6 @@ public final class ReportBuilder {
         List<String> unclaimed = rows.stream()
                 .filter(r -> r.table() != 8 && r.status() == FeatureStatus.REALISED && !claimedIds.contains(r.id()))
                 .map(Report.FeatureRow::id).toList();
-        return new Report.Claims(claimed, confirmed, notRealised, untested, unknown, unclaimed);
+        return new Report.Claims(claimed, confirmed, notRealised, untested, unknown, unclaimed, notDetermined);
     }
 }

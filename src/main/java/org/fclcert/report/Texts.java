@@ -111,6 +111,26 @@ final class Texts {
                 && (f.semantic() == null || f.semantic().status() == FeatureStatus.NOT_TESTED);
     }
 
+    /** How many of the cases a row's verdict needs ran, when not all did: {@code " (1 of 6 run)"}, else "". */
+    static String runOfRequired(Report.FeatureRow f) {
+        return (f.status() == FeatureStatus.NOT_DETERMINED || f.status() == FeatureStatus.NOT_TESTED)
+                && f.run() < f.required() ? " (" + f.run() + " of " + f.required() + " run)" : "";
+    }
+
+    /** Passed of the cases counted for a row: those that passed and those whose failure is attributed to it. */
+    static String passedOfCounted(Report.FeatureRow f) {
+        return f.passed() + "/" + (f.passed() + f.failed() + f.errored());
+    }
+
+    /** The cases a row names besides its passes: not passed (counted against it), then not counted and why. */
+    static String notPassedText(Report.FeatureRow f) {
+        String notPassed = String.join(", ", f.notPassed());
+        if (f.notCounted().isEmpty()) {
+            return notPassed;
+        }
+        return (notPassed.isEmpty() ? "" : notPassed + "; ") + "not counted: " + String.join(", ", f.notCounted());
+    }
+
     /** The command that reruns one case against the same implementation and corpus. */
     static String repro(Report report, String caseId) {
         String rerun = report.toolkit().rerun();

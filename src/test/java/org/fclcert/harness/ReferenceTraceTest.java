@@ -134,6 +134,23 @@ class ReferenceTraceTest {
                 svg);
     }
 
+    /**
+     * B-FB-006 at step 1 (x = 1): lo 7/8 → down -20, hi 1/8 → up 80; CoGS = (-20·7/8 + 80·1/8) / 1 = -7.5, which the
+     * INT output rounds half away from zero to -8. The trace says so, or -8 would not follow from the singletons.
+     */
+    @Test
+    void anIntegerOutputShowsItsRounding() throws Exception {
+        RunCase c = RunCases.from(org.fclcert.corpus.Corpus.load(java.nio.file.Path.of("conformance"))
+                .byId("B-FB-006").orElseThrow());
+        ReferenceTrace t = ReferenceTraces.at(c, 1);
+        assertEquals("cmd = -8, defuzzified from the singletons -20 (degree 0.875), 80 (degree 0.125); that is -7.5,"
+                + " rounded half away from zero to the output's integer type: cmd = -8", t.lines().get(t.lines().size() - 1));
+        assertEquals(-7.5, t.output("cmd").computed());
+        // a REAL output is not converted: no rounding clause, nothing recorded
+        RunCase real = tank(List.of(step(Map.of("level", 7.0), Map.of("valve", 0.0))));
+        assertNull(ReferenceTraces.at(real, 1).output("valve").computed());
+    }
+
     @Test
     void numbersAreShortButExact() {
         assertEquals("85.7143", ReferenceTrace.number(600 / 7.0));

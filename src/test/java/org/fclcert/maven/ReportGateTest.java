@@ -47,7 +47,8 @@ class ReportGateTest {
     @Test
     void aWholeRunIsJudgedOnTheLevels() {
         Report whole = run(List.of(), CaseStatus.PASSED);
-        assertTrue(ReportGate.failure(whole, ReportGate.FailOn.BASIC, List.of()).orElseThrow()
-                .startsWith("Basic Level not conformant: "));
+        // one case of the corpus's 90 Basic ones ran: the verdict is not determined, and the gate says so
+        assertEquals(Optional.of("Basic Level not determined (0 of 90 run)"),
+                ReportGate.failure(whole, ReportGate.FailOn.BASIC, List.of()));
     }
 }

@@ -13,6 +13,7 @@ import java.util.List;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
 import org.fclcert.harness.RejectionPlace;
+import org.fclcert.harness.RunHeader;
 import org.fclcert.model.Feature;
 import org.junit.jupiter.api.Test;
 
@@ -63,9 +64,10 @@ class ReportBuilderTest {
         // the failing interpretation case is not held against E-COG
         assertEquals(FeatureStatus.REALISED, row(r, "E-COG").status());
         assertEquals(List.of("E-COG-001"), row(r, "E-COG").cases());
-        // the planned case that never ran is a skip, which never counts as passed
-        assertEquals(FeatureStatus.NOT_REALISED, row(r, "B-DEFAULT-NC").status());
+        // the planned case that never ran is a skip: it never counts as passed, and the row is not decided without it
+        assertEquals(FeatureStatus.NOT_TESTED, row(r, "B-DEFAULT-NC").status());
         assertEquals(1, row(r, "B-DEFAULT-NC").skipped());
+        assertEquals("not tested (0 of 1 run)", row(r, "B-DEFAULT-NC").sentence());
     }
 
     @Test
@@ -89,18 +91,20 @@ class ReportBuilderTest {
     void basicLevelNeedsEveryBasicCaseOfTheCorpusToPass() {
         Report r = report(List.of());
         assertFalse(r.basicLevel().conformant());
-        assertEquals("2 of 4 Basic Level cases did not pass: B-COGS-002, B-DEFAULT-NC-001", r.basicLevel().reason());
+        // B-DEFAULT-NC-001 never ran: only the Basic case that ran and failed decides, and the reason says what ran
+        assertEquals("1 of 3 Basic Level cases run did not pass: B-COGS-002; 3 of 4 run", r.basicLevel().reason());
+        assertEquals(Report.BasicLevel.NOT_CONFORMANT, r.basicLevel().verdict());
 
         List<CaseResult> allPass = List.of(result("B-COGS-001", "basic", CaseStatus.PASSED, List.of("B-COGS")),
                 result("B-AND-MIN-001", "basic", CaseStatus.PASSED, List.of("B-AND-MIN")));
         Report partialRun = ReportBuilder.build(header(3, allPass, List.of()), allPass, List.of(), List.of(),
                 Instant.EPOCH);
         assertFalse(partialRun.basicLevel().conformant(), "2 of the corpus's 3 Basic cases is not enough");
-        assertEquals("only 2 of the corpus's 3 Basic Level cases were run", partialRun.basicLevel().reason());
+        assertEquals("not determined (2 of 3 run)", partialRun.basicLevel().sentence());
 
         Report whole = ReportBuilder.build(header(2, allPass, List.of()), allPass, List.of(), List.of(), Instant.EPOCH);
         assertTrue(whole.basicLevel().conformant());
-        assertEquals("all 2 Basic Level cases passed", whole.basicLevel().reason());
+        assertEquals("conformant (all 2 Basic Level cases passed)", whole.basicLevel().sentence());
     }
 
     @Test
@@ -154,5 +158,71 @@ class ReportBuilderTest {
         return new CaseResult(r.plan(), new CaseResult.Verdict(r.status(), "rejected", List.of(), place),
                 new CaseResult.Evidence(null, new CaseResult.Mismatch.Sentences("reject", "rejected"), null, null),
                 r.export(), new CaseResult.Setup(null, "exact", null, 1L));
+    }
+
+    /**
+     * The vendor's report of issue 29: every Basic case passed, and an Extension case that also tests B-DEFAULT-VALUE
+     * was rejected for its RANGE. The Basic row is not held to it, so "conformant" never sits beside a partial Table 8
+     * row or a "claimed but not realised" Basic feature; the row names the case it did not count and why.
+     */
+    @Test
+    void anExtensionCaseNeverCountsAgainstABasicRow() {
+        List<CaseResult> run = List.of(result("B-DEFAULT-VALUE-001", "basic", CaseStatus.PASSED, List.of("B-DEFAULT-VALUE")),
+                result("E-RANGE-004", "extension", CaseStatus.FAILED, List.of("E-RANGE", "B-DEFAULT-VALUE")));
+        Report r = ReportBuilder.build(header(1, run, List.of("B-DEFAULT-VALUE", "E-RANGE")), run, List.of(), List.of(),
+                Instant.EPOCH);
+        assertTrue(r.basicLevel().conformant());
+        Report.FeatureRow row = row(r, "B-DEFAULT-VALUE");
+        assertEquals(FeatureStatus.REALISED, row.status());
+        assertEquals(List.of(), row.notPassed());
+        assertEquals("realised (1 of 1 passed; not counted: E-RANGE-004 (a case of the extension level: it needs more"
+                + " than basic level features to run))", row.sentence());
+        assertEquals(FeatureStatus.NOT_REALISED, row(r, "E-RANGE").status());
+        assertEquals(List.of("B-DEFAULT-VALUE"), r.claims().confirmed());
+        assertEquals(List.of("E-RANGE (not realised)"), r.claims().notRealised());
+    }
+
+    /** A wrong value where the reference evaluator took the DEFAULT isolates B-DEFAULT-VALUE among the rows tested. */
+    @Test
+    void aWrongDefaultCountsAgainstTheDefaultRowAlone() {
+        CaseResult made = result("B-COGS-003", "basic", CaseStatus.FAILED, List.of("B-COGS", "B-DEFAULT-VALUE"));
+        org.fclcert.harness.ReferenceTrace trace = new org.fclcert.harness.ReferenceTrace(1, List.of(), List.of(
+                new org.fclcert.harness.ReferenceTrace.OutputValue("y", 2.0, "default", true, List.of())));
+        CaseResult failed = new CaseResult(made.plan(), made.verdict(), new CaseResult.Evidence(made.evidence().step(),
+                made.evidence().mismatch(), null, 1.0, trace), made.export(), made.setup());
+        List<CaseResult> run = List.of(result("B-COGS-001", "basic", CaseStatus.PASSED, List.of("B-COGS")), failed);
+        Report r = ReportBuilder.build(header(2, run, List.of()), run, List.of(), List.of(), Instant.EPOCH);
+        assertEquals(FeatureStatus.NOT_REALISED, row(r, "B-DEFAULT-VALUE").status());
+        assertEquals(FeatureStatus.REALISED, row(r, "B-COGS").status());
+        assertEquals(List.of("B-COGS-003 (its failing step isolates B-DEFAULT-VALUE)"), row(r, "B-COGS").notCounted());
+        assertEquals(Report.BasicLevel.NOT_CONFORMANT, r.basicLevel().verdict());
+        assertEquals("wrong value: B-DEFAULT-VALUE (DEFAULT with a constant value when no rule fired): wrong value",
+                r.causes().get(0).kind() + ": " + r.causes().get(0).cause());
+    }
+
+    /**
+     * A one-case rerun: the corpus has four cases for E-COG (corpus.rowCases) and one ran and failed. The row, the
+     * claim and the Basic verdict say "not determined" with how many ran — never "not realised" or "not conformant".
+     */
+    @Test
+    void aOneCaseRerunDeterminesNothingItDidNotRun() {
+        List<CaseResult> run = List.of(result("E-COG-002", "extension", CaseStatus.FAILED, List.of("E-COG")));
+        RunHeader h = header(92, run, List.of("E-COG"));
+        RunHeader narrowed = new RunHeader(h.iut(), h.toolkit(), new RunHeader.CorpusInfo(h.corpus().dir(), 200,
+                h.corpus().sha256(), 92, java.util.Map.of("E-COG", 4, "B-COGS", 4)),
+                new RunHeader.Selection(List.of(), List.of(), List.of("E-COG-002"), h.selection().planned()),
+                h.startedAt());
+        Report r = ReportBuilder.build(narrowed, run, List.of(), List.of(), Instant.EPOCH);
+        assertEquals("not determined (0 of 92 run)", r.basicLevel().sentence());
+        assertEquals(FeatureStatus.NOT_DETERMINED, row(r, "E-COG").status());
+        assertEquals("not determined (1 of 4 run; not passed: E-COG-002)", row(r, "E-COG").sentence());
+        assertEquals(List.of("E-COG (1 of 4 run)"), r.claims().notDetermined());
+        assertEquals(List.of(), r.claims().notRealised());
+        assertEquals(FeatureStatus.NOT_TESTED, row(r, "B-COGS").status());
+        String md = MarkdownReport.render(r);
+        assertTrue(md.contains("**Basic Level: not determined** (0 of 92 run)."), md);
+        assertTrue(md.contains("| not determined (1 of 4 run) | 0/1 | E-COG-002 |"), md);
+        assertTrue(md.contains("- Claimed, not determined: E-COG (1 of 4 run)"), md);
+        assertTrue(HtmlReport.render(r).contains("Basic Level: not determined"));
     }
 }
