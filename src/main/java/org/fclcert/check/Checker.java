@@ -30,7 +30,7 @@ public final class Checker {
         this.rules = List.copyOf(rules);
     }
 
-    /** Every check rule, in code order: FCL-C001 to FCL-C032, FCL-C040 and FCL-C041 (dialect shapes), then the warnings FCL-W001 to FCL-W004. */
+    /** Every check rule, in code order: FCL-C001 to FCL-C032, FCL-C040 and FCL-C041 (dialect shapes), then the warnings FCL-W001 to FCL-W005. */
     public static List<CheckRule> standardRules() {
         return List.of(
                 new NoUndefinedVariables(), new NoUndefinedTerms(), new TermsBelongToTheirVariable(),
@@ -44,7 +44,8 @@ public final class Checker {
                 new SubconditionsOnInputs(), new OneFuzzificationPerVariable(), new AtLeastTwoPoints(),
                 new InitialValueFitsType(), new SubconclusionsOnDefuzzifiedOutputs(), new UniqueFunctionBlockNames(),
                 new ShapeParameterCount(), new ShapeParametersValid(),
-                new NoUnusedTerms(), new NoEmptyRuleBlocks(), new NoUnconcludedOutputs(), new NoZeroWeights());
+                new NoUnusedTerms(), new NoEmptyRuleBlocks(), new NoUnconcludedOutputs(), new NoZeroWeights(),
+                new RulesCoverTheInputSpace());
     }
 
     public List<CheckRule> rules() {

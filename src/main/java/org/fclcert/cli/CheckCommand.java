@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.fclcert.check.Analysis;
+import org.fclcert.check.SarifLog;
 import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.model.Diagnostic;
 import picocli.CommandLine.Command;
@@ -23,14 +24,22 @@ final class CheckCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
+    /** {@code --format} of check: the two common ones and SARIF 2.1.0 for CI. */
+    enum Format {
+        text,
+        json,
+        sarif
+    }
+
     @Option(names = "--format", defaultValue = "text", paramLabel = "FORMAT",
-            description = "text or json (default: ${DEFAULT-VALUE})")
-    OutputFormat format;
+            description = "text, json or sarif (SARIF 2.1.0, for code scanning in CI) (default: ${DEFAULT-VALUE})")
+    Format format;
 
     @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
     DialectName dialect;
 
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = "FCL source files")
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "FCL source files; - reads standard input"
+            + " (named <stdin> in locations)")
     List<String> files;
 
     @Override
@@ -40,11 +49,16 @@ final class CheckCommand implements Callable<Integer> {
         List<Diagnostic> all = new ArrayList<>();
         int checked = 0;
         boolean unreadable = false;
-        for (String file : files) {
+        if (files.stream().filter(SourceFiles.STDIN::equals).count() > 1) {
+            err.println("fclcert: '-' (standard input) is given more than once; it can be read only once");
+            return ExitCodes.USAGE;
+        }
+        for (String path : files) {
+            String file = SourceFiles.name(path);
             try {
-                String text = SourceFiles.read(file);
+                String text = SourceFiles.read(path);
                 List<Diagnostic> found = Analysis.analyze(dialect.reader(file, text, err), file, text).diagnostics();
-                if (format == OutputFormat.text) {
+                if (format == Format.text) {
                     DiagnosticPrinter.text(out, found);
                 }
                 dialect.hintWhenLibraryDialect(file, text, found, err);
@@ -55,8 +69,10 @@ final class CheckCommand implements Callable<Integer> {
                 unreadable = true;
             }
         }
-        if (format == OutputFormat.json) {
+        if (format == Format.json) {
             DiagnosticPrinter.json(out, all);
+        } else if (format == Format.sarif) {
+            out.print(SarifLog.render(all));
         }
         err.println("fclcert: " + DiagnosticPrinter.summary(checked, all));
         // an unreadable file means the question was not fully answered, which outranks found errors

@@ -17,11 +17,12 @@ import org.fclcert.syntax.dialect.DialectReaders;
  */
 record CheckedSource(String text, Dialect dialect, Optional<Program> program) {
     /**
-     * Reads and checks FILE; the choice of auto and the diagnostics go to err, and for a program with errors
+     * Reads and checks FILE ({@code -}: standard input, named {@code <stdin>}); the choice of auto and the diagnostics go to err, and for a program with errors
      * {@code fclcert: FILE has errors; not <notDone>}.
      */
-    static CheckedSource read(String file, DialectName name, String notDone, PrintWriter err) throws FileProblem {
-        String text = SourceFiles.read(file);
+    static CheckedSource read(String path, DialectName name, String notDone, PrintWriter err) throws FileProblem {
+        String text = SourceFiles.read(path);
+        String file = SourceFiles.name(path);
         Dialect dialect;
         Analysis analysis;
         if (name == DialectName.auto) {

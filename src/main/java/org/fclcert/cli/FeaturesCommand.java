@@ -42,7 +42,7 @@ final class FeaturesCommand implements Callable<Integer> {
     @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
     DialectName dialect;
 
-    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    @Parameters(paramLabel = "FILE", description = "an FCL source file, or - for standard input")
     String file;
 
     record JsonFeature(String id, int line, int column, int table, String description) {
@@ -56,14 +56,15 @@ final class FeaturesCommand implements Callable<Integer> {
         Analysis analysis;
         try {
             String text = SourceFiles.read(file);
-            analysis = Analysis.analyze(dialect.reader(file, text, err), file, text);
+            String name = SourceFiles.name(file);
+            analysis = Analysis.analyze(dialect.reader(name, text, err), name, text);
         } catch (FileProblem e) {
             err.println("fclcert: " + e.getMessage());
             return ExitCodes.USAGE;
         }
         if (analysis.program().isEmpty()) {
             printDiagnostics(out, analysis);
-            err.println("fclcert: " + file + " has errors; features are listed only for a valid program");
+            err.println("fclcert: " + SourceFiles.name(file) + " has errors; features are listed only for a valid program");
             return ExitCodes.ERRORS;
         }
         DiagnosticPrinter.text(err, analysis.diagnostics()); // warnings only; stdout stays the report
@@ -96,7 +97,7 @@ final class FeaturesCommand implements Callable<Integer> {
 
     /** A table per level (Table 8, 9, 10), one row per feature with where the program uses it. */
     private void text(PrintWriter out, FeatureReport report) {
-        out.println(file + ": lowest conformance level that can run it: " + report.level().word());
+        out.println(SourceFiles.name(file) + ": lowest conformance level that can run it: " + report.level().word());
         Map<Feature, List<SourceLocation>> byFeature = report.uses().stream().collect(Collectors.groupingBy(
                 FeatureUse::feature, LinkedHashMap::new, Collectors.mapping(FeatureUse::location, Collectors.toList())));
         int idWidth = byFeature.keySet().stream().mapToInt(f -> f.id().length()).max().orElse(0);

@@ -33,20 +33,40 @@ final class SourceFiles {
      */
     static String read(String path) throws FileProblem {
         try {
-            byte[] bytes = Limits.readFile(Path.of(path));
+            byte[] bytes = STDIN.equals(path) ? readStdin() : Limits.readFile(Path.of(path));
             return StandardCharsets.UTF_8.newDecoder()
                     .onMalformedInput(CodingErrorAction.REPLACE)
                     .onUnmappableCharacter(CodingErrorAction.REPLACE)
                     .decode(ByteBuffer.wrap(bytes)).toString().replaceFirst("^\uFEFF", "");
         } catch (Limits.Unreadable e) {
-            throw new FileProblem(path, e.getMessage());
+            throw new FileProblem(name(path), e.getMessage());
         } catch (NoSuchFileException e) {
             throw new FileProblem(path, "no such file");
         } catch (AccessDeniedException e) {
             throw new FileProblem(path, "permission denied");
         } catch (IOException e) {
-            throw new FileProblem(path, String.valueOf(e.getMessage()));
+            throw new FileProblem(name(path), String.valueOf(e.getMessage()));
         }
+    }
+
+    /** The argument that names standard input. */
+    static final String STDIN = "-";
+
+    /** The name standard input goes by in locations and messages. */
+    static final String STDIN_NAME = "<stdin>";
+
+    /** The name a path goes by in locations and messages: {@code <stdin>} for {@code -}, else the path itself. */
+    static String name(String path) {
+        return STDIN.equals(path) ? STDIN_NAME : path;
+    }
+
+    /** Standard input to its end, held to the same size limit as a file. */
+    private static byte[] readStdin() throws IOException, FileProblem {
+        byte[] bytes = System.in.readNBytes((int) Limits.MAX_SOURCE_BYTES + 1);
+        if (bytes.length > Limits.MAX_SOURCE_BYTES) {
+            throw new FileProblem(STDIN_NAME, "more than " + Limits.MAX_SOURCE_BYTES + " bytes");
+        }
+        return bytes;
     }
 
     static void write(String path, String text) throws FileProblem {

@@ -52,8 +52,9 @@ class AnalysisTest {
                 "rule named by an identifier");
         Analysis a = Analysis.analyze(returning(Optional.of(tempValve(rules)), readerWarning), "m.fcl", "");
         assertTrue(a.program().isPresent());
-        // 'hot' (line 10) and 'closed' (line 13) are never used
-        assertEquals(List.of("FCL-W001@10:5", "FCL-W001@13:5", "FCL-W104@21:5"), summary(a));
+        // 'hot' (line 10) and 'closed' (line 13) are never used; with only 'cold' ((3, 1) (27, 0)) no rule fires
+        // from 27 up (FCL-W005 at the rule block, line 18)
+        assertEquals(List.of("FCL-W001@10:5", "FCL-W001@13:5", "FCL-W005@18:1", "FCL-W104@21:5"), summary(a));
     }
 
     @Test

@@ -266,7 +266,8 @@ class CheckRulesTest {
     void blocksConcludingAnOutputWithTheSameAccumulationAreFine() {
         String text = BASE.replace("END_RULEBLOCK\n", "END_RULEBLOCK\nRULEBLOCK r2\n    AND : MIN;\n    ACCU : MAX;\n"
                 + "    RULE 1 : IF temp IS hot THEN valve IS closed;\nEND_RULEBLOCK\n");
-        assertEquals(List.of(), check(text));
+        // no accumulation finding; r2's one rule leaves temp <= 3 uncovered ('hot' is 0 up to 3): FCL-W005
+        assertEquals(List.of("FCL-W005@24"), codes(text));
     }
 
     @Test

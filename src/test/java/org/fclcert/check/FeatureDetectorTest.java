@@ -18,7 +18,9 @@ class FeatureDetectorTest {
 
     private static Program valid(String name, String text) {
         Analysis analysis = Programs.analyze(name, text);
-        assertEquals(List.of(), analysis.diagnostics(), name + " must be a clean program");
+        // a minimal program may leave inputs where no rule fires (FCL-W005): not what feature detection is about
+        assertEquals(List.of(), analysis.diagnostics().stream().filter(d -> !d.code().equals("FCL-W005")).toList(),
+                name + " must be a clean program");
         return analysis.program().orElseThrow();
     }
 

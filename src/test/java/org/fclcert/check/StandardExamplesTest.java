@@ -9,8 +9,9 @@ import org.junit.jupiter.api.Test;
 
 /** The standard's own example programs, typed in from the figures. */
 class StandardExamplesTest {
+    /** The findings but FCL-W005 (the crane's rules leave regions uncovered; CoverageGapsTest judges those). */
     private static List<String> summary(Analysis analysis) {
-        return analysis.diagnostics().stream()
+        return analysis.diagnostics().stream().filter(d -> !d.code().equals("FCL-W005"))
                 .map(d -> d.code() + "@" + d.location().line() + ":" + d.location().column()).toList();
     }
 
@@ -68,7 +69,11 @@ class StandardExamplesTest {
     @Test
     void ovenOfAnnexDWrittenInFclIsValidAndReadsTheColourClassesAsBareInputVariables() {
         Analysis analysis = Programs.analyzeResource("standard/oven_annex_d_corrected.fcl");
-        assertEquals(List.of(), analysis.diagnostics());
+        // by hand: low is 0 from 50 up, high 0 up to 70, and rules 1, 4 and 5 need a colour above 0 (clamped)
+        assertEquals(List.of("standard/oven_annex_d_corrected.fcl:36:1: warning FCL-W005: humidity in [50, 70] and"
+                + " brown in (-inf, 0] and light in (-inf, 0] and dark in (-inf, 0]: no rule of block 'inference'"
+                + " fires; dT1 takes DEFAULT 0, dT2 takes DEFAULT 0"),
+                analysis.diagnostics().stream().map(Diagnostic::toString).toList());
         FeatureReport report = new FeatureDetector().detect(analysis.program().orElseThrow());
         List<String> conditionVariables = report.uses().stream()
                 .filter(u -> u.feature().id().equals("E-COND-VARIABLE")).map(u -> "line " + u.location().line()).toList();

@@ -1,0 +1,280 @@
+package org.fclcert.check;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.TreeSet;
+import java.util.stream.Stream;
+import org.fclcert.eval.EvaluationException;
+import org.fclcert.eval.Evaluator;
+import org.fclcert.eval.FunctionBlockInstance;
+import org.fclcert.eval.Trace;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.MembershipFunction;
+import org.fclcert.model.Point;
+import org.fclcert.model.Literal;
+import org.fclcert.model.Program;
+import org.fclcert.model.RuleBlock;
+import org.fclcert.model.Term;
+import org.fclcert.model.VariableKind;
+import org.junit.jupiter.api.Test;
+
+/**
+ * FCL-W005: regions where no rule fires. The expected regions are worked out by hand from the terms; on the
+ * corpus, every reported region is confirmed, and every other place denied, by the reference evaluator's rule
+ * degrees at sampled inputs (an independent method: it computes the degrees, the analysis never does).
+ */
+class CoverageGapsTest {
+    private static String program(String inputs, String fuzzify, String andOp, String rules) {
+        return "FUNCTION_BLOCK t\nVAR_INPUT\n" + inputs + "END_VAR\nVAR_OUTPUT\n    y : REAL;\nEND_VAR\n" + fuzzify
+                + "DEFUZZIFY y\n    TERM a := 0;\n    TERM b := 10;\n    METHOD : CoGS;\n    DEFAULT := -1;\n"
+                + "END_DEFUZZIFY\nRULEBLOCK main\n    AND : " + andOp + ";\n    ACCU : MAX;\n" + rules
+                + "END_RULEBLOCK\nEND_FUNCTION_BLOCK\n";
+    }
+
+    private static List<String> messages(String text) {
+        return Programs.analyze("g.fcl", text).diagnostics().stream().filter(d -> d.code().equals("FCL-W005"))
+                .map(Diagnostic::message).toList();
+    }
+
+    private static final String TEMP = "    temp : REAL;\n";
+
+    @Test
+    void twoTermsMeetingAtZeroLeaveAGapOfZeroWidth() {
+        // cold is 0 from 10 on, hot 0 up to 20... here hot starts at 10: both are 0 exactly at 10, nowhere else
+        String text = program(TEMP, "FUZZIFY temp\n    TERM cold := (0, 1) (10, 0);\n    TERM hot := (10, 0) (20, 1);\n"
+                + "END_FUZZIFY\n", "MIN", "    RULE 1 : IF temp IS cold THEN y IS a;\n"
+                + "    RULE 2 : IF temp IS hot THEN y IS b;\n");
+        assertEquals(List.of("temp = 10: no rule of block 'main' fires; y takes DEFAULT -1"), messages(text));
+    }
+
+    @Test
+    void overlappingTermsLeaveNoGap() {
+        String text = program(TEMP, "FUZZIFY temp\n    TERM cold := (0, 1) (10, 0);\n    TERM hot := (5, 0) (20, 1);\n"
+                + "END_FUZZIFY\n", "MIN", "    RULE 1 : IF temp IS cold THEN y IS a;\n"
+                + "    RULE 2 : IF temp IS hot THEN y IS b;\n");
+        assertEquals(List.of(), messages(text));
+    }
+
+    @Test
+    void aGapOfTwoInputsIsOneBoxWithItsEndsOpenOrClosed() {
+        // error: neg is 1 up to -10 and 0 from 0; zero is 0 outside (-5, 5); pos 0 up to 0. trend: rising 0 up to 0.
+        // For error <= -5 only rule 3 can fire, and only when trend > 0; elsewhere rule 1 or 2 fires (at error 0
+        // zero is 1). So the one gap is error in (-inf, -5] and trend in (-inf, 0].
+        String text = program("    error : REAL;\n    trend : REAL;\n",
+                "FUZZIFY error\n    TERM neg := (-10, 1) (0, 0);\n    TERM zero := (-5, 0) (0, 1) (5, 0);\n"
+                        + "    TERM pos := (0, 0) (10, 1);\nEND_FUZZIFY\n"
+                        + "FUZZIFY trend\n    TERM falling := (-2, 1) (0, 0);\n    TERM rising := (0, 0) (2, 1);\n"
+                        + "END_FUZZIFY\n", "MIN",
+                "    RULE 1 : IF error IS zero THEN y IS a;\n    RULE 2 : IF error IS pos THEN y IS b;\n"
+                        + "    RULE 3 : IF error IS neg AND trend IS rising THEN y IS b;\n");
+        assertEquals(List.of("error in (-inf, -5] and trend in (-inf, 0]: no rule of block 'main' fires;"
+                + " y takes DEFAULT -1"), messages(text));
+    }
+
+    @Test
+    void notOfAVerticalEdgeAndAnOrAreClassifiedAtTheEdgeItself() {
+        // step is 0 left of 5, 1 at 5 (the larger of the two degrees there) and up to 10 and beyond: NOT step fires
+        // only left of 5. With 'OR x IS spot' (a singleton at 7) the point 7 is covered too.
+        String fuzzify = "FUZZIFY x\n    TERM step := (5, 0) (5, 1) (10, 1);\n    TERM spot := 7;\nEND_FUZZIFY\n";
+        assertEquals(List.of("x in [5, inf): no rule of block 'main' fires; y takes DEFAULT -1"),
+                messages(program("    x : REAL;\n", fuzzify, "MIN", "    RULE 1 : IF x IS NOT step THEN y IS a;\n")));
+        assertEquals(List.of("x in [5, 7): no rule of block 'main' fires; y takes DEFAULT -1",
+                "x in (7, inf): no rule of block 'main' fires; y takes DEFAULT -1"),
+                messages(program("    x : REAL;\n", fuzzify, "MIN",
+                        "    RULE 1 : IF x IS NOT step OR x IS spot THEN y IS a;\n")));
+    }
+
+    @Test
+    void boundedDifferenceOfTwoPartialDegreesIsUndecidedNeverAGap() {
+        // a AND b with BDIF is max(0, a + b - 1): on (0, 10) x (0, 10) it is 0 in one corner and positive in the
+        // other, so the analysis must not call it a gap; outside, one of them is 0 and so is the rule
+        String text = program("    p : REAL;\n    q : REAL;\n",
+                "FUZZIFY p\n    TERM up := (0, 0) (10, 1);\nEND_FUZZIFY\nFUZZIFY q\n    TERM up := (0, 0) (10, 1);\n"
+                        + "END_FUZZIFY\n", "BDIF", "    RULE 1 : IF p IS up AND q IS up THEN y IS a;\n");
+        Program program = Programs.analyze("g.fcl", text).program().orElseThrow();
+        FunctionBlock fb = program.functionBlocks().get(0);
+        CoverageGaps.Result result = CoverageGaps.of(fb, fb.ruleBlocks().get(0));
+        assertTrue(result.analysed());
+        assertEquals(1, result.undecidedCells());  // the open square (0, 10) x (0, 10), one cell
+        // merged along p first: all p with q <= 0, then p <= 0 with q > 0
+        assertEquals(List.of("q in (-inf, 0]", "p in (-inf, 0] and q in (0, inf)"), result.gaps().stream()
+                .map(b -> RulesCoverTheInputSpace.region(result.inputs(), b)).toList());
+    }
+
+    @Test
+    void moreInputsThanTheLimitAreNotAnalysed() {
+        StringBuilder inputs = new StringBuilder();
+        StringBuilder fuzzify = new StringBuilder();
+        List<String> parts = new ArrayList<>();
+        for (int i = 0; i <= CoverageGaps.MAX_INPUTS; i++) {
+            inputs.append("    x").append(i).append(" : REAL;\n");
+            fuzzify.append("FUZZIFY x").append(i).append("\n    TERM on := (0, 0) (1, 1);\nEND_FUZZIFY\n");
+            parts.add("x" + i + " IS on");
+        }
+        String text = program(inputs.toString(), fuzzify.toString(), "MIN",
+                "    RULE 1 : IF " + String.join(" AND ", parts) + " THEN y IS a;\n");
+        FunctionBlock fb = Programs.analyze("g.fcl", text).program().orElseThrow().functionBlocks().get(0);
+        CoverageGaps.Result result = CoverageGaps.of(fb, fb.ruleBlocks().get(0));
+        assertEquals("its conditions use 7 inputs (at most 6 are analysed)", result.notAnalysed().orElseThrow());
+        assertEquals(List.of(), messages(text));
+    }
+
+    @Test
+    void aCaseOfTheCorpusWhoseOneRuleLeavesTheLowerInputsUncovered() throws IOException {
+        // E-COA-001: one rule 'a IS on', on := (0, 0) (1, 1): nothing fires for a <= 0, and y falls back to 0
+        String text = Files.readString(Path.of("conformance/extension/E-COA-001.fcl"));
+        assertEquals(List.of("a in (-inf, 0]: no rule of block 'r' fires; y takes DEFAULT 0"), messages(text));
+    }
+
+    /**
+     * Every positive corpus case: inside each reported box the evaluator finds every rule of the block at 0, and at
+     * sampled inputs outside all boxes some rule above 0 (unless the block has undecided cells).
+     */
+    @Test
+    void onTheCorpusTheEvaluatorConfirmsEveryGapAndNoOther() throws IOException, EvaluationException {
+        int programs = 0;
+        int withGaps = 0;
+        int blocksChecked = 0;
+        List<Path> cases;
+        try (Stream<Path> files = Stream.of("basic", "extension", "open").flatMap(CoverageGapsTest::list)) {
+            cases = files.filter(p -> p.toString().endsWith(".fcl")).sorted().toList();
+        }
+        Random random = new Random(30);
+        for (Path file : cases) {
+            var analysis = Programs.analyze(file.toString(), Files.readString(file));
+            if (analysis.program().isEmpty()) {
+                continue;
+            }
+            programs++;
+            Program program = analysis.program().get();
+            boolean gaps = false;
+            for (FunctionBlock fb : program.functionBlocks()) {
+                for (RuleBlock rb : fb.ruleBlocks()) {
+                    CoverageGaps.Result result = CoverageGaps.of(fb, rb);
+                    if (!result.analysed()) {
+                        continue;
+                    }
+                    blocksChecked++;
+                    gaps |= !result.gaps().isEmpty();
+                    confirm(program, fb, rb, result, random, file.toString());
+                }
+            }
+            if (gaps) {
+                withGaps++;
+            }
+        }
+        assertTrue(programs > 100, "corpus read: " + programs);
+        assertTrue(blocksChecked > 100, "blocks analysed: " + blocksChecked);
+        System.out.println("coverage: " + withGaps + " of " + programs + " positive corpus programs have gaps");
+    }
+
+    private static Stream<Path> list(String dir) {
+        try {
+            return Files.list(Path.of("conformance", dir)).toList().stream();
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private static void confirm(Program program, FunctionBlock fb, RuleBlock rb, CoverageGaps.Result result,
+            Random random, String file) throws EvaluationException {
+        List<String> inputs = result.inputs();
+        List<double[]> breaks = new ArrayList<>();
+        for (String input : inputs) {
+            TreeSet<Double> xs = new TreeSet<>(List.of(0.0, 1.0));
+            for (Term t : fb.fuzzification(input).map(f -> f.terms()).orElse(List.of())) {
+                if (t.function() instanceof MembershipFunction.Points p) {
+                    for (Point pt : p.points()) {
+                        xs.add(((Literal) pt.x()).value());
+                    }
+                } else if (t.function() instanceof MembershipFunction.Singleton s) {
+                    xs.add(((Literal) s.value()).value());
+                }
+            }
+            breaks.add(xs.stream().mapToDouble(Double::doubleValue).toArray());
+        }
+        FunctionBlockInstance instance = Evaluator.load(program).newInstance(fb.name());
+        // inside each box: a point of it (its single value, its middle, or one beyond a finite end)
+        for (CoverageGaps.Box box : result.gaps()) {
+            double[] at = new double[inputs.size()];
+            for (int a = 0; a < at.length; a++) {
+                at[a] = inside(box.intervals().get(a));
+            }
+            assertEquals(0.0, maxDegree(instance, fb, rb, inputs, at), file + ": a rule fires inside the gap "
+                    + RulesCoverTheInputSpace.region(inputs, box));
+        }
+        if (result.undecidedCells() > 0) {
+            return;
+        }
+        // outside: breakpoints, their neighbours and random values, in random combinations
+        for (int trial = 0; trial < 400; trial++) {
+            double[] at = new double[inputs.size()];
+            for (int a = 0; a < at.length; a++) {
+                double[] b = breaks.get(a);
+                double lo = b[0] - 3;
+                double hi = b[b.length - 1] + 3;
+                int pick = random.nextInt(3);
+                at[a] = pick == 0 ? b[random.nextInt(b.length)] : lo + (hi - lo) * random.nextDouble();
+            }
+            boolean inGap = result.gaps().stream().anyMatch(box -> contains(box, at));
+            double degree = maxDegree(instance, fb, rb, inputs, at);
+            if (inGap) {
+                assertEquals(0.0, degree, file + ": a rule fires at " + java.util.Arrays.toString(at));
+            } else {
+                assertTrue(degree > 0, file + ": no rule of " + rb.name() + " fires at " + inputs + " = "
+                        + java.util.Arrays.toString(at) + ", outside every reported gap");
+            }
+        }
+    }
+
+    private static double inside(CoverageGaps.Interval in) {
+        if (in.point()) {
+            return in.low();
+        }
+        if (Double.isInfinite(in.low()) && Double.isInfinite(in.high())) {
+            return 0.5;
+        }
+        if (Double.isInfinite(in.low())) {
+            return in.high() - 1;
+        }
+        if (Double.isInfinite(in.high())) {
+            return in.low() + 1;
+        }
+        return (in.low() + in.high()) / 2;
+    }
+
+    private static boolean contains(CoverageGaps.Box box, double[] at) {
+        for (int a = 0; a < at.length; a++) {
+            CoverageGaps.Interval in = box.intervals().get(a);
+            boolean ok = (in.lowClosed() ? at[a] >= in.low() : at[a] > in.low())
+                    && (in.highClosed() ? at[a] <= in.high() : at[a] < in.high());
+            if (!ok) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static double maxDegree(FunctionBlockInstance instance, FunctionBlock fb, RuleBlock rb,
+            List<String> inputs, double[] at) throws EvaluationException {
+        instance.reset();
+        for (var v : fb.variables(VariableKind.INPUT)) {
+            instance.set(v.name(), 0.5);
+        }
+        for (int a = 0; a < at.length; a++) {
+            instance.set(inputs.get(a), at[a]);
+        }
+        Trace trace = new Trace();
+        instance.evaluate(trace);
+        return trace.ruleDegrees().stream().filter(d -> d.ruleBlock().equalsIgnoreCase(rb.name()))
+                .mapToDouble(Trace.RuleDegree::degree).max().orElse(0);
+    }
+}
