@@ -130,10 +130,19 @@ final class CodeActions {
         Range remove = alone ? new Range(src.position(lineStart), src.position(lineEnd < 0 ? src.text().length() : lineEnd + 1))
                 : new Range(src.position(src.offset(first.line(), first.column())), src.position(stop));
         Outline.Tok header = o.tokens().get(ruleBlock + 1);
-        Position afterHeader = src.position(src.offset(header.line(), header.endColumn()));
-        String indent = " ".repeat(o.tokens().get(ruleBlock).column() + 4);
+        // before the block's first rule (or its end): after AND, OR and ACT, where 5.4 places accumulation
+        int rule = next(o, ruleBlock, FclLexer.RULE);
+        int end = next(o, ruleBlock, FclLexer.END_RULEBLOCK);
+        int before = rule >= 0 && (end < 0 || rule < end) ? rule : end;
+        if (before < 0) {
+            return Optional.empty();
+        }
+        Outline.Tok place = o.tokens().get(before);
+        Position lineStartOfPlace = src.position(src.offset(place.line(), 0));
+        String indent = " ".repeat(before == rule ? place.column() : place.column() + 4);
         return Optional.of(action("Move '" + statement + "' into RULEBLOCK " + header.text(), s, d, List.of(
-                new TextEdit(remove, ""), new TextEdit(new Range(afterHeader, afterHeader), "\n" + indent + statement))));
+                new TextEdit(remove, ""), new TextEdit(new Range(lineStartOfPlace, lineStartOfPlace),
+                        indent + statement + "\n"))));
     }
 
     private static int tokenAt(Snapshot s, Diagnostic d) {

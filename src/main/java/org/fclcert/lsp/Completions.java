@@ -76,20 +76,20 @@ final class Completions {
                 }
             }
         }
+        boolean inRule = inSection(tokens, n, FclLexer.RULE, -1, -1, FclLexer.SEMI);
+        boolean inConclusion = inRule && inSection(tokens, n, FclLexer.THEN, -1, -1, FclLexer.SEMI);
         if (last == FclLexer.IS || (last == FclLexer.NOT && prev == FclLexer.IS)) {
             int is = last == FclLexer.IS ? n - 1 : n - 2;
             if (is > 0 && tokens.get(is - 1).isName()) {
                 String variable = tokens.get(is - 1).text();
                 List<CompletionItem> out = names(outline.terms(block, variable), CompletionItemKind.EnumMember,
                         "term of " + variable);
-                if (last == FclLexer.IS) {
+                if (last == FclLexer.IS && !inConclusion) {
                     out.addAll(keywords(List.of("NOT")));
                 }
                 return out;
             }
         }
-        boolean inRule = inSection(tokens, n, FclLexer.RULE, -1, -1, FclLexer.SEMI);
-        boolean inConclusion = inRule && inSection(tokens, n, FclLexer.THEN, -1, -1, FclLexer.SEMI);
         List<CompletionItem> out = new ArrayList<>();
         if ((inRule && !inConclusion && (last == FclLexer.IF || last == FclLexer.AND || last == FclLexer.OR
                 || last == FclLexer.NOT || last == FclLexer.LPAREN)) || last == FclLexer.WITH || last == FclLexer.FUZZIFY) {
@@ -97,7 +97,14 @@ final class Completions {
         } else if ((inConclusion && (last == FclLexer.THEN || last == FclLexer.COMMA)) || last == FclLexer.DEFUZZIFY) {
             out.addAll(names(outline.variables(block, VariableKind.OUTPUT), CompletionItemKind.Variable, "VAR_OUTPUT"));
         }
-        out.addAll(keywords(ExpectedKeywords.after(before)));
+        // the grammar is asked from the function block the cursor is in (program ::= function blocks)
+        int fb = n - 1;
+        while (fb >= 0 && tokens.get(fb).type() != FclLexer.FUNCTION_BLOCK) {
+            fb--;
+        }
+        String from = fb < 0 ? before
+                : before.substring(s.source().offset(tokens.get(fb).line(), tokens.get(fb).column()));
+        out.addAll(keywords(ExpectedKeywords.after(from)));
         return out;
     }
 

@@ -74,7 +74,12 @@ public final class FclLanguageServer implements LanguageServer, LanguageClientAw
      * else 1.
      */
     public static int serve(InputStream in, OutputStream out) {
-        FclLanguageServer server = new FclLanguageServer();
+        return new FclLanguageServer().run(in, out);
+    }
+
+    /** {@link #serve} with this server (tests keep it to look at its state). */
+    int run(InputStream in, OutputStream out) {
+        FclLanguageServer server = this;
         ExecutorService messages = Executors.newCachedThreadPool(threads("fclcert-lsp"));
         try {
             Launcher<LanguageClient> launcher = new LSPLauncher.Builder<LanguageClient>().setLocalService(server)

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Function;
+import java.util.function.Supplier;
 import org.eclipse.lsp4j.CodeAction;
 import org.eclipse.lsp4j.CodeActionParams;
 import org.eclipse.lsp4j.Command;
@@ -77,39 +78,39 @@ final class FclTextDocumentService implements TextDocumentService {
 
     @Override
     public CompletableFuture<Hover> hover(HoverParams params) {
-        return answer("hover", params.getTextDocument(), s -> Hovers.at(s, params.getPosition()).orElse(null), null);
+        return answer("hover", params::getTextDocument, s -> Hovers.at(s, params.getPosition()).orElse(null), null);
     }
 
     @Override
     public CompletableFuture<Either<List<? extends Location>, List<? extends LocationLink>>> definition(
             DefinitionParams params) {
-        return answer("definition", params.getTextDocument(),
+        return answer("definition", params::getTextDocument,
                 s -> Either.forLeft(Navigation.definition(s, params.getPosition())), Either.forLeft(List.of()));
     }
 
     @Override
     public CompletableFuture<List<? extends Location>> references(ReferenceParams params) {
         boolean declaration = params.getContext() == null || params.getContext().isIncludeDeclaration();
-        return answer("references", params.getTextDocument(),
+        return answer("references", params::getTextDocument,
                 s -> Navigation.references(s, params.getPosition(), declaration), List.of());
     }
 
     @Override
     public CompletableFuture<List<Either<SymbolInformation, DocumentSymbol>>> documentSymbol(DocumentSymbolParams params) {
-        return answer("documentSymbol", params.getTextDocument(),
+        return answer("documentSymbol", params::getTextDocument,
                 s -> Navigation.symbols(s).stream().map(Either::<SymbolInformation, DocumentSymbol>forRight).toList(),
                 List.of());
     }
 
     @Override
     public CompletableFuture<Either<List<CompletionItem>, CompletionList>> completion(CompletionParams params) {
-        return answer("completion", params.getTextDocument(),
+        return answer("completion", params::getTextDocument,
                 s -> Either.forLeft(Completions.at(s, params.getPosition())), Either.forLeft(List.of()));
     }
 
     @Override
     public CompletableFuture<List<? extends TextEdit>> formatting(DocumentFormattingParams params) {
-        return answer("formatting", params.getTextDocument(), s -> {
+        return answer("formatting", params::getTextDocument, s -> {
             Formatting.Result r = Formatting.of(s);
             if (r.refusal() != null) {
                 server.show(MessageType.Warning, "fclcert: " + r.refusal());
@@ -120,16 +121,16 @@ final class FclTextDocumentService implements TextDocumentService {
 
     @Override
     public CompletableFuture<List<Either<Command, CodeAction>>> codeAction(CodeActionParams params) {
-        return answer("codeAction", params.getTextDocument(),
+        return answer("codeAction", params::getTextDocument,
                 s -> CodeActions.in(s, params.getRange()).stream().map(Either::<Command, CodeAction>forRight).toList(),
                 List.of());
     }
 
     /** A request on a document: answered from its snapshot, {@code none} for a document not open. */
-    private <T> CompletableFuture<T> answer(String what, TextDocumentIdentifier document, Function<Snapshot, T> work,
-            T none) {
+    private <T> CompletableFuture<T> answer(String what, Supplier<TextDocumentIdentifier> document,
+            Function<Snapshot, T> work, T none) {
         return server.guarded(what, () -> {
-            Optional<Snapshot> s = server.documents().snapshot(document.getUri());
+            Optional<Snapshot> s = server.documents().snapshot(document.get().getUri());
             return s.isEmpty() ? none : work.apply(s.get());
         }, none);
     }

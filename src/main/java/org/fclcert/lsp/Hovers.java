@@ -84,7 +84,7 @@ final class Hovers {
                 + v.kind().keyword() + " of " + b.name() + ", line " + v.location().line());
         v.initialValue().ifPresent(l -> s.append("; initial value ").append(LiteralText.of(l)));
         Optional<Defuzzification> d = b.defuzzification(v.name());
-        d.flatMap(Defuzzification::range).ifPresent(r -> s.append("\n\nRANGE := (").append(LiteralText.of(r.min()))
+        d.flatMap(Defuzzification::range).ifPresent(r -> s.append("\n\nRANGE (").append(LiteralText.of(r.min()))
                 .append(" .. ").append(LiteralText.of(r.max())).append(")"));
         d.flatMap(Defuzzification::method).ifPresent(m -> s.append("\n\nMETHOD : ").append(m.value().keyword()));
         d.flatMap(Defuzzification::defaultValue).ifPresent(dv -> s.append("\n\nDEFAULT := ").append(

@@ -282,6 +282,10 @@ final class Outline {
                 add(Kind.VARIABLE, fb, null, t.text(), i, false, null);
             }
         }
+        if (block != null && !tokens.isEmpty()) {
+            // a function block not yet closed (the text being typed) runs to the end
+            spans.add(new Span(Kind.FUNCTION_BLOCK, block, block, blockStart, tokens.size() - 1));
+        }
     }
 
     private void add(Kind kind, String block, String owner, String name, int token, boolean declaration,

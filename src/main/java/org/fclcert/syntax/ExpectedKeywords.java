@@ -9,6 +9,7 @@ import org.antlr.v4.runtime.Parser;
 import org.antlr.v4.runtime.RecognitionException;
 import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
 
 /**
@@ -27,6 +28,8 @@ public final class ExpectedKeywords {
         lexer.removeErrorListeners();
         FclParser parser = new FclParser(new CommonTokenStream(lexer));
         parser.removeErrorListeners();
+        // SLL: no full-context retries, so a deeply nested or long broken text costs one pass
+        parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
         IntervalSet[] atEnd = {null};
         parser.addErrorListener(new BaseErrorListener() {
             @Override
