@@ -30,6 +30,7 @@ import org.junit.jupiter.api.Test;
  *
  * <pre>
  *   front ends        cli, maven           the command line; the Maven plugin
+ *   editor            lsp                  the language server, which the command line starts (fclcert lsp)
  *   flows             orchestration, fuzz  one whole job each: certify (corpus, probes, reports); fuzz
  *   reports           report               verdicts of clause 6.1 and their renderings, from case results
  *   harness           harness              runs corpus cases against an implementation, results.jsonl
@@ -50,6 +51,7 @@ class PackageLayeringTest {
     /** The layers, top to bottom (package names relative to {@code org.fclcert}). */
     static final List<List<String>> LAYERS = List.of(
             List.of("cli", "maven"),
+            List.of("lsp"),
             List.of("orchestration", "fuzz"),
             List.of("report"),
             List.of("harness"),

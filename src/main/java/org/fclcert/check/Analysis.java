@@ -23,7 +23,14 @@ public record Analysis(Optional<Program> program, List<Diagnostic> diagnostics) 
 
     /** Reads the text; when it has no syntax error (or only ones a one-token repair mends), checks the program. */
     public static Analysis analyze(FclReader reader, String sourceName, String text) {
-        ReadResult read = reader.read(sourceName, text);
+        return of(reader.read(sourceName, text));
+    }
+
+    /**
+     * Checks what a reader made of a text, as {@link #analyze} does (for a caller that keeps the reading too,
+     * such as the language server, which navigates the repaired program of a text with errors).
+     */
+    public static Analysis of(ReadResult read) {
         List<Diagnostic> all = new ArrayList<>(read.diagnostics());
         if (!read.hasErrors() && read.program().isPresent()) {
             all.addAll(new Checker().check(read.program().get()));

@@ -29,6 +29,7 @@ import picocli.CommandLine.Command;
             EvalCommand.class,
             PlotCommand.class,
             FuzzCommand.class,
+            LspCommand.class,
         })
 public final class Main implements java.util.concurrent.Callable<Integer> {
     @CommandLine.Spec
