@@ -2,14 +2,15 @@ package org.fclcert.cli;
 
 import java.time.Duration;
 import org.fclcert.iut.IutOptions;
+import org.fclcert.iut.Iuts;
 import org.fclcert.orchestration.Defaults;
 import picocli.CommandLine.Option;
 
 /** The options that name and open the implementation under test, shared by {@code certify}, {@code probe} and {@code fuzz}. */
 final class IutMixin {
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR"
-                    + " (default: ${DEFAULT-VALUE})")
+            completionCandidates = IutSpecs.class,
+            description = "${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})")
     String spec;
 
     @Option(names = "--classpath", paramLabel = "PATHS",
@@ -20,6 +21,14 @@ final class IutMixin {
             converter = DurationConverter.class,
             description = "Per-request timeout for the implementation, e.g. 5s, 500ms (default: ${DEFAULT-VALUE})")
     Duration timeout;
+
+    /** {@code --iut}'s specs for picocli's help text and completion, drawn from {@link Iuts#KINDS}. */
+    static final class IutSpecs implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return Iuts.syntaxes().iterator();
+        }
+    }
 
     /** The options for opening the implementation: the timeout and the --classpath. */
     IutOptions options() {
