@@ -47,6 +47,7 @@ public final class DialectWriters {
             case FFLL -> new FfllWriter();
             case JFUZZYLOGIC -> new JFuzzyLogicWriter();
             case FUZZYLITE -> new FuzzyliteWriter();
+            case FLL, FIS -> null;
         });
     }
 

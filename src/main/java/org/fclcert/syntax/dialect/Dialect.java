@@ -20,7 +20,9 @@ public enum Dialect {
     STRICT("strict", "IEC 61131-7 as written", "IEC 61131-7", StrictReader::new),
     FFLL("ffll", "Free Fuzzy Logic Library (FFLL)", "FFLL's FCL", FfllReader::new),
     JFUZZYLOGIC("jfuzzylogic", "jFuzzyLogic", "jFuzzyLogic's FCL", JFuzzyLogicReader::new),
-    FUZZYLITE("fuzzylite", "fuzzylite", "fuzzylite's FCL", FuzzyliteReader::new);
+    FUZZYLITE("fuzzylite", "fuzzylite", "fuzzylite's FCL", FuzzyliteReader::new),
+    FLL("fll", "fuzzylite's FLL", "fuzzylite's own format (.fll)", FllReader::new),
+    FIS("fis", "MATLAB FIS", "MATLAB's .fis text (Mamdani, Sugeno)", FisReader::new);
 
     private final String cliName;
     private final String displayName;
