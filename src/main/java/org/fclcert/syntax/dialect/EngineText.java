@@ -34,6 +34,7 @@ final class EngineText {
     private final List<String> lines;
     private final String[] fcl;
     private final List<Diagnostic> errors = new ArrayList<>();
+    private final List<Diagnostic> warnings = new ArrayList<>();
     private String end = "";
     private String pending = "";
 
@@ -71,6 +72,11 @@ final class EngineText {
         end = end.isEmpty() ? all : end + " " + all;
     }
 
+    /** A warning on line {@code index} (0-based): where a library reads the line otherwise than fclcert. */
+    void warn(int index, DialectCode code, String message) {
+        warnings.add(Diagnostic.warning(at(index + 1), code, message));
+    }
+
     /** An error of the file's own syntax on line {@code index} (0-based), at its first written column. */
     void error(int index, DialectCode code, String message) {
         errors.add(Diagnostic.error(at(index + 1), code, message));
@@ -102,13 +108,16 @@ final class EngineText {
     ReadResult read() {
         if (!errors.isEmpty()) {
             List<Diagnostic> sorted = new ArrayList<>(errors);
+            sorted.addAll(warnings);
             sorted.sort(Comparator.comparing(Diagnostic::location));
             return new ReadResult(Optional.empty(), sorted);
         }
         ReadResult r = DialectParser.read(source, fcl(), FUZZYLITE);
-        List<Diagnostic> located = r.diagnostics().stream()
+        List<Diagnostic> located = new ArrayList<>(r.diagnostics().stream()
                 .map(d -> new Diagnostic(at(Math.min(d.location().line(), lines.size())), d.severity(),
-                        d.diagnosticCode(), d.message())).toList();
+                        d.diagnosticCode(), d.message())).toList());
+        located.addAll(warnings);
+        located.sort(Comparator.comparing(Diagnostic::location));
         return new ReadResult(r.program().map(this::ownFeatures), located);
     }
 

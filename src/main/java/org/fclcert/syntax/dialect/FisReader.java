@@ -306,6 +306,10 @@ public final class FisReader implements DialectReader {
                 b.append(" METHOD : ").append(m).append(';');
             }
             String agg = system.getOrDefault("AggMethod", "max");
+            if (agg.equalsIgnoreCase("sum")) {
+                t.warn(i, DialectCode.FIS_SUM, "AggMethod 'sum' of '" + v.name() + "': read as MATLAB and Octave add"
+                        + " the rules' sets (ACCU SUM); fuzzylite 6 reads 'sum' as the algebraic sum (probor)");
+            }
             String a = S_NORMS.get(agg.toLowerCase(Locale.ROOT));
             if (a == null) {
                 t.error(i, DialectCode.SYNTAX, "AggMethod '" + agg + "' is none of " + String.join(", ",
@@ -454,7 +458,10 @@ public final class FisReader implements DialectReader {
         List<String> lines = (text == null ? "" : text).lines().toList();
         for (int i = 0; i < lines.size(); i++) {
             String s = lines.get(i).strip();
-            if (SECTION.matcher(s).matches()) {
+            if (s.equals("[System]")) {
+                // the header of a whole-file format no FCL dialect has: decisive on its own
+                out.add(new Giveaway("FIS section " + s, i + 1, 100));
+            } else if (SECTION.matcher(s).matches()) {
                 out.add(new Giveaway("FIS section " + s, i + 1, 6));
             } else if (MF.matcher(s).matches()) {
                 out.add(new Giveaway("FIS membership function", i + 1, 6));

@@ -267,7 +267,8 @@ public final class FllReader implements DialectReader {
             for (String key : List.of("Engine:", "InputVariable:", "OutputVariable:", "RuleBlock:", "term:", "rule:",
                     "range:", "defuzzifier:", "aggregation:", "conjunction:", "implication:")) {
                 if (s.startsWith(key)) {
-                    out.add(new Giveaway("FLL '" + key + "'", i + 1, 6));
+                    // 'Engine:' heads a whole-file format no FCL dialect has: decisive on its own
+                    out.add(new Giveaway("FLL '" + key + "'", i + 1, key.equals("Engine:") ? 100 : 6));
                 }
             }
         }
