@@ -102,7 +102,8 @@ final class CertifyCommand implements Callable<Integer> {
     FailOn failOn;
 
     @Option(names = "--present-as", paramLabel = "LAYOUT", defaultValue = "auto",
-            description = "auto | none | fuzzylite | jfuzzylogic | ffll: also send each positive case the layout can"
+            completionCandidates = PresentAsNames.class,
+            description = "${COMPLETION-CANDIDATES}: also send each positive case the layout can"
                     + " express written in that library's layout, the semantic axis (default: ${DEFAULT-VALUE}: the"
                     + " built-in library adapters in their library's layout, none for reference, java: and process:)")
     PresentAs presentAs;

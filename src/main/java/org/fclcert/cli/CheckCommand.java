@@ -35,7 +35,8 @@ final class CheckCommand implements Callable<Integer> {
             description = "text, json or sarif (SARIF 2.1.0, for code scanning in CI) (default: ${DEFAULT-VALUE})")
     Format format;
 
-    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
+            completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION)
     DialectName dialect;
 
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "FCL source files; - reads standard input"

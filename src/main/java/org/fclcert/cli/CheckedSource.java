@@ -25,14 +25,14 @@ record CheckedSource(String text, Dialect dialect, Optional<Program> program) {
         String file = SourceFiles.name(path);
         Dialect dialect;
         Analysis analysis;
-        if (name == DialectName.auto) {
+        if (name.auto()) {
             DialectReaders.Choice choice = DialectReaders.auto(text);
             err.println("fclcert: " + file + ": " + choice.explanation());
             dialect = choice.dialect();
             analysis = Analysis.analyze(choice.reader(), file, text);
         } else {
             dialect = name.resolve(file, text, err);
-            analysis = Analysis.analyze(DialectReaders.reader(dialect), file, text);
+            analysis = Analysis.analyze(dialect.reader(), file, text);
         }
         DiagnosticPrinter.text(err, analysis.diagnostics());
         name.hintWhenLibraryDialect(file, text, analysis.diagnostics(), err);

@@ -23,12 +23,12 @@ import picocli.CommandLine.Spec;
 
 /** {@code fclcert convert}: a dialect program written as standard FCL, with what converted how. */
 @Command(name = "convert", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
-        description = "Convert an FCL program written in a library's dialect (FFLL, jFuzzyLogic, fuzzylite) to "
+        description = "Convert a program written in a library's format (--from: FFLL, jFuzzyLogic or fuzzylite FCL, ...) to "
                 + "standard IEC 61131-7 FCL in canonical layout. Every non-standard construct is listed on stderr "
                 + "with its place and how it converted: exactly, approximated (with the largest membership error) "
                 + "or not expressible. Curves are approximated only when --approximate-points is given; a construct "
                 + "that is not expressible makes the conversion refused unless --allow-lossy is given. With --to "
-                + "ffll|jfuzzylogic|fuzzylite the program is written in that library's layout instead: what the "
+                + "and a library's format the program is written in that library's layout instead: what the "
                 + "library cannot say is listed (FCL-X1nn), what it is known to compute otherwise too (FCL-X2nn), and "
                 + "the written text is read back with fclcert's reader of that dialect and evaluated against the "
                 + "original on a grid.",
@@ -38,17 +38,27 @@ import picocli.CommandLine.Spec;
                 + " differently) and --allow-lossy was not given",
             ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
 final class ConvertCommand implements Callable<Integer> {
+    /** What {@code --to} takes: strict and every format with a writer ({@link DialectWriters#libraries()}). */
+    static final class Targets implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            List<String> names = new java.util.ArrayList<>(List.of(Dialect.STRICT.cliName()));
+            DialectWriters.libraries().forEach(d -> names.add(d.cliName()));
+            return names.iterator();
+        }
+    }
+
     @Spec
     CommandSpec spec;
 
     @Option(names = "--from", defaultValue = "auto", paramLabel = "DIALECT",
-            description = "the dialect FILE is written in: strict, ffll, jfuzzylogic, fuzzylite or auto"
-                    + " (default: ${DEFAULT-VALUE})")
+            completionCandidates = DialectName.Names.class,
+            description = "the format FILE is written in: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})")
     DialectName from;
 
     @Option(names = "--to", defaultValue = "strict", paramLabel = "DIALECT",
-            description = "the layout to write: strict (standard FCL), ffll, jfuzzylogic or fuzzylite"
-                    + " (default: ${DEFAULT-VALUE})")
+            completionCandidates = ConvertCommand.Targets.class,
+            description = "the layout to write: ${COMPLETION-CANDIDATES} (strict: standard FCL) (default: ${DEFAULT-VALUE})")
     DialectName to;
 
     @Option(names = "--approximate-points", defaultValue = "0", paramLabel = "N",
@@ -83,12 +93,13 @@ final class ConvertCommand implements Callable<Integer> {
                 return ExitCodes.ERRORS;
             }
             Dialect dialect = source.dialect();
-            if (to == DialectName.auto) {
-                err.println("fclcert: --to takes strict, ffll, jfuzzylogic or fuzzylite, not auto");
+            if (to.auto() || !to.is(Dialect.STRICT) && !DialectWriters.libraries().contains(to.dialect().get())) {
+                err.println("fclcert: --to takes " + String.join(", ", new Targets()) + ", not "
+                        + to.dialect().map(Dialect::cliName).orElse("auto"));
                 return ExitCodes.USAGE;
             }
-            if (to != DialectName.strict) {
-                return toLibrary(source, Dialect.byCliName(to.name()).orElseThrow(), out, err);
+            if (!to.is(Dialect.STRICT)) {
+                return toLibrary(source, to.dialect().get(), out, err);
             }
             StandardConversion.Result result = new StandardConversion()
                     .convert(source.program().get(), new StandardConversion.Options(approximatePoints));

@@ -38,7 +38,8 @@ final class EvalCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE", description = "an FCL source file")
     String file;
 
-    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
+            completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION)
     DialectName dialect;
 
     @Option(names = "--block", paramLabel = "NAME", description = "function block to evaluate (default: the first)")

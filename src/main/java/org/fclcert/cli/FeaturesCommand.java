@@ -39,7 +39,8 @@ final class FeaturesCommand implements Callable<Integer> {
             description = "text or json (default: ${DEFAULT-VALUE})")
     OutputFormat format;
 
-    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
+            completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION)
     DialectName dialect;
 
     @Parameters(paramLabel = "FILE", description = "an FCL source file, or - for standard input")

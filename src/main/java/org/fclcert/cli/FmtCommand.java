@@ -31,7 +31,8 @@ final class FmtCommand implements Callable<Integer> {
     @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
     boolean dropComments;
 
-    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
+            completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION
             + "; a dialect program is written as standard FCL when it converts exactly (else see 'fclcert convert')")
     DialectName dialect;
 

@@ -70,7 +70,8 @@ final class FuzzCommand implements Callable<Integer> {
     int jobs;
 
     @Option(names = "--present-as", paramLabel = "LAYOUT", defaultValue = "auto",
-            description = "auto | none | fuzzylite | jfuzzylogic | ffll: send each program written in that library's"
+            completionCandidates = PresentAsNames.class,
+            description = "${COMPLETION-CANDIDATES}: send each program written in that library's"
                     + " layout, when fclcert can vouch for the text, else skip it with the reason counted (default:"
                     + " ${DEFAULT-VALUE}: the built-in library adapters in their library's layout, standard FCL for"
                     + " reference, java: and process:)")

@@ -5,6 +5,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.fclcert.iut.IutOptions;
+import org.fclcert.iut.Iuts;
 import org.fclcert.orchestration.Defaults;
 import org.fclcert.sandbox.Limits;
 import org.fclcert.sandbox.SandboxSettings;
@@ -13,8 +14,8 @@ import picocli.CommandLine.Option;
 /** The options that name and open the implementation under test, shared by {@code certify}, {@code probe} and {@code fuzz}. */
 final class IutMixin {
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR"
-                    + " (default: ${DEFAULT-VALUE})")
+            completionCandidates = IutSpecs.class,
+            description = "${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE})")
     String spec;
 
     @Option(names = "--classpath", paramLabel = "PATHS",
@@ -68,6 +69,14 @@ final class IutMixin {
                 // reported below
             }
             throw new picocli.CommandLine.TypeConversionException("'" + value + "' is not a count of at least 1");
+        }
+    }
+
+    /** {@code --iut}'s specs for picocli's help text and completion, drawn from {@link Iuts#KINDS}. */
+    static final class IutSpecs implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return Iuts.syntaxes().iterator();
         }
     }
 

@@ -4,6 +4,7 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import org.fclcert.orchestration.PresentAs;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -59,6 +60,9 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         CommandLine cli = new CommandLine(new Main());
         // enum options are typed (--fail-on, --level, --format) and written in lower case
         cli.setCaseInsensitiveEnumValuesAllowed(true);
+        // the formats and layouts are drawn from their registries (Dialect, DialectWriters), not enums of cli's own
+        cli.registerConverter(DialectName.class, new DialectName.Converter());
+        cli.registerConverter(PresentAs.class, PresentAsNames::convert);
         cli.setOut(out);
         cli.setErr(err);
         cli.setParameterExceptionHandler((e, args) -> {

@@ -39,7 +39,8 @@ final class PlotCommand implements Callable<Integer> {
             description = "directory for the SVG files (default: ${DEFAULT-VALUE})")
     String outDir;
 
-    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT", description = DialectName.DESCRIPTION)
+    @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
+            completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION)
     DialectName dialect;
 
     @Option(names = "--block", paramLabel = "NAME", description = "function block to draw (default: the first)")

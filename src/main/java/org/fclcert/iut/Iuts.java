@@ -1,14 +1,104 @@
 package org.fclcert.iut;
 
 import java.util.List;
+import java.util.Optional;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
- * Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS}, {@code process:COMMAND},
- * or a built-in adapter: fuzzylite 6.0 ({@code fuzzylite} or {@code fuzzylite:PATH}), jfuzzylite 6.0.1
- * ({@code jfuzzylite} or {@code jfuzzylite:JAR}) and jFuzzyLogic ({@code jfuzzylogic:JAR}).
+ * The one list of the ways to reach an implementation under test ({@link #KINDS}) — {@code reference},
+ * {@code java:CLASS}, {@code process:COMMAND} and the built-in library adapters — and {@link #open(String, IutOptions)},
+ * which opens one from its spec. {@code --iut}'s help and completion, the Maven plugin's messages,
+ * {@code --present-as auto} and the reports' "not observable" notes are all drawn from here: adding a built-in adapter
+ * is its class and one entry.
  */
 public final class Iuts {
     private Iuts() {}
+
+    /** Opens an implementation from the text after its kind's name ({@code ""} when the spec has none). */
+    @FunctionalInterface
+    public interface Opener {
+        ImplementationUnderTest open(String spec, String argument, IutOptions options) throws IutException;
+    }
+
+    /** Whether a kind's spec takes {@code :ARGUMENT} after its name. */
+    public enum Argument { NONE, OPTIONAL, REQUIRED }
+
+    /**
+     * One kind of implementation under test.
+     *
+     * @param name         the spec's first word ({@code fuzzylite})
+     * @param syntax       the spec as help texts show it ({@code fuzzylite[:PATH]})
+     * @param summary      what it is, a few words for help texts and docs
+     * @param argument     whether {@code :ARGUMENT} follows the name
+     * @param presentedAs  the layout {@code --present-as auto} sends its positive cases in (empty: standard FCL only)
+     * @param unobservable what the adapter cannot observe of its library, sentences for the reports
+     * @param opener       opens a session
+     */
+    public record Kind(String name, String syntax, String summary, Argument argument, Optional<Dialect> presentedAs,
+            List<String> unobservable, Opener opener) {
+        public Kind {
+            unobservable = List.copyOf(unobservable);
+        }
+
+        /** Whether {@code spec} (stripped) names this kind. */
+        public boolean matches(String spec) {
+            return switch (argument) {
+                case NONE -> spec.equals(name);
+                case OPTIONAL -> spec.equals(name) || spec.startsWith(name + ":");
+                case REQUIRED -> spec.startsWith(name + ":");
+            };
+        }
+
+        String argumentOf(String spec) {
+            return spec.length() > name.length() ? spec.substring(name.length() + 1) : "";
+        }
+    }
+
+    /** Every kind, in the order help texts list them; a spec is matched against them in this order. */
+    public static final List<Kind> KINDS = List.of(
+            new Kind("reference", "reference", "fclcert's own reference evaluator", Argument.NONE, Optional.empty(),
+                    List.of(), (spec, argument, options) -> new ReferenceIut()),
+            new Kind("java", "java:CLASS", "a class implementing the vendor SPI (org.fclcert.iut.spi), on --classpath",
+                    Argument.REQUIRED, Optional.empty(), List.of(),
+                    (spec, argument, options) -> JavaIut.open(spec, argument.strip(), options)),
+            new Kind("process", "process:COMMAND", "a program speaking the JSON-lines protocol (docs/iut-protocol.md)",
+                    Argument.REQUIRED, Optional.empty(), List.of(),
+                    (spec, argument, options) -> new ProcessIut(spec, CommandLineSplitter.split(argument), options)),
+            new Kind(FuzzyliteIut.SPEC, "fuzzylite[:PATH]", "the fuzzylite 6.0 command line (Debian package fuzzylite)",
+                    Argument.OPTIONAL, Optional.of(Dialect.FUZZYLITE), List.of(
+                            "fuzzylite silently drops a rule it cannot read (upper-case IF, IS NOT, comma-separated"
+                                    + " conclusions, an undefined term) and still loads: such a rule shows only as wrong values",
+                            "it builds only the first function block of a program",
+                            "see docs/iut-protocol.md, \"fuzzylite\""),
+                    (spec, argument, options) -> FuzzyliteIut.open(spec, options)),
+            new Kind(JfuzzyliteImplementation.SPEC, "jfuzzylite[:JAR]", "jfuzzylite 6.0.1 in a JVM of its own",
+                    Argument.OPTIONAL, Optional.of(Dialect.FUZZYLITE), List.of(
+                            "jfuzzylite builds only the first function block of a program",
+                            "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                                    + " when an instance is made, so a program used directly must set every input",
+                            "a call that hangs cannot be killed in process: it is abandoned on its thread",
+                            "see docs/iut-protocol.md, \"jfuzzylite\""),
+                    (spec, argument, options) -> JfuzzyliteImplementation.open(spec, options)),
+            new Kind(JFuzzyLogicIut.SPEC, "jfuzzylogic:JAR", "jFuzzyLogic, its jar run in a JVM of its own",
+                    Argument.OPTIONAL, Optional.of(Dialect.JFUZZYLOGIC), List.of(
+                            "jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
+                                    + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
+                            "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
+                                    + " when an instance is made, so a program used directly must set every input",
+                            "it runs in a JVM of its own; its static state lives as long as that JVM",
+                            "see docs/iut-protocol.md, \"jFuzzyLogic\""),
+                    (spec, argument, options) -> JFuzzyLogicIut.open(spec, options)));
+
+    /** The kind a spec names, if any. */
+    public static Optional<Kind> kind(String spec) {
+        String s = spec == null ? "" : spec.strip();
+        return KINDS.stream().filter(k -> k.matches(s)).findFirst();
+    }
+
+    /** The specs as help texts show them ({@code reference}, {@code java:CLASS}, ..., {@code fuzzylite[:PATH]}). */
+    public static List<String> syntaxes() {
+        return KINDS.stream().map(Kind::syntax).toList();
+    }
 
     /**
      * Opens a session. Nothing is started eagerly beyond what is needed to check the spec: a process
@@ -21,29 +111,15 @@ public final class Iuts {
         if (spec == null || spec.isBlank()) {
             throw new IutException(IutException.Kind.INFRA, "no implementation under test given");
         }
-        spec = spec.strip();
-        if (spec.equals("reference")) {
-            return new ReferenceIut();
-        }
-        if (spec.startsWith("java:")) {
-            return JavaIut.open(spec, spec.substring("java:".length()).strip(), options);
-        }
-        if (spec.equals(FuzzyliteIut.SPEC) || spec.startsWith(FuzzyliteIut.SPEC + ":")) {
-            return FuzzyliteIut.open(spec, options);
-        }
-        if (spec.equals(JfuzzyliteImplementation.SPEC) || spec.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
-            return JfuzzyliteImplementation.open(spec, options);
-        }
-        if (spec.equals(JFuzzyLogicIut.SPEC) || spec.startsWith(JFuzzyLogicIut.SPEC + ":")) {
-            return JFuzzyLogicIut.open(spec, options);
-        }
-        if (spec.startsWith("process:")) {
-            List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
-            return new ProcessIut(spec, command, options);
-        }
-        throw new IutException(
-                IutException.Kind.INFRA,
-                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR] or jfuzzylogic:JAR");
+        String s = spec.strip();
+        Kind kind = kind(s).orElseThrow(() -> new IutException(IutException.Kind.INFRA,
+                "unknown implementation under test '" + s + "': use " + String.join(", ", syntaxes())));
+        return kind.opener().open(s, kind.argumentOf(s), options);
+    }
+
+    /** The layout {@code --present-as auto} picks for a spec: its kind's, empty for none or an unknown spec. */
+    public static Optional<Dialect> presentedAs(String spec) {
+        return kind(spec).flatMap(Kind::presentedAs);
     }
 
     /**
@@ -51,28 +127,6 @@ public final class Iuts {
      * specs). The details are in {@code docs/iut-protocol.md}, in the adapter's section.
      */
     public static List<String> unobservable(String spec) {
-        String s = spec == null ? "" : spec.strip();
-        if (s.equals(FuzzyliteIut.SPEC) || s.startsWith(FuzzyliteIut.SPEC + ":")) {
-            return List.of("fuzzylite silently drops a rule it cannot read (upper-case IF, IS NOT, comma-separated"
-                    + " conclusions, an undefined term) and still loads: such a rule shows only as wrong values",
-                    "it builds only the first function block of a program",
-                    "see docs/iut-protocol.md, \"fuzzylite\"");
-        }
-        if (s.equals(JfuzzyliteImplementation.SPEC) || s.startsWith(JfuzzyliteImplementation.SPEC + ":")) {
-            return List.of("jfuzzylite builds only the first function block of a program",
-                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
-                            + " when an instance is made, so a program used directly must set every input",
-                    "a call that hangs cannot be killed in process: it is abandoned on its thread",
-                    "see docs/iut-protocol.md, \"jfuzzylite\"");
-        }
-        if (s.equals(JFuzzyLogicIut.SPEC) || s.startsWith(JFuzzyLogicIut.SPEC + ":")) {
-            return List.of("jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
-                    + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
-                    "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
-                            + " when an instance is made, so a program used directly must set every input",
-                    "it runs in a JVM of its own; its static state lives as long as that JVM",
-                    "see docs/iut-protocol.md, \"jFuzzyLogic\"");
-        }
-        return List.of();
+        return kind(spec).map(Kind::unobservable).orElse(List.of());
     }
 }

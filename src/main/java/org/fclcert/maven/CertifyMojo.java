@@ -40,8 +40,9 @@ import org.fclcert.report.Tally;
         requiresDependencyResolution = ResolutionScope.TEST)
 public class CertifyMojo extends AbstractMojo {
     /**
-     * The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND},
-     * {@code fuzzylite} or {@code fuzzylite:PATH} (the fuzzylite 6.0 command line), or {@code reference}.
+     * The implementation: any spec {@code fclcert certify --iut} takes (the list is {@code org.fclcert.iut.Iuts.KINDS};
+     * an unknown spec is refused with that list): {@code reference}, {@code java:CLASS} (found on the project's test
+     * class path), {@code process:COMMAND}, or a built-in library adapter such as {@code fuzzylite[:PATH]}.
      */
     @Parameter(property = "fclcert.iut", required = true)
     private String iut;
@@ -101,9 +102,10 @@ public class CertifyMojo extends AbstractMojo {
     private long probeBudgetSeconds;
 
     /**
-     * The semantic axis: auto, none, fuzzylite, jfuzzylogic or ffll. Each positive case the layout can express
-     * is also sent written in that library's layout (auto: the built-in library adapters in their library's
-     * layout, none for reference, java: and process:).
+     * The semantic axis: auto, none, or a format fclcert writes ({@code org.fclcert.orchestration.PresentAs.words()};
+     * an unknown word is refused with that list). Each positive case the layout can express is also sent written in
+     * that library's layout (auto: the built-in library adapters in their library's layout, none for reference,
+     * java: and process:).
      */
     @Parameter(property = "fclcert.presentAs", defaultValue = "auto")
     private String presentAs;
@@ -131,8 +133,7 @@ public class CertifyMojo extends AbstractMojo {
         try {
             layout = PresentAs.byWord(presentAs == null ? "auto" : presentAs);
         } catch (IllegalArgumentException e) {
-            throw new MojoExecutionException("fclcert:certify: presentAs '" + presentAs
-                    + "' is not one of auto, none, fuzzylite, jfuzzylogic, ffll");
+            throw new MojoExecutionException("fclcert:certify: presentAs " + e.getMessage());
         }
         if (budgetSeconds < 1) {
             throw new MojoExecutionException("fclcert:certify: budgetSeconds must be at least 1, not " + budgetSeconds);

@@ -61,7 +61,7 @@ public final class Certification {
      * What to certify. Build one with {@link #builder(String, Corpus)}: only the implementation and the
      * corpus are required, everything else has the default the command line uses.
      *
-     * @param iutSpec     {@code reference}, {@code java:CLASS}, {@code process:COMMAND} or {@code fuzzylite[:PATH]}
+     * @param iutSpec     a spec of one of {@link org.fclcert.iut.Iuts#KINDS} ({@code reference}, {@code java:CLASS}, {@code fuzzylite[:PATH]}, ...)
      * @param options     timeouts, class path and the like for the implementation
      * @param classpath   the class path as the user wrote it, for the report (null when none)
      * @param corpus      the loaded corpus

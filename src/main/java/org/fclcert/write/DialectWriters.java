@@ -1,6 +1,8 @@
 package org.fclcert.write;
 
+import java.util.Arrays;
 import java.util.List;
+import java.util.Optional;
 import java.util.Map;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.dialect.Dialect;
@@ -30,17 +32,28 @@ public final class DialectWriters {
      * @throws IllegalArgumentException for {@link Dialect#STRICT}: standard FCL is written by {@link CanonicalWriter}
      */
     public static DialectWriter writer(Dialect dialect) {
-        return switch (dialect) {
-            case FUZZYLITE -> new FuzzyliteWriter();
-            case JFUZZYLOGIC -> new JFuzzyLogicWriter();
-            case FFLL -> new FfllWriter();
-            case STRICT -> throw new IllegalArgumentException("standard FCL is written by CanonicalWriter");
-        };
+        return find(dialect).orElseThrow(() -> new IllegalArgumentException(dialect == Dialect.STRICT
+                ? "standard FCL is written by CanonicalWriter" : "fclcert has no writer of " + dialect.displayName()));
     }
 
-    /** The dialects there are writers for. */
+    /**
+     * The writing side of the format registry ({@link Dialect} is the reading side): one case per format, which
+     * the compiler holds complete; empty for the standard (written by {@link CanonicalWriter}) and for a format
+     * fclcert only reads. {@code convert --to} and {@code --present-as} offer exactly the formats with a writer.
+     */
+    private static Optional<DialectWriter> find(Dialect dialect) {
+        return Optional.ofNullable(switch (dialect) {
+            case STRICT -> null;
+            case FFLL -> new FfllWriter();
+            case JFUZZYLOGIC -> new JFuzzyLogicWriter();
+            case FUZZYLITE -> new FuzzyliteWriter();
+            case FLL, FIS -> null;
+        });
+    }
+
+    /** The formats there are writers for, in the order of {@link Dialect}. */
     public static List<Dialect> libraries() {
-        return List.of(Dialect.FFLL, Dialect.JFUZZYLOGIC, Dialect.FUZZYLITE);
+        return Arrays.stream(Dialect.values()).filter(d -> find(d).isPresent()).toList();
     }
 
     /** {@code written} read back in its dialect and evaluated against {@code original} on a grid of every block. */

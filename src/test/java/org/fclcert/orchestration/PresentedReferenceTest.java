@@ -38,7 +38,7 @@ class PresentedReferenceTest {
         assertEquals(Optional.empty(), PresentAs.AUTO.resolve("java:com.example.Fcl"));
         assertEquals(Optional.empty(), PresentAs.AUTO.resolve("process:fuzzylite-wrapper"));
         assertEquals(Optional.empty(), PresentAs.NONE.resolve("fuzzylite"));
-        assertEquals(Optional.of(Dialect.FFLL), PresentAs.FFLL.resolve("reference"));
+        assertEquals(Optional.of(Dialect.FFLL), PresentAs.of(Dialect.FFLL).resolve("reference"));
     }
 
     @Test
@@ -46,7 +46,7 @@ class PresentedReferenceTest {
         Corpus corpus = Corpus.load(Path.of("conformance"));
         Certification.Request request = Certification.Request.builder("reference", corpus).corpusName("conformance")
                 .selection(new CaseSelection(Set.of(), Set.of(), List.of("B-*", "E-*", "O-*"))).outDir(out)
-                .presentAs(PresentAs.FUZZYLITE).build();
+                .presentAs(PresentAs.of(Dialect.FUZZYLITE)).build();
         Report report = Certification.run(request, RunListener.NONE).report();
         Report.SemanticAxis s = report.semantic();
         assertEquals("fuzzylite", s.presentAs());

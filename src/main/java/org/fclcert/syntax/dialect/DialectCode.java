@@ -94,7 +94,10 @@ public enum DialectCode implements DiagnosticCode {
             "fuzzylite 6.0 inverts SShape, ZShape and Concave terms wrongly in Tsukamoto's method; fclcert exactly"),
     OUTPUT_AT_START("FCL-W313", Severity.WARNING, "5.2.4",
             "jFuzzyLogic reads an output in a condition at its value when the evaluation begins (its DEFAULT), so rule"
-                    + " blocks do not chain; read so");
+                    + " blocks do not chain; read so"),
+    FIS_SUM("FCL-W314", Severity.WARNING, "Table 5",
+            "FIS AggMethod 'sum': MATLAB and Octave add the rules' sets (read so, ACCU SUM); fuzzylite 6 reads it as"
+                    + " the algebraic sum (probor)");
 
     private final String code;
     private final Severity severity;

@@ -7,7 +7,6 @@ import org.fclcert.model.Diagnostic;
 import org.fclcert.model.SourceLocation;
 import org.fclcert.syntax.FclReader;
 import org.fclcert.syntax.ReadResult;
-import org.fclcert.syntax.StrictReader;
 
 /**
  * The reader of each dialect, and {@code --dialect auto}: which dialect a text is written in, or that it
@@ -22,17 +21,18 @@ public final class DialectReaders {
 
     /** The reader of a dialect: the strict reader for {@link Dialect#STRICT}. */
     public static FclReader reader(Dialect dialect) {
-        return switch (dialect) {
-            case STRICT -> new StrictReader();
-            case FFLL -> new FfllReader();
-            case JFUZZYLOGIC -> new JFuzzyLogicReader();
-            case FUZZYLITE -> new FuzzyliteReader();
-        };
+        return dialect.reader();
     }
 
-    /** The dialect readers, in the order candidates are named. */
+    /** The dialect readers (every format but the standard), in the order of {@link Dialect}: how candidates are named. */
     static List<DialectReader> dialectReaders() {
-        return List.of(new FfllReader(), new JFuzzyLogicReader(), new FuzzyliteReader());
+        List<DialectReader> out = new ArrayList<>();
+        for (Dialect d : Dialect.values()) {
+            if (d.reader() instanceof DialectReader r) {
+                out.add(r);
+            }
+        }
+        return out;
     }
 
     /** One dialect's evidence in a text: its giveaways and their total weight. */
@@ -115,7 +115,7 @@ public final class DialectReaders {
         return s.toString();
     }
 
-    /** Every dialect's evidence in the text, in the order FFLL, jFuzzyLogic, fuzzylite. */
+    /** Every dialect's evidence in the text, in the order of {@link Dialect}. */
     public static List<Evidence> evidence(String text) {
         List<Evidence> out = new ArrayList<>();
         for (DialectReader r : dialectReaders()) {
@@ -145,7 +145,7 @@ public final class DialectReaders {
                             + e.getMessage() + ")", cause)));
         }
         List<Evidence> ranked = new ArrayList<>(all.stream().filter(e -> e.weight() > 0).toList());
-        ranked.sort((a, b) -> Integer.compare(b.weight(), a.weight()));     // stable: ties keep FFLL, jFL, fl order
+        ranked.sort((a, b) -> Integer.compare(b.weight(), a.weight()));     // stable: ties keep the order of Dialect
         if (ranked.isEmpty()) {
             return new Choice(Dialect.STRICT, List.of(), List.of());
         }

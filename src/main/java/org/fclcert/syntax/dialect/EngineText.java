@@ -1,0 +1,158 @@
+package org.fclcert.syntax.dialect;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import org.fclcert.model.Diagnostic;
+import org.fclcert.model.Feature;
+import org.fclcert.model.FeatureUse;
+import org.fclcert.model.Program;
+import org.fclcert.model.SourceLocation;
+import org.fclcert.syntax.ReadResult;
+
+/**
+ * The shared core of the readers of fuzzylite's two engine formats, FLL ({@link FllReader}) and MATLAB's FIS
+ * ({@link FisReader}). Both describe a fuzzylite engine, which fuzzylite's FCL describes too: each line of the
+ * file is restated as the fuzzylite FCL statement that means the same (on the same line, so every diagnostic
+ * keeps its line), and that text is read by the fuzzylite dialect's reader ({@link FuzzyliteDialect}), the one place
+ * that says what a fuzzylite construct means in the model. What is only FCL's way of writing a thing (its
+ * comments, rule semicolons, where ACCU stands, block names) is the restatement's, not the file's, so those Open
+ * Level features are left out. Every place keeps its line; the reader's diagnostics are put at the line's first
+ * written column, while the model's places (and so the checks' diagnostics) keep the restatement's columns.
+ */
+final class EngineText {
+    /** Features of FCL's spelling, never of the engine file: the restatement writes them, the file does not. */
+    private static final Set<Feature> SPELLING = Set.of(Feature.O_COMMENT_STYLE, Feature.O_RULE_WITHOUT_SEMICOLON,
+            Feature.O_UNNAMED_BLOCK, Feature.O_BLOCK_NAME_VERBATIM, Feature.O_ACCU_IN_DEFUZZIFY, Feature.O_ENABLED,
+            Feature.O_CONCLUSION_AND, Feature.O_INFINITE_RANGE, Feature.O_INPUT_RANGE);
+
+    private static final LibraryDialect FUZZYLITE = new FuzzyliteDialect();
+
+    private final String source;
+    private final List<String> lines;
+    private final String[] fcl;
+    private final List<Diagnostic> errors = new ArrayList<>();
+    private final List<Diagnostic> warnings = new ArrayList<>();
+    private String end = "";
+    private String pending = "";
+
+    /** A restatement of {@code text}, whose lines start empty. */
+    EngineText(String source, String text) {
+        this.source = source == null ? "<input>" : source;
+        this.lines = (text == null ? "" : text).lines().toList();
+        this.fcl = new String[lines.size()];
+        java.util.Arrays.fill(fcl, "");
+    }
+
+    /** The file's lines (0-based here, 1-based in diagnostics). */
+    List<String> lines() {
+        return lines;
+    }
+
+    /** Appends FCL text to line {@code index} (0-based). */
+    void put(int index, String text) {
+        if (!pending.isEmpty()) {
+            text = pending + " " + text;
+            pending = "";
+        }
+        fcl[index] = fcl[index].isEmpty() ? text : fcl[index] + " " + text;
+    }
+
+    /** FCL text that goes before the next text put on a line (a statement that must not share its line). */
+    void beforeNext(String text) {
+        pending = pending.isEmpty() ? text : pending + " " + text;
+    }
+
+    /** FCL text after the last line (the closing keywords). */
+    void end(String text) {
+        String all = pending.isEmpty() ? text : pending + " " + text;
+        pending = "";
+        end = end.isEmpty() ? all : end + " " + all;
+    }
+
+    /** A warning on line {@code index} (0-based): where a library reads the line otherwise than fclcert. */
+    void warn(int index, DialectCode code, String message) {
+        warnings.add(Diagnostic.warning(at(index + 1), code, message));
+    }
+
+    /** An error of the file's own syntax on line {@code index} (0-based), at its first written column. */
+    void error(int index, DialectCode code, String message) {
+        errors.add(Diagnostic.error(at(index + 1), code, message));
+    }
+
+    boolean failed() {
+        return !errors.isEmpty();
+    }
+
+    private SourceLocation at(int line) {
+        String text = line >= 1 && line <= lines.size() ? lines.get(line - 1) : "";
+        int column = 1;
+        while (column <= text.length() && Character.isWhitespace(text.charAt(column - 1))) {
+            column++;
+        }
+        return SourceLocation.of(source, line, column > text.length() ? 1 : column);
+    }
+
+    /** The restated text (for tests and the curious). */
+    String fcl() {
+        StringBuilder s = new StringBuilder();
+        for (String line : fcl) {
+            s.append(line).append('\n');
+        }
+        return s.append(end).append('\n').toString();
+    }
+
+    /** The program: the file's own errors if it has any, else the fuzzylite reading of the restatement. */
+    ReadResult read() {
+        if (!errors.isEmpty()) {
+            List<Diagnostic> sorted = new ArrayList<>(errors);
+            sorted.addAll(warnings);
+            sorted.sort(Comparator.comparing(Diagnostic::location));
+            return new ReadResult(Optional.empty(), sorted);
+        }
+        ReadResult r = DialectParser.read(source, fcl(), FUZZYLITE);
+        List<Diagnostic> located = new ArrayList<>(r.diagnostics().stream()
+                .map(d -> new Diagnostic(at(Math.min(d.location().line(), lines.size())), d.severity(),
+                        d.diagnosticCode(), d.message())).toList());
+        located.addAll(warnings);
+        located.sort(Comparator.comparing(Diagnostic::location));
+        return new ReadResult(r.program().map(this::ownFeatures), located);
+    }
+
+    private Program ownFeatures(Program p) {
+        // kept where the model has them: the checks match a tolerated construct to its feature by place
+        List<FeatureUse> own = p.dialectFeatures().stream().filter(f -> !SPELLING.contains(f.feature())).toList();
+        return new Program(p.sourceName(), p.functionBlocks(), own);
+    }
+
+    /** A name as an FCL identifier: each run of other characters as '_', a leading digit prefixed. */
+    static String identifier(String name, String fallback) {
+        String s = name.strip().replaceAll("[^A-Za-z0-9_]+", "_");
+        if (s.isEmpty() || s.equals("_")) {
+            return fallback;
+        }
+        return Character.isDigit(s.charAt(0)) ? "_" + s : s;
+    }
+
+    /** A number as FCL writes it; empty when the text is none. */
+    static Optional<String> number(String text) {
+        String t = text.strip();
+        if (t.equalsIgnoreCase("nan") || t.equalsIgnoreCase("inf") || t.equalsIgnoreCase("-inf")
+                || t.equalsIgnoreCase("+inf")) {
+            return Optional.of(t.toLowerCase(java.util.Locale.ROOT).replace("+", ""));
+        }
+        try {
+            double v = Double.parseDouble(t);
+            if (Double.isNaN(v) || Double.isInfinite(v) || t.endsWith("d") || t.endsWith("f") || t.endsWith("D")
+                    || t.endsWith("F")) {
+                return Optional.empty();
+            }
+            return Optional.of(t.startsWith("+") ? t.substring(1) : t.startsWith(".") ? "0" + t
+                    : t.startsWith("-.") ? "-0" + t.substring(1) : t);
+        } catch (NumberFormatException e) {
+            return Optional.empty();
+        }
+    }
+}
