@@ -50,6 +50,13 @@ public final class FunctionBlockInstance {
     private ExactInstance exact;
     private boolean exactUnavailable;
     private final double[] before;
+    /** Per shape and point: the distance of x and y from their decimal readings (constant shapes: once). */
+    private final double[][] repX;
+    private final double[][] repY;
+    /** Per variable slot: the distance of its value from its decimal reading, kept by store. */
+    private final double[] valueRep;
+    /** Per singleton term of the output being defuzzified: its value's distance from its decimal reading. */
+    private final double[] singletonRep;
     /** Per variable slot: the bound of a value written in this evaluation (bare conclusions, outputs), else 0. */
     private final double[] slotErrors;
     /** The slot of each VAR_INPUT, in declaration order. */
@@ -100,6 +107,17 @@ public final class FunctionBlockInstance {
         }
         this.variableShapes = java.util.stream.IntStream.range(0, shapes)
                 .filter(s -> !plan.shapes[s].constant).toArray();
+        this.repX = new double[shapes][];
+        this.repY = new double[shapes][];
+        for (int s = 0; s < shapes; s++) {
+            repX[s] = new double[curX[s].length];
+            repY[s] = new double[curY[s].length];
+            representations(s);
+        }
+        this.valueRep = new double[values.length];
+        for (int i = 0; i < values.length; i++) {
+            valueRep[i] = representation(values[i]);
+        }
         this.stack = new double[plan.maxStack];
         this.stackErrors = new double[plan.maxStack];
         this.bare = new double[Math.max(1, plan.maxBareTargets)];
@@ -114,6 +132,7 @@ public final class FunctionBlockInstance {
         this.contributionDegreeError = new double[plan.contributionCount];
         this.singletonDegree = new double[terms];
         this.singletonError = new double[terms];
+        this.singletonRep = new double[terms];
         this.bounds = new double[plan.outputs.length];
         this.singletonValue = new double[terms];
         this.previous = new double[plan.outputs.length];
@@ -207,7 +226,8 @@ public final class FunctionBlockInstance {
     /**
      * The bound of the last value of an output: its distance from the exact value is at most this (0 when the
      * evaluation fell back to exact arithmetic, whose result is then the double nearest the exact value; NaN
-     * for an output whose method the exact path computes in floating point too: smooth sets, Tsukamoto).
+     * for an output whose method the exact path computes in floating point too: smooth sets, Tsukamoto). For a
+     * variable that bare conclusions wrote, the bound of that value.
      */
     public double bound(String output) throws EvaluationException {
         int slot = slot(output);
@@ -216,7 +236,7 @@ public final class FunctionBlockInstance {
                 return bounds[i];
             }
         }
-        throw new EvaluationException(EvaluationCode.UNKNOWN_NAME, "'" + output + "' is not a defuzzified output");
+        return slotErrors[slot];       // a variable written by bare conclusions (or not written: 0)
     }
 
     /** Evaluations so far. */
@@ -295,6 +315,7 @@ public final class FunctionBlockInstance {
             judge.evaluateFrom(before);
             judge.copyState(values, plan.isInput);
             java.util.Arrays.fill(bounds, 0.0);
+            java.util.Arrays.fill(slotErrors, 0.0);
             if (trace != null) {
                 trace.decidedExactly(judge.results());
             }
@@ -377,12 +398,21 @@ public final class FunctionBlockInstance {
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
         values[slot] = v;
+        valueRep[slot] = representation(v);
         return v;
     }
 
     private void resolveVariableShapes() {
         for (int s : variableShapes) {
             plan.shapes[s].resolve(values, curX[s], curY[s]);
+            representations(s);
+        }
+    }
+
+    private void representations(int s) {
+        for (int i = 0; i < repX[s].length; i++) {
+            repX[s][i] = representation(curX[s][i]);
+            repY[s][i] = representation(curY[s][i]);
         }
     }
 
@@ -392,7 +422,7 @@ public final class FunctionBlockInstance {
         for (int t = 0; t < termShape.length; t++) {
             int s = termShape[t];
             double u = values[plan.termVariableSlot[t]];
-            termDegrees[t] = degree(s, u, t);
+            termDegrees[t] = degree(s, u, valueRep[plan.termVariableSlot[t]], t);
             if (trace != null) {
                 trace.add(new Trace.TermDegree(plan.termVariableName[t], plan.termName[t], termDegrees[t]));
             }
@@ -405,7 +435,7 @@ public final class FunctionBlockInstance {
      * two ({@link #representation}); comparisons of doubles are exact (the reading keeps their order), so an
      * input at a vertex or a singleton is decided in doubles.
      */
-    private double degree(int s, double u, int t) {
+    private double degree(int s, double u, double uRep, int t) {
         Shape shape = plan.shapes[s];
         double[] x = curX[s];
         double[] y = curY[s];
@@ -419,20 +449,20 @@ public final class FunctionBlockInstance {
         }
         int n = shape.n;
         if (u < x[0]) {
-            termErrors[t] = representation(y[0]);
+            termErrors[t] = repY[s][0];
             return y[0];
         }
         if (u > x[n - 1]) {
-            termErrors[t] = representation(y[n - 1]);
+            termErrors[t] = repY[s][n - 1];
             return y[n - 1];
         }
         int i = n <= 8 ? Pwl.linearLowerBound(x, u) : Pwl.lowerBound(x, n, u);
         if (x[i] == u) {
             double max = y[i];
-            double e = representation(y[i]);
+            double e = repY[s][i];
             for (int j = i + 1; j < n && x[j] == u; j++) {
                 max = Math.max(max, y[j]);
-                e = Math.max(e, representation(y[j]));
+                e = Math.max(e, repY[s][j]);
             }
             termErrors[t] = e;
             return max;
@@ -440,11 +470,11 @@ public final class FunctionBlockInstance {
         double y0 = y[i - 1];
         double y1 = y[i];
         double d = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
-        double e = Math.max(representation(y0), representation(y1));
+        double e = Math.max(repY[s][i - 1], repY[s][i]);
         if (y0 != y1) {
             // the exact inputs may sit up to the representation errors away: t = (u - x0)/(x1 - x0) moves by at most
             // 2·(δu + δx0 + δx1)/(x1 - x0) while the perturbation is under a quarter of the width
-            double shift = representation(u) + representation(x[i - 1]) + representation(x[i]);
+            double shift = uRep + repX[s][i - 1] + repX[s][i];
             double width = x[i] - x[i - 1];
             e = 4 * shift < width ? e + Math.abs(y1 - y0) * 2 * shift / width + 2 * Norms.R
                     : Double.POSITIVE_INFINITY;
@@ -473,7 +503,8 @@ public final class FunctionBlockInstance {
     private void valueConditions() {
         for (int k = 0; k < plan.valueTermShape.length; k++) {
             double u = Double.isNaN(plan.valueTermStart[k]) ? values[plan.valueTermSlot[k]] : plan.valueTermStart[k];
-            termDegrees[plan.termShape.length + k] = degree(plan.valueTermShape[k], u, plan.termShape.length + k);
+            termDegrees[plan.termShape.length + k] = degree(plan.valueTermShape[k], u, representation(u),
+                    plan.termShape.length + k);
         }
     }
 
@@ -510,7 +541,8 @@ public final class FunctionBlockInstance {
                     }
                 }
                 double w = sc.weightSlot() < 0 ? sc.weightConst() : clamp01(values[sc.weightSlot()]);
-                double ew = sc.weightSlot() < 0 ? representation(w) : representation(w) + slotErrors[sc.weightSlot()];
+                double ew = sc.weightSlot() < 0 ? representation(w)
+                        : (w == values[sc.weightSlot()] ? valueRep[sc.weightSlot()] : 0) + slotErrors[sc.weightSlot()];
                 double wd = w * d;
                 double ewd = Norms.productError(w, ew, d, e, wd);
                 if (sc.contribution() >= 0) {
@@ -589,7 +621,7 @@ public final class FunctionBlockInstance {
                 }
                 case ConditionCode.VARIABLE -> {
                     st[sp] = clamp01(values[args[i]]);
-                    er[sp] = representation(st[sp]) + slotErrors[args[i]];
+                    er[sp] = (st[sp] == values[args[i]] ? valueRep[args[i]] : 0) + slotErrors[args[i]];
                     sp++;
                 }
                 case ConditionCode.NOT -> {
@@ -641,6 +673,7 @@ public final class FunctionBlockInstance {
         for (int s : o.termShapes()) {
             if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
                 plan.shapes[s].resolve(values, curX[s], curY[s]);
+                representations(s);
             }
         }
         methodBound = 0;
@@ -743,6 +776,7 @@ public final class FunctionBlockInstance {
         int terms = o.termShapes().length;
         for (int t = 0; t < terms; t++) {
             singletonValue[t] = curX[o.termShapes()[t]][0];
+            singletonRep[t] = repX[o.termShapes()[t]][0];
         }
         degreesPerTerm(o);
         if (trace != null) {
@@ -803,7 +837,7 @@ public final class FunctionBlockInstance {
             num += singletonValue[t] * singletonDegree[t];
             any |= singletonDegree[t] != 0;
             spread += Math.abs(singletonValue[t]) * singletonError[t]
-                    + singletonDegree[t] * representation(singletonValue[t]);
+                    + singletonDegree[t] * singletonRep[t];
             rounding += Math.abs(singletonValue[t]) * singletonDegree[t];
         }
         methodBound = spread + 2 * (terms + 1) * U * rounding;
@@ -826,7 +860,7 @@ public final class FunctionBlockInstance {
             den += singletonDegree[t];
             errors += singletonError[t];
             maxAbs = Math.max(maxAbs, Math.abs(singletonValue[t]));
-            maxRep = Math.max(maxRep, representation(singletonValue[t]));
+            maxRep = Math.max(maxRep, singletonRep[t]);
         }
         if (!(den > 0)) {
             return Double.NaN;
@@ -902,7 +936,7 @@ public final class FunctionBlockInstance {
             if (singletonDegree[t] == sup && !maximalValueBefore(t, sup)) {
                 sum += singletonValue[t];
                 count++;
-                maxAbs = Math.max(maxAbs, Math.abs(singletonValue[t]) + representation(singletonValue[t]));
+                maxAbs = Math.max(maxAbs, Math.abs(singletonValue[t]) + singletonRep[t]);
             }
         }
         methodBound = 2 * (count + 1) * U * maxAbs + maxAbs * U;
@@ -982,9 +1016,9 @@ public final class FunctionBlockInstance {
                     undecided("LM/RM/MoM on an accumulation other than MAX");
                     return;
                 }
-                double[] terms = clipsAtVertices(o);
-                double steepest = terms[0];
-                double representation = terms[1];
+                clipsAtVertices(o);
+                double steepest = steepestRun;
+                double representation = vertexRepresentation;
                 double sup = Defuzzifier.supremum(set.py, set.np);
                 double band = spread + representation + 4 * Norms.R;
                 int runs = 0;
@@ -996,7 +1030,7 @@ public final class FunctionBlockInstance {
                         runs++;
                     }
                 }
-                if (runs > 1 && !(spread == 0 && representation == 0 && terms[2] == 0)) {
+                if (runs > 1 && !(spread == 0 && representation == 0 && !roundedLevels)) {
                     undecided("separate maxima");      // equal in doubles, not known to be equal exactly
                 }
                 methodBound = band * steepest + 4 * Norms.R * m;
@@ -1014,13 +1048,19 @@ public final class FunctionBlockInstance {
         }
     }
 
+    /** Set by {@link #clipsAtVertices}: see there. */
+    private double steepestRun;
+    private double vertexRepresentation;
+    private boolean roundedLevels;
+
     /**
      * Marks undecided a MIN activation whose level the bounds cannot tell from a vertex degree of its term (a clip
-     * crossing at a vertex). Returns {largest run over rise |Δx / Δy| of the fired terms' sloped pieces (how far a
-     * crossing moves per unit of degree), largest distance of their vertex degrees from their decimal readings,
-     * 1 when a fired contribution has a weight other than 1 or PROD activation (its degrees are rounded) else 0}.
+     * crossing at a vertex), and maxima of two contributions the bounds cannot tell apart. Sets the largest run over
+     * rise |Δx / Δy| of the fired terms' sloped pieces (how far a crossing moves per unit of degree), the largest
+     * distance of their vertex degrees from their decimal readings, and whether a fired contribution has a weight
+     * other than 1 or PROD activation (its degrees are rounded).
      */
-    private double[] clipsAtVertices(OutputPlan o) {
+    private void clipsAtVertices(OutputPlan o) {
         double steepest = 0;
         double representation = 0;
         double rounded = 0;
@@ -1039,7 +1079,7 @@ public final class FunctionBlockInstance {
                 rounded = 1;
             }
             for (int i = 0; i < plan.shapes[s].n; i++) {
-                double ry = representation(y[i]);
+                double ry = repY[s][i];
                 representation = Math.max(representation, ry);
                 if (clipped && ed + ry > 0 && Math.abs(d - y[i]) <= ed + ry) {
                     undecided("clip at a vertex");
@@ -1060,7 +1100,9 @@ public final class FunctionBlockInstance {
                 }
             }
         }
-        return new double[] {steepest, representation, rounded};
+        steepestRun = steepest;
+        vertexRepresentation = representation;
+        roundedLevels = rounded != 0;
     }
 
     /** The height of contribution k's activated set: w · min(d, h) (MIN) or w · d · h (PROD), h its term's height. */

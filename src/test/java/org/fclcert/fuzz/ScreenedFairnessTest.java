@@ -66,7 +66,7 @@ class ScreenedFairnessTest {
     }
 
     /** The step with one of its inputs moved by one ulp: beside a breakpoint, a tie or a foot instead of on it. */
-    private static Map<String, Double> oneUlpOff(Map<String, Double> step, Random r) {
+    static Map<String, Double> oneUlpOff(Map<String, Double> step, Random r) {
         Map<String, Double> out = new LinkedHashMap<>(step);
         List<String> names = new ArrayList<>(step.keySet());
         if (!names.isEmpty()) {
