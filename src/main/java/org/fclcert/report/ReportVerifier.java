@@ -63,6 +63,17 @@ public final class ReportVerifier {
             notes.add(name + ": no end line: the run did not finish (killed, or stopped before its reports), so it has"
                     + " no digest");
         }
+        String version = file.header().toolkit().version();
+        if (!version.equals(org.fclcert.model.Toolkit.version())) {
+            // judging again proves a verdict only under the judging code that gave it
+            inconsistencies.add("the results say they were made by fclcert " + version + "; this is fclcert "
+                    + org.fclcert.model.Toolkit.version() + ", whose judging is not that version's: check them with"
+                    + " the fclcert that made them");
+        } else if (file.header().provenance() != null && file.header().provenance().toolkit() != null
+                && !version.equals(file.header().provenance().toolkit().version())) {
+            inconsistencies.add("the run header names fclcert " + version + " but its provenance measured "
+                    + file.header().provenance().toolkit().version());
+        }
         Optional<Corpus> corpus = corpus(file, corpusDir, inconsistencies);
         Rejudge.Outcome judged = corpus.map(c -> Rejudge.of(file, c)).orElse(null);
         List<String> warnings = new ArrayList<>();
