@@ -202,25 +202,6 @@ class InterruptedRunTest {
     }
 
     @Test
-    void aSignalBeforeTheRunStartsEndsItWithAMessageAndWritesNothing() throws Exception {
-        // issue 27: a SIGTERM two seconds in (the corpus still being read) killed the JVM silently
-        Path out = dir.resolve("out");
-        Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(),
-                "--no-probe");
-        Thread.sleep(1500);   // the JVM has started; the run may or may not have begun
-        signal("TERM", String.valueOf(p.pid()));
-        assertEquals(143, awaitExit(p), () -> "stderr: " + safeText("stderr"));
-        String err = text("stderr");
-        assertTrue(err.contains("fclcert certify: interrupted (SIGINT, SIGTERM or SIGHUP)"), err);
-        assertFalse(err.contains("Exception") || err.contains("internal error"), err);
-        if (err.contains("before the run started")) {
-            assertFalse(Files.exists(out.resolve("report.md")), "nothing written");
-        } else {
-            agreeing(out, INTERRUPTED);   // the signal came once the run had begun: a stopped run, consistent
-        }
-    }
-
-    @Test
     void ctrlCReachingTheImplementationTooIsNotItsFault() throws Exception {
         // Ctrl-C signals the terminal's whole process group: the implementation dies of it as well
         interruptCertify("INT", true, 130);
