@@ -20,6 +20,8 @@ named by its argument:
                   OUT/report.md a few seconds later; what it saw is its version string
   burst N         at the first eval starts N sleeping processes (a bounded burst, never a fork bomb)
   write-gb        at the first eval writes 1 GB to a file in its working directory
+  jitter          a correct implementation with noise: each eval's outputs times 1 + 1e-12 or 1 - 1e-12 in turn
+  bom             a UTF-8 byte-order mark before its reply to hello
 """
 import json
 import os
@@ -128,6 +130,8 @@ class Hostile(FakeIut):
                     f.write(chunk)
         body = super().op_eval(req)
         right = body["outputs"]["sum"]
+        if MODE == "jitter":
+            body["outputs"]["sum"] = right * (1 + (1e-12 if self.evals % 2 else -1e-12))
         if MODE == "dup-key":
             return '{"ok": true, "outputs": {"sum": 12345, "sum": %r}, "id": %d}' % (right, req["id"])
         if MODE == "case-key":
@@ -147,6 +151,10 @@ class Hostile(FakeIut):
         return super().op_export(req)
 
     def send(self, req, body):
+        if MODE == "bom" and req["op"] == "hello":
+            sys.stdout.write("\ufeff" + json.dumps(dict(body, id=req["id"])) + "\n")
+            sys.stdout.flush()
+            return
         if isinstance(body, str):
             sys.stdout.write(body + "\n")
             sys.stdout.flush()

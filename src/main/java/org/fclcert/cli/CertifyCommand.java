@@ -158,10 +158,20 @@ final class CertifyCommand implements Callable<Integer> {
 
     /** Counted down once everything the command prints is printed. */
     private final CountDownLatch printed = new CountDownLatch(1);
-    /** The shutdown hook of a run under way (Ctrl-C, SIGTERM), or null. */
+    /** The shutdown hook of a run under way (Ctrl-C, SIGTERM, SIGHUP), or null. */
     private Thread onSignal;
+    /** Whether the run itself has begun (before it, a signal finds nothing written, and nothing to wait for). */
+    private volatile boolean runStarted;
 
     private int certify(PrintWriter stdout, PrintWriter err) throws CannotRun {
+        // SIGINT, SIGTERM and SIGHUP end the run the same way from the first moment (issue 27: a SIGTERM while the
+        // corpus was read killed the JVM silently)
+        boolean terminal = System.console() != null;
+        ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
+        TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
+        RunControl control = new RunControl();
+        onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
+        Runtime.getRuntime().addShutdownHook(onSignal);
         Set<ConformanceLevel> levelSet = levels.isEmpty() ? Set.of() : EnumSet.copyOf(levels);
         CaseSelection selection = new CaseSelection(levelSet, parseFeatures(), cases);
         if (probeCap < 1) {
@@ -190,13 +200,8 @@ final class CertifyCommand implements Callable<Integer> {
                 .reportsRoot(reportsRoot)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
                 .presentAs(presentAs).budget(budget).seed(seed).build();
-        boolean terminal = System.console() != null;
-        ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
-        TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
-        RunControl control = new RunControl();
-        onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
-        Runtime.getRuntime().addShutdownHook(onSignal);
         Certification.Outcome outcome;
+        runStarted = true;
         try {
             outcome = Certification.run(request, progress, hooks, control);
         } catch (Certification.NothingSelected e) {
@@ -245,7 +250,13 @@ final class CertifyCommand implements Callable<Integer> {
      * printed — and this waits for that, since the JVM ends when its hooks do. An implementation deaf to the stop
      * for {@link Defaults#STOP_GRACE} is killed, and the results of the cases that finished stay in results.jsonl.
      */
-    private static void interrupted(RunControl control, CountDownLatch printed, TerminalHooks hooks, PrintWriter err) {
+    private void interrupted(RunControl control, CountDownLatch printed, TerminalHooks hooks, PrintWriter err) {
+        if (!runStarted) {
+            err.println();
+            err.println("fclcert certify: " + StopSignal.INTERRUPTED + " before the run started; nothing was written");
+            err.flush();
+            return;
+        }
         if (control.stop(StopSignal.INTERRUPTED, Defaults.STOP_GRACE)) {
             try {
                 printed.await(PRINT_GRACE.toMillis(), TimeUnit.MILLISECONDS);

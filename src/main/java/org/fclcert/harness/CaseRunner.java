@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.fclcert.corpus.ExpectedError;
+import org.fclcert.corpus.OutputComparison;
 import org.fclcert.corpus.Vector;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
@@ -174,6 +175,7 @@ final class CaseRunner {
 
     private static void checkNoStateLeak(ImplementationUnderTest iut, RunCase c, List<Map<String, Double>> forward,
             ResultBuilder r) throws StepBreakdown {
+        boolean nondeterminismNoted = false;
         try {
             iut.reset();
         } catch (IutException e) {
@@ -183,10 +185,23 @@ final class CaseRunner {
             Vector v = c.vectors().get(i);
             Map<String, Double> again = evaluate(iut, c, v, i + 1, r);
             Optional<String> leak = StepComparison.difference(v.out().keySet(), forward.get(i), again);
-            if (leak.isPresent()) {
+            if (leak.isEmpty()) {
+                continue;
+            }
+            // judged by the case's tolerance, as any value is: a difference within it is noise, not leaked state
+            Map<String, Double> first = new LinkedHashMap<>();
+            for (String name : v.out().keySet()) {
+                OutputComparison.lookup(forward.get(i), name).ifPresent(x -> first.put(name, x));
+            }
+            if (StepComparison.compare(c, first, again, new ResultBuilder(c)).isPresent()) {
                 r.failed("state leaks between evaluations: after reset() and with the steps in reverse order, step "
                         + (i + 1) + " gives " + leak.get()).at(i + 1, v.in()).outputs(forward.get(i), again);
                 return;
+            }
+            if (!nondeterminismNoted) {
+                nondeterminismNoted = true;
+                r.note("non-determinism within tolerance (not a state leak): after reset() and with the steps in"
+                        + " reverse order, step " + (i + 1) + " gives " + leak.get());
             }
         }
     }

@@ -50,6 +50,10 @@ final class Protocol {
      * {@link IutException.Kind#PROTOCOL} fault quoting the line.
      */
     static JsonNode reply(ObjectMapper mapper, String text, String op, long id) throws IutException {
+        if (text.startsWith(BYTE_ORDER_MARK)) {
+            // a UTF-8 byte-order mark (some runtimes write one before their first output) is no part of the reply
+            text = text.substring(1);
+        }
         JsonNode reply;
         try {
             reply = mapper.readTree(text);
@@ -78,12 +82,31 @@ final class Protocol {
         return reply;
     }
 
-    /** The start of an offending line, well-formed, for a fault's message. */
+    /** U+FEFF, which UTF-8 writes as EF BB BF: skipped before a reply. */
+    static final String BYTE_ORDER_MARK = "\uFEFF";
+
+    /**
+     * The start of an offending line, well-formed and in visible form, for a fault's message: a byte-order mark,
+     * control characters and other invisible ones are written as {@code <U+FEFF>}, {@code <U+001B>}, so that what
+     * was received can be seen (and no terminal or report interprets it).
+     */
     static String quote(String text) {
         String shown = IutText.wellFormed(text);
-        return shown.length() <= QUOTE_CHARS ? shown
+        String cut = shown.length() <= QUOTE_CHARS ? shown
                 : shown.substring(0, Character.isHighSurrogate(shown.charAt(QUOTE_CHARS - 1)) ? QUOTE_CHARS - 1
                         : QUOTE_CHARS) + "…";
+        StringBuilder out = new StringBuilder(cut.length());
+        cut.codePoints().forEach(cp -> {
+            int type = Character.getType(cp);
+            boolean invisible = type == Character.CONTROL || type == Character.FORMAT || type == Character.UNASSIGNED
+                    || type == Character.LINE_SEPARATOR || type == Character.PARAGRAPH_SEPARATOR;
+            if (invisible) {
+                out.append(String.format("<U+%04X>", cp));
+            } else {
+                out.appendCodePoint(cp);
+            }
+        });
+        return out.toString();
     }
 
     static ObjectNode request(String op) {

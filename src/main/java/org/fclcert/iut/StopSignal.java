@@ -23,7 +23,7 @@ import org.fclcert.syntax.dialect.Dialect;
  */
 public final class StopSignal {
     /** The reason the command line gives when Ctrl-C or a kill ends a run. */
-    public static final String INTERRUPTED = "interrupted (SIGINT or SIGTERM)";
+    public static final String INTERRUPTED = "interrupted (SIGINT, SIGTERM or SIGHUP)";
 
     private String reason;
     /** Signals that stop when this one stops (a probe's own budget inside a certification run). */
@@ -34,7 +34,7 @@ public final class StopSignal {
     private final List<ImplementationUnderTest> open = new ArrayList<>();
 
     /**
-     * Stops the run for {@code why} (a phrase: "interrupted (SIGINT or SIGTERM)"); only the first stop counts.
+     * Stops the run for {@code why} (a phrase: "interrupted (SIGINT, SIGTERM or SIGHUP)"); only the first stop counts.
      *
      * @return true when this call stopped the run, false when it had stopped already
      */

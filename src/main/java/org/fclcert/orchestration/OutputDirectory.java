@@ -77,7 +77,7 @@ final class OutputDirectory implements AutoCloseable {
             Path staging = parent.resolve("." + name + ".partial-" + ProcessHandle.current().pid() + "-"
                     + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1));
             Files.createDirectory(staging);   // fails on anything already there, a planted link included
-            return new OutputDirectory(target, staging, channel, lock);
+            return new OutputDirectory(dir, staging, channel, lock);   // named as given, e.g. in "Reports: …"
         } catch (IOException e) {
             close(channel);
             throw new CannotCertify("cannot lock the output directory " + target + ": " + e.getMessage());
@@ -100,7 +100,7 @@ final class OutputDirectory implements AutoCloseable {
         return staging;
     }
 
-    /** The directory the outputs end up in. */
+    /** The directory the outputs end up in, as the run was given it. */
     Path target() {
         return dir;
     }

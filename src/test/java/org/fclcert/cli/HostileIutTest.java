@@ -106,6 +106,20 @@ class HostileIutTest {
     }
 
     @Test
+    void noiseWithinToleranceAndAByteOrderMarkGetThePlainImplementationsVerdicts() throws Exception {
+        // issue 27: outputs varying by 1e-12 relative between two evaluations were "state leaks" on every case, and a
+        // byte-order mark before the hello reply made the run impossible
+        Map<String, CaseStatus> plain = statuses(certify("name fake").cases());
+        assertEquals(CaseStatus.PASSED, plain.get("B-FB-001"));
+        Report jitter = certify("jitter");
+        assertEquals(plain, statuses(jitter.cases()), "the same verdicts as without the noise");
+        List<String> notes = result(jitter, "B-FB-001").verdict().notes();
+        assertTrue(notes.stream().anyMatch(n -> n.startsWith("non-determinism within tolerance (not a state leak)")),
+                notes.toString());
+        assertEquals(plain, statuses(certify("bom").cases()), "the same verdicts with a byte-order mark");
+    }
+
+    @Test
     void anExportNestedAThousandDeepIsCheckedNotACrash() throws Exception {
         Report r = certify("deep-export", "--case", "B-FB-001");
         CaseResult c = result(r, "B-FB-001");

@@ -36,7 +36,7 @@ import org.junit.jupiter.api.io.TempDir;
 class InterruptedRunTest {
     private static final String CORPUS = "src/test/resources/corpus-process";
     private static final List<String> IDS = List.of("B-FB-001", "B-FB-002", "B-FB-003", "B-FB-901");
-    private static final String INTERRUPTED = "not run: the run was stopped: interrupted (SIGINT or SIGTERM)";
+    private static final String INTERRUPTED = "not run: the run was stopped: interrupted (SIGINT, SIGTERM or SIGHUP)";
     /** Far above what each run takes (a few seconds), far below what it would take unstopped. */
     private static final long BOUND_SECONDS = 30;
 
@@ -72,6 +72,25 @@ class InterruptedRunTest {
             Thread.sleep(50);
         }
         throw new AssertionError(file + " never reached " + lines + " lines");
+    }
+
+    /**
+     * The results file a run into {@code out} streams to: in its private sibling {@code .out.partial-…} until the
+     * run ends and moves it into place.
+     */
+    private static Path streaming(Path out) throws Exception {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(BOUND_SECONDS);
+        while (System.nanoTime() < end) {
+            try (var siblings = Files.list(out.getParent())) {
+                var partial = siblings.filter(p -> p.getFileName().toString().startsWith("." + out.getFileName()
+                        + ".partial-")).findFirst();
+                if (partial.isPresent()) {
+                    return partial.get().resolve("results.jsonl");
+                }
+            }
+            Thread.sleep(50);
+        }
+        throw new AssertionError("no run is writing into " + out);
     }
 
     private static int awaitExit(Process p) throws Exception {
@@ -147,12 +166,12 @@ class InterruptedRunTest {
     private void interruptCertify(String signal, boolean wholeGroup, int exitCode) throws Exception {
         Path out = dir.resolve("out");
         Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe");
-        awaitLines(out.resolve("results.jsonl"), 2);   // the header and the first case: the second is under way
+        awaitLines(streaming(out), 2);   // the header and the first case: the second is under way
         signal(signal, wholeGroup ? "-" + p.pid() : String.valueOf(p.pid()));
         assertEquals(exitCode, awaitExit(p), () -> "stderr: " + safeText("stderr"));
         agreeing(out, INTERRUPTED);
         String err = text("stderr");
-        assertTrue(err.contains("fclcert certify: the run was stopped (interrupted (SIGINT or SIGTERM)) after "), err);
+        assertTrue(err.contains("fclcert certify: the run was stopped (interrupted (SIGINT, SIGTERM or SIGHUP)) after "), err);
         assertFalse(err.contains("Exception") || err.contains("internal error"), err);
         assertFalse(err.contains("SKIPPED B-FB-"), "one line for the stop, not one per case left: " + err);
         assertTrue(text("stdout").contains("slow 1.0: 4 cases, "), text("stdout"));
@@ -175,6 +194,11 @@ class InterruptedRunTest {
     @Test
     void sigtermStopsTheRunTheSameWay() throws Exception {
         interruptCertify("TERM", false, 143);
+    }
+
+    @Test
+    void sighupStopsTheRunTheSameWay() throws Exception {
+        interruptCertify("HUP", false, 129);
     }
 
     @Test
@@ -213,11 +237,11 @@ class InterruptedRunTest {
         signal("INT", String.valueOf(p.pid()));
         assertEquals(130, awaitExit(p), () -> "stderr: " + safeText("stderr"));
         String err = text("stderr");
-        assertTrue(err.contains("fclcert probe: stopped (interrupted (SIGINT or SIGTERM)) after "), err);
+        assertTrue(err.contains("fclcert probe: stopped (interrupted (SIGINT, SIGTERM or SIGHUP)) after "), err);
         List<String> rows = text("stdout").lines().toList();
         assertEquals(22, rows.size(), text("stdout"));
         assertTrue(rows.get(0).startsWith("data-types "), rows.get(0));
-        assertTrue(rows.get(21).contains("not measured: the probe was stopped: interrupted (SIGINT or SIGTERM)"),
+        assertTrue(rows.get(21).contains("not measured: the probe was stopped: interrupted (SIGINT, SIGTERM or SIGHUP)"),
                 rows.get(21));
         List<DataCheckEntry> written = List.of(new com.fasterxml.jackson.databind.ObjectMapper()
                 .readValue(out.resolve("data-check-list.json").toFile(), DataCheckEntry[].class));

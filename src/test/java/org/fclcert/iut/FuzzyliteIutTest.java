@@ -291,6 +291,8 @@ class FuzzyliteIutTest {
 
     /** A stand-in that answers --help like fuzzylite and runs {@code body} for every other launch. */
     private static String fake(Path dir, String body) throws Exception {
+        // readable by others: as root, the sandbox runs the launch as an unprivileged uid (JUnit's directory is 700)
+        Files.setPosixFilePermissions(dir, PosixFilePermissions.fromString("rwxr-xr-x"));
         Path script = dir.resolve("fake-fuzzylite");
         Files.writeString(script, "#!/bin/sh\nif [ \"$1\" = --help ]; then echo 'version: 6.0'; exit 0; fi\n" + body + "\n");
         Files.setPosixFilePermissions(script, PosixFilePermissions.fromString("rwxr-xr-x"));
@@ -317,7 +319,9 @@ class FuzzyliteIutTest {
     void aHangingLaunchTimesOutAndItsChildProcessIsKilled(@TempDir Path dir) throws Exception {
         Path pid = dir.resolve("child.pid");
         String spec = fake(dir, "sleep 60 &\necho $! > " + pid + "\nwait");
-        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(700)).withRestartBudget(1);
+        // without the sandbox: the test reads the host pid the launch writes (in the sandbox the PID namespace ends it)
+        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(700)).withRestartBudget(1)
+                .withSandbox(org.fclcert.sandbox.SandboxSettings.none());
         try (ImplementationUnderTest iut = Iuts.open(spec, options)) {
             assertEquals("6.0", iut.hello().version());
             long start = System.nanoTime();
