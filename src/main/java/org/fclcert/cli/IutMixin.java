@@ -8,7 +8,7 @@ import picocli.CommandLine.Option;
 /** The options that name and open the implementation under test, shared by {@code certify}, {@code probe} and {@code fuzz}. */
 final class IutMixin {
     @Option(names = "--iut", paramLabel = "SPEC", defaultValue = "reference",
-            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR"
+            description = "reference | java:CLASS | process:COMMAND | fuzzylite[:PATH] | jfuzzylite[:JAR] | jfuzzylogic:JAR | ffll[:LIBRARY]"
                     + " (default: ${DEFAULT-VALUE})")
     String spec;
 

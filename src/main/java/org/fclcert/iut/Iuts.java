@@ -5,7 +5,8 @@ import java.util.List;
 /**
  * Opens an implementation under test from its spec: {@code reference}, {@code java:CLASS}, {@code process:COMMAND},
  * or a built-in adapter: fuzzylite 6.0 ({@code fuzzylite} or {@code fuzzylite:PATH}), jfuzzylite 6.0.1
- * ({@code jfuzzylite} or {@code jfuzzylite:JAR}) and jFuzzyLogic ({@code jfuzzylogic:JAR}).
+ * ({@code jfuzzylite} or {@code jfuzzylite:JAR}), jFuzzyLogic ({@code jfuzzylogic:JAR}) and FFLL 2.2.1
+ * ({@code ffll} or {@code ffll:LIBRARY}).
  */
 public final class Iuts {
     private Iuts() {}
@@ -37,13 +38,16 @@ public final class Iuts {
         if (spec.equals(JFuzzyLogicIut.SPEC) || spec.startsWith(JFuzzyLogicIut.SPEC + ":")) {
             return JFuzzyLogicIut.open(spec, options);
         }
+        if (spec.equals(FfllIut.SPEC) || spec.startsWith(FfllIut.SPEC + ":")) {
+            return FfllIut.open(spec, options);
+        }
         if (spec.startsWith("process:")) {
             List<String> command = CommandLineSplitter.split(spec.substring("process:".length()));
             return new ProcessIut(spec, command, options);
         }
         throw new IutException(
                 IutException.Kind.INFRA,
-                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR] or jfuzzylogic:JAR");
+                "unknown implementation under test '" + spec + "': use reference, java:CLASS, process:COMMAND, fuzzylite[:PATH], jfuzzylite[:JAR], jfuzzylogic:JAR or ffll[:LIBRARY]");
     }
 
     /**
@@ -72,6 +76,15 @@ public final class Iuts {
                             + " when an instance is made, so a program used directly must set every input",
                     "it runs in a JVM of its own; its static state lives as long as that JVM",
                     "see docs/iut-protocol.md, \"jFuzzyLogic\"");
+        }
+        if (s.equals(FfllIut.SPEC) || s.startsWith(FfllIut.SPEC + ":")) {
+            return List.of("FFLL addresses inputs by their index in declaration order and has one output: the bridge"
+                    + " matches input names to FFLL's own variables and returns that output only",
+                    "FFLL has no DEFAULT: when no rule fired it returns the smallest positive float (FLT_MIN,"
+                            + " about 1.2e-38), which the bridge passes on unchanged",
+                    "FFLL reads only the first function block and loads programs from files; a crash (segmentation"
+                            + " fault) ends its process, which is restarted",
+                    "see docs/iut-protocol.md, \"FFLL\"");
         }
         return List.of();
     }

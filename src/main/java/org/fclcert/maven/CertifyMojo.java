@@ -40,7 +40,9 @@ import org.fclcert.report.ReportFiles;
 public class CertifyMojo extends AbstractMojo {
     /**
      * The implementation: {@code java:CLASS} (found on the project's test class path), {@code process:COMMAND},
-     * {@code fuzzylite} or {@code fuzzylite:PATH} (the fuzzylite 6.0 command line), or {@code reference}.
+     * {@code fuzzylite} or {@code fuzzylite:PATH} (the fuzzylite 6.0 command line), {@code jfuzzylite[:JAR]},
+     * {@code jfuzzylogic:JAR}, {@code ffll} or {@code ffll:LIBRARY} (FFLL 2.2.1 through fclcert's bridge), or
+     * {@code reference}.
      */
     @Parameter(property = "fclcert.iut", required = true)
     private String iut;

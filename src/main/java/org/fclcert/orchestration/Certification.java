@@ -57,7 +57,8 @@ public final class Certification {
      * What to certify. Build one with {@link #builder(String, Corpus)}: only the implementation and the
      * corpus are required, everything else has the default the command line uses.
      *
-     * @param iutSpec     {@code reference}, {@code java:CLASS}, {@code process:COMMAND} or {@code fuzzylite[:PATH]}
+     * @param iutSpec     {@code reference}, {@code java:CLASS}, {@code process:COMMAND}, {@code fuzzylite[:PATH]},
+     *                    {@code jfuzzylite[:JAR]}, {@code jfuzzylogic:JAR} or {@code ffll[:LIBRARY]}
      * @param options     timeouts, class path and the like for the implementation
      * @param classpath   the class path as the user wrote it, for the report (null when none)
      * @param corpus      the loaded corpus

@@ -7,7 +7,7 @@ import org.fclcert.syntax.dialect.Dialect;
 /**
  * {@code --present-as}: in which library's layout the positive cases are also sent, the semantic axis of a
  * certification. {@link #AUTO} picks the layout of a built-in library adapter (fuzzylite and jfuzzylite:
- * fuzzylite's; jfuzzylogic: jFuzzyLogic's) and none for the reference, {@code java:} and {@code process:}.
+ * fuzzylite's; jfuzzylogic: jFuzzyLogic's; ffll: FFLL's) and none for the reference, {@code java:} and {@code process:}.
  */
 public enum PresentAs {
     AUTO,
@@ -37,6 +37,7 @@ public enum PresentAs {
         return switch (adapter.toLowerCase(Locale.ROOT)) {
             case "fuzzylite", "jfuzzylite" -> Optional.of(Dialect.FUZZYLITE);
             case "jfuzzylogic" -> Optional.of(Dialect.JFUZZYLOGIC);
+            case "ffll" -> Optional.of(Dialect.FFLL);
             default -> Optional.empty();
         };
     }
