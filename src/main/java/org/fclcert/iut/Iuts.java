@@ -87,7 +87,17 @@ public final class Iuts {
                                     + " when an instance is made, so a program used directly must set every input",
                             "it runs in a JVM of its own; its static state lives as long as that JVM",
                             "see docs/iut-protocol.md, \"jFuzzyLogic\""),
-                    (spec, argument, options) -> JFuzzyLogicIut.open(spec, options)));
+                    (spec, argument, options) -> JFuzzyLogicIut.open(spec, options)),
+            new Kind(FfllIut.SPEC, "ffll[:LIBRARY]", "FFLL 2.2.1 through fclcert's bridge, in a process of its own",
+                    Argument.OPTIONAL, Optional.of(Dialect.FFLL), List.of(
+                            "FFLL addresses inputs by their index in declaration order and has one output: the bridge"
+                                    + " matches input names to FFLL's own variables and returns that output only",
+                            "FFLL has no DEFAULT: when no rule fired it returns the smallest positive float (FLT_MIN,"
+                                    + " about 1.2e-38), which the bridge passes on unchanged",
+                            "FFLL reads only the first function block and loads programs from files; a crash (segmentation"
+                                    + " fault) ends its process, which is restarted",
+                            "see docs/iut-protocol.md, \"FFLL\""),
+                    (spec, argument, options) -> FfllIut.open(spec, options)));
 
     /** The kind a spec names, if any. */
     public static Optional<Kind> kind(String spec) {

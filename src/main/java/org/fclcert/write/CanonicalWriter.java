@@ -2,6 +2,7 @@ package org.fclcert.write;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.fclcert.syntax.ReservedWords;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
@@ -55,7 +56,7 @@ public final class CanonicalWriter {
         fb.defuzzifications().forEach(d -> sections.add(defuzzify(d)));
         fb.ruleBlocks().forEach(b -> sections.add(ruleBlock(b)));
         fb.options().forEach(o -> sections.add(options(o)));
-        return "FUNCTION_BLOCK " + fb.name() + "\n" + String.join("\n", sections) + "END_FUNCTION_BLOCK\n";
+        return "FUNCTION_BLOCK " + name(fb.name()) + "\n" + String.join("\n", sections) + "END_FUNCTION_BLOCK\n";
     }
 
     /**
@@ -89,17 +90,17 @@ public final class CanonicalWriter {
 
     private static String declaration(Variable v) {
         String init = v.initialValue().map(l -> " := " + LiteralText.of(l)).orElse("");
-        return v.name() + " : " + v.type().name() + init + ";";
+        return name(v.name()) + " : " + v.type().name() + init + ";";
     }
 
     private static String fuzzify(Fuzzification f) {
-        StringBuilder out = new StringBuilder("FUZZIFY ").append(f.variable()).append('\n');
+        StringBuilder out = new StringBuilder("FUZZIFY ").append(name(f.variable())).append('\n');
         f.terms().forEach(t -> line(out, term(t)));
         return out.append("END_FUZZIFY\n").toString();
     }
 
     private static String defuzzify(Defuzzification d) {
-        StringBuilder out = new StringBuilder("DEFUZZIFY ").append(d.variable()).append('\n');
+        StringBuilder out = new StringBuilder("DEFUZZIFY ").append(name(d.variable())).append('\n');
         d.range().ifPresent(r -> line(out, "RANGE (" + LiteralText.of(r.min()) + " .. " + LiteralText.of(r.max()) + ");"));
         d.terms().forEach(t -> line(out, term(t)));
         d.method().ifPresent(m -> line(out, "METHOD : " + m.value().keyword() + ";"));
@@ -112,7 +113,7 @@ public final class CanonicalWriter {
     }
 
     private static String term(Term t) {
-        return "TERM " + t.name() + " := " + membershipFunction(t.function()) + ";";
+        return "TERM " + name(t.name()) + " := " + membershipFunction(t.function()) + ";";
     }
 
     private static String membershipFunction(MembershipFunction f) {
@@ -138,11 +139,11 @@ public final class CanonicalWriter {
     }
 
     static String operand(Operand o) {
-        return o instanceof Literal l ? LiteralText.of(l) : ((VariableRef) o).name();
+        return o instanceof Literal l ? LiteralText.of(l) : name(((VariableRef) o).name());
     }
 
     private static String ruleBlock(RuleBlock b) {
-        StringBuilder out = new StringBuilder("RULEBLOCK ").append(b.name()).append('\n');
+        StringBuilder out = new StringBuilder("RULEBLOCK ").append(name(b.name())).append('\n');
         b.and().ifPresent(a -> line(out, "AND : " + a.value().name() + ";"));
         b.or().ifPresent(o -> line(out, "OR : " + o.value().name() + ";"));
         b.activation().ifPresent(a -> line(out, "ACT : " + a.value().name() + ";"));
@@ -153,7 +154,7 @@ public final class CanonicalWriter {
 
     /** {@code RULE n : IF c THEN s1,} with each further subconclusion on its own, deeper line. */
     static String rule(Rule r) {
-        StringBuilder out = new StringBuilder(INDENT).append("RULE ").append(r.name()).append(" : IF ")
+        StringBuilder out = new StringBuilder(INDENT).append("RULE ").append(name(r.name())).append(" : IF ")
                 .append(ConditionText.of(r.condition())).append(" THEN ");
         List<Subconclusion> parts = r.conclusion();
         for (int i = 0; i < parts.size(); i++) {
@@ -166,14 +167,22 @@ public final class CanonicalWriter {
     }
 
     private static String subconclusion(Subconclusion s) {
-        String term = s.term().map(t -> " IS " + t).orElse("");
+        String term = s.term().map(t -> " IS " + name(t)).orElse("");
         String weight = s.weight().map(w -> " WITH " + operand(w)).orElse("");
-        return s.variable() + term + weight;
+        return name(s.variable()) + term + weight;
     }
 
     private static String options(OptionsBlock o) {
         String content = o.content().isEmpty() ? "" : o.content() + "\n";
         return "OPTIONS\n" + content + "END_OPTIONS\n";
+    }
+
+    /**
+     * A name as written: a keyword of standard FCL (a dialect reader may give one, e.g. an unnamed block's
+     * {@code function_block}) gets {@link ReservedWords#SUFFIX}, the same at every use; StandardConversion lists it.
+     */
+    static String name(String name) {
+        return ReservedWords.unreserved(name);
     }
 
     private static void line(StringBuilder out, String text) {

@@ -47,9 +47,9 @@ final class ConditionText {
                 throw new IllegalArgumentException("the hedges " + t.hedges() + " on '" + t.variable()
                         + "' are not expressible in standard FCL; convert the program first");
             }
-            out.append(t.variable()).append(t.negated() ? " IS NOT " : " IS ").append(t.term());
+            out.append(CanonicalWriter.name(t.variable())).append(t.negated() ? " IS NOT " : " IS ").append(CanonicalWriter.name(t.term()));
         } else if (c instanceof VariableSubcondition v) {
-            out.append(v.variable());
+            out.append(CanonicalWriter.name(v.variable()));
         } else if (c instanceof Parenthesized p) {
             work.push(")");
             work.push(p.inner());

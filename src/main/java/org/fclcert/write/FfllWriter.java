@@ -54,9 +54,30 @@ public final class FfllWriter implements DialectWriter {
                 out.append('\n');
             }
             OutputConditions.check(program, program.functionBlocks().get(i), findings, null);
+            structure(program, program.functionBlocks().get(i), i, findings);
             new Block(new BlockContext(program.functionBlocks().get(i), findings)).write(out);
         }
         return new Written(Dialect.FFLL, out.toString(), findings.losses(), findings.differences());
+    }
+
+    /**
+     * What FFLL's model cannot hold: it reads the first VAR_INPUT, VAR_OUTPUT and RULEBLOCK of a file, has one
+     * output variable (a second: "Model Already Has An Output Variable") and one rule block.
+     */
+    private static void structure(Program program, FunctionBlock fb, int index, Findings findings) {
+        if (index > 0) {
+            findings.lost(fb.location(), WriterCode.STRUCTURE, "FFLL reads one function block; '" + fb.name()
+                    + "' is written after the first, which FFLL alone would read");
+        }
+        List<Variable> outputs = fb.variables(VariableKind.OUTPUT);
+        if (outputs.size() > 1) {
+            findings.lost(outputs.get(1).location(), WriterCode.STRUCTURE, "FFLL's model has one output variable;"
+                    + " '" + fb.name() + "' has " + outputs.size() + " (FFLL refuses the second)");
+        }
+        if (fb.ruleBlocks().size() > 1) {
+            findings.lost(fb.ruleBlocks().get(1).location(), WriterCode.STRUCTURE, "FFLL reads the first RULEBLOCK"
+                    + " only; '" + fb.name() + "' has " + fb.ruleBlocks().size());
+        }
     }
 
     /** One function block: rules first (they may add terms), then the text in FFLL's order. */
@@ -128,14 +149,8 @@ public final class FfllWriter implements DialectWriter {
         }
 
         private void addedTerms(String input, StringBuilder out) {
-            added.getOrDefault(Names.key(input), Map.of()).forEach((name, points) -> {
-                out.append(IN).append("TERM ").append(name).append(" := ");
-                List<String> ps = new ArrayList<>();
-                for (double[] p : points) {
-                    ps.add("(" + LibraryText.number(p[0]) + ", " + LibraryText.number(p[1]) + ")");
-                }
-                out.append(String.join(" ", ps)).append(";\n");
-            });
+            added.getOrDefault(Names.key(input), Map.of()).forEach((name, points) ->
+                    out.append(IN).append("TERM ").append(name).append(" := ").append(pointsText(points)).append(";\n"));
         }
 
         private void term(Term t, double[] span, StringBuilder out) {
@@ -147,6 +162,15 @@ public final class FfllWriter implements DialectWriter {
                 return;
             }
             List<Point> points = points(t, span);
+            Optional<List<double[]>> literal = literal(points);
+            if (literal.isPresent()) {
+                Optional<List<double[]>> form = FfllShapes.form(literal.get(), span[0], span[1]);
+                if (form.isPresent()) {
+                    out.append(pointsText(form.get())).append(";\n");
+                    return;
+                }
+                cx.findings.lost(t.location(), WriterCode.SHAPE, FfllShapes.why(t.name(), span[0], span[1]));
+            }
             if (points.size() > 7) {
                 cx.findings.differs(t.location(), WriterCode.NOT_LOADED, "term '" + t.name() + "' has "
                         + points.size() + " points; FFLL loads terms of 1, 3, 4 or 7 points only");
@@ -155,6 +179,26 @@ public final class FfllWriter implements DialectWriter {
                 points.add(points.get(points.size() - 1));   // a repeated last point changes no degree
             }
             out.append(LibraryText.points(points, cx, t.name())).append(";\n");
+        }
+
+        /** The points as numbers, when none is given by a variable. */
+        private static Optional<List<double[]>> literal(List<Point> points) {
+            List<double[]> out = new ArrayList<>();
+            for (Point p : points) {
+                if (!(p.x() instanceof Literal x) || !(p.degree() instanceof Literal y)) {
+                    return Optional.empty();
+                }
+                out.add(new double[] {x.value(), y.value()});
+            }
+            return Optional.of(out);
+        }
+
+        private static String pointsText(List<double[]> points) {
+            List<String> ps = new ArrayList<>();
+            for (double[] p : points) {
+                ps.add("(" + LibraryText.number(p[0]) + ", " + LibraryText.number(p[1]) + ")");
+            }
+            return String.join(" ", ps);
         }
 
         private List<Point> points(Term t, double[] span) {
@@ -219,18 +263,28 @@ public final class FfllWriter implements DialectWriter {
                     .orElse(AndAlgorithm.MIN));
             OrAlgorithm or = rb.or().map(Located::value).orElse(null);
             AccumulationMethod accu = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
+            // FFLL reads the line after the RULEBLOCK's name as the AND line and the next as the ACCU line, nothing
+            // between them (an ACT line makes it refuse the program); it ANDs and activates with MIN whatever is written
             out.append(IN).append("AND: ").append(and.name()).append(";\n");
+            if (and != AndAlgorithm.MIN) {
+                cx.findings.differs(rb.and().map(Located::location).orElse(rb.location()), WriterCode.IGNORED_BY_LIBRARY,
+                        "FFLL ANDs subconditions with MIN whatever AND says (rule block '" + rb.name() + "')");
+            }
             rb.activation().ifPresent(a -> {
-                if (!a.value().standard()) {
-                    cx.findings.lost(a.location(), WriterCode.OPERATOR, "FFLL has no ACT " + a.value() + "; rule block '"
-                            + rb.name() + "' is written with MIN");
+                if (a.value() != org.fclcert.model.ActivationMethod.MIN && concludesPointTerms(rb)) {
+                    cx.findings.lost(a.location(), WriterCode.OPERATOR, "FFLL has no ACT: it activates with MIN"
+                            + " (an ACT line between AND and ACCUM makes it refuse the program); rule block '" + rb.name()
+                            + "' is written without ACT " + a.value());
                 }
-                out.append(IN).append("ACT: ").append(a.value().standard() ? a.value().name() : "MIN").append(";\n");
             });
-            if (!accu.standard()) {
-                cx.findings.lost(rb.accumulation().get().location(), WriterCode.ACCUMULATION, "FFLL has no ACCU "
-                        + accu + "; rule block '" + rb.name() + "' is written with MAX");
+            if (accu != AccumulationMethod.MAX && accu != AccumulationMethod.BSUM) {
+                cx.findings.lost(rb.accumulation().get().location(), WriterCode.ACCUMULATION, "FFLL reads ACCU MAX and"
+                        + " BSUM only (any other it refuses); rule block '" + rb.name() + "' is written with MAX");
                 accu = AccumulationMethod.MAX;
+            } else if (accu == AccumulationMethod.BSUM) {
+                cx.findings.differs(rb.accumulation().get().location(), WriterCode.IGNORED_BY_LIBRARY, "FFLL reads"
+                        + " ACCU BSUM as MIN: it keeps the least degree of each output term (rule block '" + rb.name()
+                        + "')");
             }
             out.append(IN).append("ACCUM: ").append(accu.name()).append(";\n");
             List<String[]> rules = new ArrayList<>();
@@ -246,12 +300,26 @@ public final class FfllWriter implements DialectWriter {
                     rules.add(new String[] {r.name(), c, conclusion});
                 }
             }
+            Map<String, String[]> cells = new LinkedHashMap<>();
+            for (String[] r : rules) {
+                String[] before = cells.putIfAbsent(r[1], r);
+                if (before != null && !before[2].equals(r[2])) {
+                    cx.findings.lost(rb.location(), WriterCode.RULE_FORM, "rules " + before[0] + " and " + r[0]
+                            + " share the condition " + r[1] + " and conclude differently; FFLL's rules are a table with"
+                            + " one conclusion per combination of input terms, and it keeps the last");
+                }
+            }
             for (int i = 0; i < rules.size(); i++) {
                 String[] r = rules.get(i);
                 out.append(IN).append("RULE ").append(split ? Integer.toString(i) : r[0]).append(": IF ").append(r[1])
                         .append(" THEN ").append(r[2]).append(";\n");
             }
             return out.append("END_RULEBLOCK\n\n").toString();
+        }
+
+        private boolean concludesPointTerms(RuleBlock rb) {
+            return rb.rules().stream().flatMap(r -> r.conclusion().stream()).map(Subconclusion::variable).distinct()
+                    .anyMatch(cx::pointTerms);
         }
 
         /** The rule's condition as FFLL conditions (one per conjunction); empty when it has no FFLL form. */
@@ -276,7 +344,8 @@ public final class FfllWriter implements DialectWriter {
                     }
                     String term = l.negated() ? complement(inputs.get(k), l.term()) : cx.term(l.variable(), l.term());
                     if (term == null) {
-                        problem = "the singleton '" + l.term() + "' of '" + l.variable() + "' has no complement term";
+                        problem = "'" + l.term() + "' of '" + l.variable() + "' has no complement term FFLL can hold"
+                                + " (a singleton, or its complement is no triangle, trapezoid or shoulder)";
                         break;
                     }
                     if (terms[k] != null && !(terms[k].equals(term) && and == AndAlgorithm.MIN)) {
@@ -298,7 +367,8 @@ public final class FfllWriter implements DialectWriter {
                 StringBuilder c = new StringBuilder();
                 for (int k = 0; k < inputs.size(); k++) {
                     String term = terms[k] != null ? terms[k] : anything(inputs.get(k));
-                    c.append(k == 0 ? "" : " AND ").append(inputs.get(k).name()).append(" IS ").append(term);
+                    // parenthesised: FFLL reads '(x IS t)' by position, and takes a bare first word for its shorthand
+                    c.append(k == 0 ? "(" : " AND (").append(inputs.get(k).name()).append(" IS ").append(term).append(')');
                 }
                 out.add(c.toString());
             }
@@ -313,7 +383,7 @@ public final class FfllWriter implements DialectWriter {
                             + " variable '" + s.variable() + "' itself (Table 9), which FFLL cannot say: left out");
                     continue;
                 }
-                String text = cx.variable(s.variable()) + " IS " + cx.term(s.variable(), s.term().get());
+                String text = "(" + cx.variable(s.variable()) + " IS " + cx.term(s.variable(), s.term().get()) + ")";
                 if (s.weight().isPresent()) {
                     String w = cx.numberText(s.weight().get(), 1.0, WriterCode.WEIGHT_VARIABLE, "the weight of '"
                             + s.variable() + "' in rule " + r.name());
@@ -352,8 +422,7 @@ public final class FfllWriter implements DialectWriter {
             }
             double[] span = fb.fuzzification(input.name()).map(cx::inputSpan).orElse(new double[] {0, 1});
             String name = fresh(input, "anything");
-            terms.put(name, List.of(new double[] {span[0], 1}, new double[] {(span[0] + span[1]) / 2, 1},
-                    new double[] {span[1], 1}));
+            terms.put(name, FfllShapes.everywhere(span[0], span[1]));
             return name;
         }
 
@@ -377,11 +446,12 @@ public final class FfllWriter implements DialectWriter {
             for (Point p : points) {
                 ps.add(new double[] {((Literal) p.x()).value(), 1 - ((Literal) p.degree()).value()});
             }
-            while (ps.size() == 2 || ps.size() == 5 || ps.size() == 6) {
-                ps.add(ps.get(ps.size() - 1));
+            Optional<List<double[]>> form = FfllShapes.form(ps, span[0], span[1]);
+            if (form.isEmpty()) {
+                return null;
             }
             String name = fresh(input, wanted);
-            terms.put(name, ps);
+            terms.put(name, form.get());
             return name;
         }
 

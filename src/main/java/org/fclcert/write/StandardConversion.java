@@ -139,7 +139,8 @@ public final class StandardConversion {
             StandardConversion::hedges,
             StandardConversion::accumulations,
             StandardConversion::methods,
-            StandardConversion::defaults);
+            StandardConversion::defaults,
+            StandardConversion::reservedNames);
 
     /** Reader-recorded constructs another conversion judges (their finding comes from there). */
     private static final Set<Feature> JUDGED_ELSEWHERE = Set.of(Feature.O_DEFAULT_NAN, Feature.O_TAKAGI_SUGENO,
@@ -160,6 +161,34 @@ public final class StandardConversion {
     }
 
     // ---------------------------------------------------------------- the conversions
+
+    /**
+     * Names that are keywords of standard FCL (a dialect reader may give them: an unnamed block is
+     * {@code function_block}, jFuzzyLogic names a rule {@code BSUM}): the canonical writer writes each with
+     * {@link org.fclcert.syntax.ReservedWords#SUFFIX} at every use; listed here, once per name, as exact.
+     */
+    private static Program reservedNames(Program program, Options options, List<Finding> findings) {
+        for (org.fclcert.model.FunctionBlock fb : program.functionBlocks()) {
+            Set<String> seen = new java.util.HashSet<>();
+            java.util.function.BiConsumer<String, SourceLocation> check = (name, at) -> {
+                if (org.fclcert.syntax.ReservedWords.isReserved(name)
+                        && seen.add(name.toUpperCase(java.util.Locale.ROOT))) {
+                    findings.add(new Finding("reserved name", at, new Kind.Exact(), "'" + name + "' is a keyword of"
+                            + " standard FCL (Table 7): written as '" + org.fclcert.syntax.ReservedWords.unreserved(name)
+                            + "' at every use"));
+                }
+            };
+            check.accept(fb.name(), fb.location());
+            fb.variables().forEach(v -> check.accept(v.name(), v.location()));
+            fb.fuzzifications().forEach(f -> f.terms().forEach(t -> check.accept(t.name(), t.location())));
+            fb.defuzzifications().forEach(d -> d.terms().forEach(t -> check.accept(t.name(), t.location())));
+            fb.ruleBlocks().forEach(rb -> {
+                check.accept(rb.name(), rb.location());
+                rb.rules().forEach(r -> check.accept(r.name(), r.location()));
+            });
+        }
+        return program;
+    }
 
     /**
      * Constructs a dialect reader already expressed in the standard model (a term-only subcondition is a

@@ -24,6 +24,7 @@ public enum WriterCode implements DiagnosticCode {
     DEFAULT("FCL-X111", "a DEFAULT the library cannot state"),
     NAME("FCL-X112", "a name the library does not read"),
     TYPE("FCL-X113", "a data type the library does not declare"),
+    STRUCTURE("FCL-X114", "more function blocks, outputs or rule blocks than the library's model holds"),
     SAMPLED("FCL-X201", "the library samples this defuzzification instead of computing it exactly"),
     NSUM("FCL-X202", "the library computes ACCU NSUM as BSUM"),
     WEIGHT_BEFORE_ACTIVATION("FCL-X203", "the library folds a weight into the rule's degree before an ACT other than PROD"),

@@ -127,8 +127,11 @@ class DialectWritersTest {
             """;
 
     /**
-     * FFLL: the OR becomes two rules, each naming both inputs in declaration order; 'b IS NOT dry' becomes the
-     * complement term (x, 1 − y) and an input a conjunction leaves out gets the term 'anything' of degree 1.
+     * FFLL: the OR becomes two rules, each naming both inputs in declaration order, each subcondition and the
+     * subconclusion in parentheses (FFLL's strict form; unparenthesised it takes the first word for its shorthand);
+     * 'b IS NOT dry' becomes the complement term (x, 1 − y) and an input a conjunction leaves out gets the term
+     * 'anything' of degree 1. Every term in the shapes FFLL holds (it ignores written degrees): a shoulder as a
+     * trapezoid with a repeated point at the end of the RANGE, 'anything' as the trapezoid over the whole RANGE.
      */
     @Test
     void ffllExpandsOrAndNotIntoRulesOverEveryInput() throws Exception {
@@ -137,21 +140,21 @@ class DialectWritersTest {
         assertTrue(w.exact(), w.notExpressible().toString());
         assertTrue(w.text().contains("""
                 FUZZIFY a
-                    TERM hot := (0, 0) (10, 1) (10, 1);
-                    TERM anything := (0, 1) (5, 1) (10, 1);
+                    TERM hot := (0, 0) (10, 1) (10, 1) (10, 1);
+                    TERM anything := (0, 1) (0, 1) (10, 1) (10, 1);
                 END_FUZZIFY
                 """), w.text());
         assertTrue(w.text().contains("""
                 FUZZIFY b
-                    TERM dry := (0, 1) (4, 1) (8, 0) (10, 0);
-                    TERM not_dry := (0, 0) (4, 0) (8, 1) (10, 1);
-                    TERM anything := (0, 1) (5, 1) (10, 1);
+                    TERM dry := (0, 1) (0, 1) (4, 1) (8, 0);
+                    TERM not_dry := (4, 0) (8, 1) (10, 1) (10, 1);
+                    TERM anything := (0, 1) (0, 1) (10, 1) (10, 1);
                 END_FUZZIFY
                 """), w.text());
         assertTrue(w.text().contains("""
-                    RULE 0: IF a IS anything AND b IS not_dry THEN y IS off;
-                    RULE 1: IF a IS hot AND b IS anything THEN y IS off;
-                    RULE 2: IF a IS anything AND b IS dry THEN y IS on;
+                    RULE 0: IF (a IS anything) AND (b IS not_dry) THEN (y IS off);
+                    RULE 1: IF (a IS hot) AND (b IS anything) THEN (y IS off);
+                    RULE 2: IF (a IS anything) AND (b IS dry) THEN (y IS on);
                 """), w.text());
         assertTrue(w.text().contains("    a REAL; (* RANGE(0 .. 10) *)\n"), w.text());
         // by hand: a = 5, b = 6: hot 0.5, dry 0.5, not dry 0.5; off = max(0.5, 0.5) = 0.5, on = 0.5 → 50

@@ -37,6 +37,10 @@ public enum DialectCode implements DiagnosticCode {
             "a term of a number of points FFLL does not load (it takes 1, 3, 4 or 7)"),
     FFLL_RANGES_DISAGREE("FCL-D120", Severity.WARNING, "5.2.3",
             "an output whose RANGE and RANGE comment disagree; fclcert uses the RANGE"),
+    FFLL_PARENTHESISED_SUBCONCLUSION("FCL-D121", Severity.WARNING, "5.4",
+            "a subconclusion in parentheses, as FFLL writes them; read without them"),
+    FFLL_DEFUZZIFY_NAME_IGNORED("FCL-D122", Severity.WARNING, "5.2.3",
+            "DEFUZZIFY naming no declared variable: FFLL ignores the name and defuzzifies its one output"),
 
     // the jFuzzyLogic and fuzzylite readers (one shared reading core, DialectParser, with a LibraryDialect strategy each): FCL-S3nn errors, FCL-W3nn
     // warnings where the library gives the program another meaning than fclcert reads

@@ -32,7 +32,11 @@ import org.fclcert.syntax.ReaderOptions;
  *       a declaration without one gets FCL-D118 (FFLL does not load it);</li>
  *   <li>END_FUZZIFY closing a DEFUZZIFY is recorded (O-END-FUZZIFY; the builder accepts it);</li>
  *   <li>{@code FUNCTION_BLOCK} without a name gets the name {@code function_block} (O-UNNAMED-BLOCK), and
- *       {@code : =} becomes {@code :=} (O-SPACED-ASSIGN), as FFLL's API sample writes them.</li>
+ *       {@code : =} becomes {@code :=} (O-SPACED-ASSIGN), as FFLL's API sample writes them;</li>
+ *   <li>a subconclusion in parentheses, {@code THEN (valve IS open)} as FFLL's writer writes it, loses them
+ *       (FCL-D121);</li>
+ *   <li>{@code DEFUZZIFY x} naming no declared variable, in a block with one output, is read as that output's
+ *       DEFUZZIFY: FFLL skips the name and defuzzifies its one output (its own sample files do this; FCL-D122).</li>
  * </ul>
  */
 final class FfllTokens implements ReaderOptions.TokenFilter {
@@ -90,9 +94,35 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
         Declaration current = null;
         List<Declaration> section = new ArrayList<>();
         Map<String, RangeComment> fbRanges = new HashMap<>();
+        boolean afterThen = false;
+        int previous = -1;
+        java.util.Set<Integer> dropped = new java.util.HashSet<>();
+        List<String> declared = new ArrayList<>();
+        List<String> outputs = new ArrayList<>();
+        boolean inOutputs = false;
         for (int i = 0; i < tokens.size(); i++) {
             Token t = tokens.get(i);
             int type = t.getType();
+            if (t.getChannel() == Token.DEFAULT_CHANNEL) {
+                int before = previous;
+                previous = type;
+                if (dropped.contains(i)) {
+                    continue;
+                }
+                if (type == FclLexer.THEN) {
+                    afterThen = true;
+                } else if (type == FclLexer.SEMI || type == FclLexer.END_RULEBLOCK) {
+                    afterThen = false;
+                } else if (afterThen && type == FclLexer.LPAREN && (before == FclLexer.THEN || before == FclLexer.COMMA)) {
+                    int close = closing(tokens, i);
+                    if (close > 0) {
+                        report.warning(t, DialectCode.FFLL_PARENTHESISED_SUBCONCLUSION, "a subconclusion in"
+                                + " parentheses, as FFLL writes it; the standard writes none there (5.4); read without them");
+                        dropped.add(close);
+                        continue;
+                    }
+                }
+            }
             if (inOptions) {
                 inOptions = type != FclLexer.END_OPTIONS && type != FclLexer.END_OPTION
                         && type != FclLexer.END_FUNCTION_BLOCK;
@@ -108,6 +138,8 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
             }
             switch (type) {
                 case FclLexer.FUNCTION_BLOCK -> {
+                    declared = new ArrayList<>();
+                    outputs = new ArrayList<>();
                     fbRanges = new HashMap<>();
                     ranges.add(fbRanges);
                     Token next = next(tokens, i);
@@ -138,6 +170,7 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                 case FclLexer.OPTIONS, FclLexer.OPTION -> inOptions = true;
                 case FclLexer.VAR_INPUT, FclLexer.VAR_OUTPUT, FclLexer.VAR -> {
                     inVar = true;
+                    inOutputs = type == FclLexer.VAR_OUTPUT;
                     state = Decl.START;
                     current = null;
                     section = new ArrayList<>();
@@ -160,7 +193,22 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                         }
                     }
                 }
-                case FclLexer.DEFUZZIFY -> inDefuzzify = true;
+                case FclLexer.DEFUZZIFY -> {
+                    inDefuzzify = true;
+                    Token name = next(tokens, i);
+                    if (name != null && name.getType() == FclLexer.IDENT && outputs.size() == 1
+                            && declared.stream().noneMatch(d -> Names.same(d, name.getText()))) {
+                        report.warning(name, DialectCode.FFLL_DEFUZZIFY_NAME_IGNORED, "'" + name.getText() + "' is not a"
+                                + " declared variable; FFLL skips the name after DEFUZZIFY and defuzzifies its one output,"
+                                + " so this is read as DEFUZZIFY " + outputs.get(0));
+                        out.add(t);
+                        CommonToken renamed = new CommonToken(name);
+                        renamed.setText(outputs.get(0));
+                        out.add(renamed);
+                        i = tokens.indexOf(name);
+                        continue;
+                    }
+                }
                 case FclLexer.END_DEFUZZIFY, FclLexer.FUZZIFY, FclLexer.RULEBLOCK, FclLexer.END_FUNCTION_BLOCK ->
                         inDefuzzify = false;
                 case FclLexer.END_FUZZIFY -> {
@@ -203,6 +251,10 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                                 section.add(current);
                             }
                             current.names.add(t);
+                            declared.add(t.getText());
+                            if (inOutputs) {
+                                outputs.add(t.getText());
+                            }
                             state = Decl.NAME;
                         }
                     }
@@ -284,6 +336,25 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
     private static boolean nameLike(Token t) {
         return t.getType() == FclLexer.IDENT || (t.getType() >= FclLexer.RANGE && t.getType() <= FclLexer.ULINT
                 && Character.isLetter(t.getText().charAt(0)));
+    }
+
+    /** The index of the ')' closing the '(' at {@code open}, before the statement's ';'; -1 when there is none. */
+    private static int closing(List<Token> tokens, int open) {
+        int depth = 0;
+        for (int j = open; j < tokens.size(); j++) {
+            Token u = tokens.get(j);
+            if (u.getChannel() != Token.DEFAULT_CHANNEL) {
+                continue;
+            }
+            if (u.getType() == FclLexer.LPAREN) {
+                depth++;
+            } else if (u.getType() == FclLexer.RPAREN && --depth == 0) {
+                return j;
+            } else if (u.getType() == FclLexer.SEMI || u.getType() == FclLexer.END_RULEBLOCK) {
+                return -1;
+            }
+        }
+        return -1;
     }
 
     /** The next token on the default channel after index i, or null. */
