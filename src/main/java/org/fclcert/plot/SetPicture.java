@@ -6,7 +6,9 @@ import java.util.List;
  * The accumulated set of one output at one step, as fclcert's reference evaluator computed it, with the
  * standard's value and the implementation's marked on its axis: what report.html shows beside a wrong value.
  * A piece-wise linear set is drawn filled; singletons as bars at their values, as high as their degrees. A
- * value far off the set's span is drawn at the edge it lies beyond, and the legend says so.
+ * value far off the set's span is drawn at the edge it lies beyond, and the legend says so. Two values so close that
+ * their lines would merge (E-ACCU-NSUM-002: 49.13 against 49.72) are drawn again under the legend on a magnified
+ * strip of the axis, where they stand apart.
  */
 public final class SetPicture {
     /** Wider than {@link Plotter#WIDTH}: the legend carries the two values. */
@@ -67,7 +69,53 @@ public final class SetPicture {
         svg.raw("<line x1=\"" + (x + 12) + "\" y1=\"" + (y + 32) + "\" x2=\"" + (x + 12) + "\" y2=\"" + (y + 48)
                 + "\" stroke=\"" + ACTUAL + "\" stroke-width=\"3\" stroke-dasharray=\"6 4\"/>");
         svg.text(x + 30, y + 44, "start", "implementation: " + actualNote);
+        if (actual != null && tooClose(expected, actual, d)) {
+            magnified(svg, x, y + 80, expected, actual, d);
+        }
         return svg.finish();
+    }
+
+    /** Two values closer than this many pixels on the main axis get the magnified strip: their lines would merge. */
+    static final double CLOSE_PIXELS = 12;
+    /** The magnified strip: its width, and how much of it the two values span (they sit at a fifth and four fifths). */
+    static final int STRIP_WIDTH = 260;
+
+    static boolean tooClose(double expected, double actual, double[] d) {
+        return Double.isFinite(expected) && Double.isFinite(actual) && expected != actual
+                && expected >= d[0] && expected <= d[1] && actual >= d[0] && actual <= d[1]
+                && Math.abs(Plotter.px(expected, d) - Plotter.px(actual, d)) < CLOSE_PIXELS;
+    }
+
+    /** The span of the magnified strip: the two values at a fifth and four fifths of it. */
+    static double[] stripDomain(double expected, double actual) {
+        double lo = Math.min(expected, actual);
+        double hi = Math.max(expected, actual);
+        double pad = (hi - lo) / 3 * 2;
+        return new double[] {lo - pad / 2, hi + pad / 2};
+    }
+
+    /** Where {@code value} is drawn in the strip that starts at {@code left}. */
+    static double stripX(double value, double[] strip, int left) {
+        return left + STRIP_WIDTH * (value - strip[0]) / (strip[1] - strip[0]);
+    }
+
+    /**
+     * Beside the plot, under the legend: a strip of the axis around the two values, so wide that they stand apart
+     * (a person cannot tell two lines 2 pixels apart), with its ends and how much it magnifies written on it.
+     */
+    private static void magnified(Svg svg, int left, int top, double expected, double actual, double[] d) {
+        double[] strip = stripDomain(expected, actual);
+        long times = Math.round((d[1] - d[0]) / Plotter.PLOT_WIDTH * STRIP_WIDTH / (strip[1] - strip[0]));
+        int axis = top + 60;
+        svg.text(left, top, "start", "the two values, magnified " + times + "×:");
+        svg.raw("<rect class=\"strip\" x=\"" + left + "\" y=\"" + (top + 10) + "\" width=\"" + STRIP_WIDTH
+                + "\" height=\"50\" fill=\"#f6f7f9\" stroke=\"#b5bcc5\"/>");
+        svg.line(stripX(expected, strip, left), top + 12, stripX(expected, strip, left), axis - 2, EXPECTED, 3);
+        svg.raw("<line class=\"marker\" x1=\"" + Svg.n(stripX(actual, strip, left)) + "\" y1=\"" + (top + 12)
+                + "\" x2=\"" + Svg.n(stripX(actual, strip, left)) + "\" y2=\"" + (axis - 2) + "\" stroke=\"" + ACTUAL
+                + "\" stroke-width=\"3\" stroke-dasharray=\"6 4\"/>");
+        svg.text(left, axis + 16, "start", text(strip[0]));
+        svg.text(left + STRIP_WIDTH, axis + 16, "end", text(strip[1]));
     }
 
     /**
@@ -116,11 +164,16 @@ public final class SetPicture {
         return new double[] {lo, hi};
     }
 
-    /** A vertical line at {@code value}, or at the edge it lies beyond; the legend's text for it. */
-    private static String marker(Svg svg, double value, double[] d, String colour, String dashes) {
-        String text = value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value)
+    /** A value as the legend writes it: an integer as such, else six significant digits without trailing zeros. */
+    static String text(double value) {
+        return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value)
                 : String.format(java.util.Locale.ROOT, "%.6g", value).replaceAll("(\\.\\d*?)0+($|e)", "$1$2")
                         .replaceAll("\\.($|e)", "$1");
+    }
+
+    /** A vertical line at {@code value}, or at the edge it lies beyond; the legend's text for it. */
+    private static String marker(Svg svg, double value, double[] d, String colour, String dashes) {
+        String text = text(value);
         if (Double.isNaN(value)) {
             return text + " (not drawn)";
         }

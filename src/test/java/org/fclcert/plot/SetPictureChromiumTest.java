@@ -1,6 +1,7 @@
 package org.fclcert.plot;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -66,5 +67,38 @@ class SetPictureChromiumTest {
                 "a singleton of degree 0 has no bar");
         assertTrue(Chromium.colourNear(png, Plotter.px(75, d), Plotter.py(0.5, UNIT), 1, SetPicture.EXPECTED, 40));
         assertTrue(Chromium.colourNear(png, Plotter.px(d[1], d), Plotter.py(0.5, UNIT), 5, SetPicture.ACTUAL, 40));
+    }
+
+    /**
+     * E-ACCU-NSUM-002 as issue 29 found it: the standard's 49.13 and an implementation's 49.72 on an axis of 0 to 100
+     * are 2.4 pixels apart, one line to the eye. Under the legend a strip of the axis from 48.93 to 49.92 draws them
+     * again, 156 pixels apart (49.13 at a fifth of the strip's 260 pixels, 49.72 at four fifths).
+     */
+    @Test
+    void closeValuesAreDrawnAgainMagnifiedSoThatTheyStandApart() throws Exception {
+        String svg = SetPicture.svg("E-ACCU-NSUM-002, step 1: accumulated set of y", "y", false, TRAPEZOID, 49.13, 49.72);
+        double[] d = SetPicture.domain(TRAPEZOID, false, 49.13, 49.72);
+        assertTrue(Math.abs(Plotter.px(49.13, d) - Plotter.px(49.72, d)) < 3, "one line on the main axis");
+        assertTrue(SetPicture.tooClose(49.13, 49.72, d));
+        double[] strip = SetPicture.stripDomain(49.13, 49.72);
+        int left = Plotter.LEFT + Plotter.PLOT_WIDTH + 24;
+        double xe = SetPicture.stripX(49.13, strip, left);
+        double xa = SetPicture.stripX(49.72, strip, left);
+        assertEquals(left + 52.0, xe, 1e-9);
+        assertEquals(left + 208.0, xa, 1e-9);
+        // 100 units on 400 pixels, 0.59·5/3 units on 260: 260 / (0.59·5/3) / 4 = 66×
+        assertTrue(svg.contains("the two values, magnified 66×:"), svg);
+        BufferedImage png = Chromium.render(dir, "close", svg, SetPicture.WIDTH, Plotter.HEIGHT);
+        java.nio.file.Files.copy(dir.resolve("close.png"), Path.of("target/set-picture-close.png"),
+                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        int y = Plotter.TOP + 80 + 35;
+        assertTrue(Chromium.colourNear(png, (int) Math.round(xe), y, 1, SetPicture.EXPECTED, 40), "standard in the strip");
+        assertTrue(Chromium.colourNear(png, (int) Math.round(xa), y, 5, SetPicture.ACTUAL, 40), "implementation in the strip");
+        assertFalse(Chromium.colourNear(png, (int) Math.round((xe + xa) / 2), y, 20, SetPicture.ACTUAL, 40),
+                "nothing red between them");
+        assertFalse(Chromium.colourNear(png, (int) Math.round((xe + xa) / 2), y, 20, SetPicture.EXPECTED, 40),
+                "nothing green between them");
+        // values far apart get no strip
+        assertFalse(SetPicture.svg("t", "y", false, TRAPEZOID, 50, 62.5).contains("magnified"));
     }
 }
