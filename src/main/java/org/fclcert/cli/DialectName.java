@@ -95,8 +95,10 @@ record DialectName(Optional<Dialect> dialect) {
     }
 
     /**
-     * After a strict reading with syntax errors: when the text shows a library dialect's signs, one line
-     * saying so ({@code fclcert: FILE looks like jFuzzyLogic (...): try --dialect auto or fclcert convert}).
+     * After a strict reading with syntax errors: when the text shows a library dialect's signs and reading it
+     * as that dialect gives fewer errors, and fewer syntax errors, than the strict reading, one line naming the dialect to use
+     * ({@code fclcert: FILE: read as fuzzylite (...) it has 0 errors instead of 3: use --dialect fuzzylite, ...}).
+     * A dialect that would not make things better is never suggested (a hint that adds errors is worse than none).
      */
     void hintWhenLibraryDialect(String file, String text, java.util.List<org.fclcert.model.Diagnostic> found,
             PrintWriter err) {
@@ -104,10 +106,27 @@ record DialectName(Optional<Dialect> dialect) {
             return;
         }
         DialectReaders.Choice choice = DialectReaders.auto(text);
-        if (choice.dialect() != Dialect.STRICT) {
-            String signs = choice.explanation().substring(choice.explanation().indexOf(": ") + 2);
-            err.println("fclcert: " + file + ": this looks like " + choice.dialect().displayName() + " (" + signs
-                    + "): try --dialect auto, or 'fclcert convert " + file + "' to turn it into standard FCL");
+        if (choice.dialect() == Dialect.STRICT) {
+            return;
         }
+        java.util.List<org.fclcert.model.Diagnostic> asDialect = org.fclcert.check.Analysis.analyze(
+                DialectReaders.reader(choice.dialect()), file, text).diagnostics();
+        long strictErrors = found.stream().filter(org.fclcert.model.Diagnostic::isError).count();
+        long dialectErrors = asDialect.stream().filter(org.fclcert.model.Diagnostic::isError).count();
+        // fewer errors in all, and fewer syntax errors: a dialect that only forgives a check (no DEFAULT) while the
+        // syntax error stays does not explain the syntax error
+        if (dialectErrors >= strictErrors || syntaxErrors(asDialect) >= syntaxErrors(found)) {
+            return;
+        }
+        String signs = choice.explanation().substring(choice.explanation().indexOf(": ") + 2);
+        String option = "--dialect " + choice.dialect().cliName();
+        err.println("fclcert: " + file + ": read as " + choice.dialect().displayName() + " (" + signs + ") it has "
+                + DiagnosticPrinter.count(dialectErrors, "error") + " instead of " + strictErrors + ": use " + option
+                + ", or 'fclcert convert --from " + choice.dialect().cliName() + " " + file
+                + "' to turn it into standard FCL");
+    }
+
+    private static long syntaxErrors(java.util.List<org.fclcert.model.Diagnostic> diagnostics) {
+        return diagnostics.stream().filter(d -> d.isError() && d.code().startsWith("FCL-S")).count();
     }
 }

@@ -31,18 +31,31 @@ final class FmtCommand implements Callable<Integer> {
     @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
     boolean dropComments;
 
+    @Option(names = "--check", description = "print nothing but a unified diff from FILE to its canonical layout, and"
+            + " exit with 1 when there is one (for CI)")
+    boolean check;
+
     @Option(names = "--dialect", defaultValue = "strict", paramLabel = "DIALECT",
             completionCandidates = DialectName.Names.class, description = DialectName.DESCRIPTION
             + "; a dialect program is written as standard FCL when it converts exactly (else see 'fclcert convert')")
     DialectName dialect;
 
-    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    @Parameters(paramLabel = "FILE", description = "an FCL source file, or - for standard input")
     String file;
 
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
+        if (write && check) {
+            err.println("fclcert: --write and --check exclude each other: --check only reports");
+            return ExitCodes.USAGE;
+        }
+        if (write && SourceFiles.STDIN.equals(file)) {
+            err.println("fclcert: --write rewrites a file; standard input (-) cannot be rewritten");
+            return ExitCodes.USAGE;
+        }
+        String name = SourceFiles.name(file);
         try {
             CheckedSource checked = CheckedSource.read(file, dialect, "formatted", err);
             if (checked.program().isEmpty()) {
@@ -56,7 +69,7 @@ final class FmtCommand implements Callable<Integer> {
                 if (!converted.exact()) {
                     ConvertCommand.printFindings(err, converted.findings().stream()
                             .filter(f -> !(f.kind() instanceof StandardConversion.Kind.Exact)).toList(), false);
-                    err.println("fclcert: " + file + " not formatted: as " + read.displayName() + " it does not convert"
+                    err.println("fclcert: " + name + " not formatted: as " + read.displayName() + " it does not convert"
                             + " exactly to standard FCL; 'fclcert convert --allow-lossy' writes the nearest standard"
                             + " program");
                     return ExitCodes.ERRORS;
@@ -65,6 +78,18 @@ final class FmtCommand implements Callable<Integer> {
             }
             String canonical = new CanonicalWriter().write(program);
             int lostComments = occurrences(source, "(*") - occurrences(canonical, "(*");
+            if (check) {
+                String diff = UnifiedDiff.of(name, source, name + " (canonical)", canonical);
+                out.print(diff);
+                out.flush();
+                noteLostComments(err, lostComments);
+                if (diff.isEmpty()) {
+                    return ExitCodes.OK;
+                }
+                err.println("fclcert: " + name + " is not in canonical layout ('fclcert fmt --write " + name
+                        + "' rewrites it)");
+                return ExitCodes.ERRORS;
+            }
             if (!write) {
                 out.print(canonical);
                 out.flush(); // the text first, then the note, as a terminal would show them
@@ -96,7 +121,7 @@ final class FmtCommand implements Callable<Integer> {
 
     private void noteLostComments(PrintWriter err, int lost) {
         if (lost > 0) {
-            err.println("fclcert: note: fmt does not keep comments (" + file + " has "
+            err.println("fclcert: note: fmt does not keep comments (" + SourceFiles.name(file) + " has "
                     + DiagnosticPrinter.count(lost, "comment") + ")");
         }
     }

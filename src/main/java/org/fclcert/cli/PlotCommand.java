@@ -21,9 +21,9 @@ import picocli.CommandLine.Spec;
 /** {@code fclcert plot}: SVG pictures of a program's terms, control surfaces and transfer curves. */
 @Command(name = "plot", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "Draw a valid FCL program as self-contained SVG files: the terms of every input and output; "
-                + "for each output, its control surface over the first two inputs as a heat map with a colour "
+                + "for each output, its control surface over the first two inputs (or --axes) as a heat map with a colour "
                 + "scale (other inputs fixed at --in values, else initial values, else the middle of their terms),"
-                + " or with one input its transfer curve. Values come from the reference evaluator, sampled for "
+                + " or with one input its transfer curve; hatched, the regions where no rule fires (FCL-W005). Values come from the reference evaluator, sampled for "
                 + "drawing only. Prints the files written.",
         exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = {"0:drawn", "1:the program has errors, or an input or evaluation error",
@@ -46,6 +46,10 @@ final class PlotCommand implements Callable<Integer> {
     @Option(names = "--block", paramLabel = "NAME", description = "function block to draw (default: the first)")
     String block;
 
+    @Option(names = "--axes", paramLabel = "X,Y", split = ",",
+            description = "the two inputs a control surface is drawn over (default: the first two inputs)")
+    List<String> axes = new ArrayList<>();
+
     @Option(names = "--in", paramLabel = "NAME=VALUE",
             description = "the value an input is held at where it is not an axis (repeatable)")
     List<String> inputs = new ArrayList<>();
@@ -60,8 +64,13 @@ final class PlotCommand implements Callable<Integer> {
                 err.println("fclcert: --in " + in + ": expected NAME=VALUE, e.g. --in temp=5");
                 return ExitCodes.USAGE;
             }
+            String name = in.substring(0, eq).trim();
+            if (given.keySet().stream().anyMatch(n -> org.fclcert.model.Names.same(n, name))) {
+                err.println("fclcert: --in " + name + " is given twice; give each input once");
+                return ExitCodes.USAGE;
+            }
             try {
-                given.put(in.substring(0, eq).trim(), Double.parseDouble(in.substring(eq + 1).trim()));
+                given.put(name, Double.parseDouble(in.substring(eq + 1).trim()));
             } catch (NumberFormatException e) {
                 err.println("fclcert: --in " + in + ": '" + in.substring(eq + 1).trim() + "' is not a number");
                 return ExitCodes.USAGE;
@@ -77,6 +86,18 @@ final class PlotCommand implements Callable<Integer> {
                 return ExitCodes.ERRORS;
             }
             Plotter plotter = new Plotter(program.get(), block, given);
+            if (!axes.isEmpty()) {
+                if (axes.size() != 2) {
+                    err.println("fclcert: --axes takes two inputs, X,Y (e.g. --axes error,trend), not " + axes.size());
+                    return ExitCodes.USAGE;
+                }
+                try {
+                    plotter.withAxes(axes.get(0).trim(), axes.get(1).trim());
+                } catch (IllegalArgumentException e) {
+                    err.println("fclcert: " + e.getMessage());
+                    return ExitCodes.USAGE;
+                }
+            }
             for (String name : given.keySet()) {
                 if (!plotter.hasInput(name)) {
                     String hint = org.fclcert.model.Names.closest(name, plotter.inputNames())

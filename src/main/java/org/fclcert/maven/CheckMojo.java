@@ -17,6 +17,7 @@ import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.fclcert.model.ConformanceLevel;
+import org.fclcert.check.SarifLog;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.FeatureUse;
 
@@ -46,6 +47,13 @@ public class CheckMojo extends AbstractMojo {
     @Parameter(property = "fclcert.failOnWarning", defaultValue = "false")
     private boolean failOnWarning;
 
+    /**
+     * Where the findings of all files are written as a SARIF 2.1.0 log (for code scanning in CI), beside the
+     * build output; empty to write none.
+     */
+    @Parameter(property = "fclcert.sarifFile", defaultValue = "${project.build.directory}/fclcert/check.sarif")
+    private java.io.File sarifFile;
+
     /** Skip this goal. */
     @Parameter(property = "fclcert.skip", defaultValue = "false")
     private boolean skip;
@@ -65,6 +73,7 @@ public class CheckMojo extends AbstractMojo {
         List<Path> files = select(root);
         FclFileGate gate = new FclFileGate(allowed);
         int failedFiles = 0;
+        List<Diagnostic> all = new ArrayList<>();
         for (Path file : files) {
             FclFileGate.FileVerdict verdict;
             try {
@@ -72,16 +81,35 @@ public class CheckMojo extends AbstractMojo {
             } catch (IOException e) {
                 throw new MojoExecutionException("Cannot read " + file + ": " + e.getMessage(), e);
             }
+            all.addAll(verdict.diagnostics());
             boolean warned = report(verdict, gate);
             if (verdict.failed() || (failOnWarning && warned)) {
                 failedFiles++;
             }
         }
+        writeSarif(sarifFile, all);
         String summary = files.size() + " FCL file(s) checked under " + root + ", maxLevel " + allowed.word();
         if (failedFiles > 0) {
             throw new MojoFailureException(failedFiles + " of " + summary + " failed (see the errors above)");
         }
         getLog().info(summary + ": all conform");
+    }
+
+    /** The SARIF log of the diagnostics (the level gate's findings are the build's, not the files'). */
+    private void writeSarif(java.io.File to, List<Diagnostic> diagnostics) throws MojoExecutionException {
+        if (to == null || to.getPath().isEmpty()) {
+            return;
+        }
+        try {
+            Path path = to.toPath();
+            if (path.getParent() != null) {
+                Files.createDirectories(path.getParent());
+            }
+            Files.writeString(path, SarifLog.render(diagnostics), java.nio.charset.StandardCharsets.UTF_8);
+            getLog().info("SARIF log of the findings: " + path);
+        } catch (IOException e) {
+            throw new MojoExecutionException("Cannot write " + to + ": " + e.getMessage(), e);
+        }
     }
 
     private boolean report(FclFileGate.FileVerdict verdict, FclFileGate gate) {

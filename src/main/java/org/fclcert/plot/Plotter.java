@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.TreeSet;
+import org.fclcert.check.CoverageGaps;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FunctionBlockInstance;
@@ -20,6 +21,7 @@ import org.fclcert.model.Names;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
 import org.fclcert.model.Range;
+import org.fclcert.model.RuleBlock;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
@@ -73,6 +75,32 @@ public final class Plotter {
         }
     }
 
+    private List<String> axes = List.of();
+
+    /**
+     * The two inputs a control surface is drawn over, x then y (default: the first two inputs with terms); the
+     * others are held at their fixed values.
+     *
+     * @throws IllegalArgumentException when a name is not an input with a FUZZIFY block, or both are one input
+     */
+    public Plotter withAxes(String x, String y) {
+        String ax = axisInput(x);
+        String ay = axisInput(y);
+        if (Names.same(ax, ay)) {
+            throw new IllegalArgumentException("--axes names '" + ax + "' twice; give two different inputs");
+        }
+        axes = List.of(ax, ay);
+        return this;
+    }
+
+    private String axisInput(String name) {
+        return block.variables(VariableKind.INPUT).stream().map(Variable::name)
+                .filter(n -> Names.same(n, name) && block.fuzzification(n).isPresent()).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("--axes " + name + ": not an input with terms; "
+                        + "the inputs with terms: " + String.join(", ", block.variables(VariableKind.INPUT).stream()
+                                .map(Variable::name).filter(n -> block.fuzzification(n).isPresent()).toList())));
+    }
+
     /** True when the block declares this input (case-insensitive). */
     public boolean hasInput(String name) {
         return fixed.keySet().stream().anyMatch(n -> Names.same(n, name));
@@ -98,7 +126,9 @@ public final class Plotter {
         List<String> inputs = block.variables(VariableKind.INPUT).stream().map(Variable::name)
                 .filter(n -> block.fuzzification(n).isPresent()).toList();
         for (Variable out : block.variables(VariableKind.OUTPUT)) {
-            if (inputs.size() >= 2) {
+            if (!axes.isEmpty()) {
+                all.add(surface(axes.get(0), axes.get(1), out.name()));
+            } else if (inputs.size() >= 2) {
                 all.add(surface(inputs.get(0), inputs.get(1), out.name()));
             } else if (inputs.size() == 1) {
                 all.add(transfer(inputs.get(0), out.name()));
@@ -230,6 +260,7 @@ public final class Plotter {
         }
         double[] range = span(ys, domain(output));
         Svg svg = frame(output + " over " + input + fixedNote(List.of(input)), d, range, input, output);
+        gaps(svg, output, input, null, d, range);
         curve(svg, xs, ys, d, range, PALETTE.get(0), "transfer");
         return new Picture(fileName(output + "-over-" + input), svg.finish());
     }
@@ -261,6 +292,7 @@ public final class Plotter {
             }
         }
         svg.raw("</g>");
+        gaps(svg, output, x, y, dx, dy);
         // the colour scale: a bar from low (bottom) to high (top), labelled with the output's values
         int bx = LEFT + PLOT_WIDTH + 30;
         int steps = 60;
@@ -278,6 +310,74 @@ public final class Plotter {
         }
         svg.text(bx + 9, TOP - 10, "middle", output);
         return new Picture(fileName(output + "-over-" + x + "-and-" + y), svg.finish());
+    }
+
+    /** Colour of the regions where no rule fires (FCL-W005). */
+    public static final String GAP = "#ff00cc";
+
+    /**
+     * The regions where no rule of the one rule block concluding {@code output} fires ({@link CoverageGaps}), cut
+     * at the values the other inputs are held at: hatched boxes outlined in {@link #GAP} (a zero-width region is
+     * a line), over a surface ({@code y} an input) or as bands over a transfer curve ({@code y} null).
+     */
+    private void gaps(Svg svg, String output, String x, String y, double[] dx, double[] dy) {
+        List<RuleBlock> concluding = block.ruleBlocks().stream().filter(rb -> rb.rules().stream()
+                .anyMatch(r -> r.conclusion().stream().anyMatch(c -> Names.same(c.variable(), output)))).toList();
+        if (concluding.size() != 1) {
+            return;    // with several blocks, the output falls back only where all are silent: not drawn
+        }
+        CoverageGaps.Result result = CoverageGaps.of(block, concluding.get(0));
+        List<double[]> boxes = new ArrayList<>();
+        for (CoverageGaps.Box box : result.gaps()) {
+            double[] r = {Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY,
+                Double.POSITIVE_INFINITY};
+            boolean shown = true;
+            for (int a = 0; a < result.inputs().size(); a++) {
+                String input = result.inputs().get(a);
+                CoverageGaps.Interval in = box.intervals().get(a);
+                if (Names.same(input, x)) {
+                    r[0] = in.low();
+                    r[1] = in.high();
+                } else if (y != null && Names.same(input, y)) {
+                    r[2] = in.low();
+                    r[3] = in.high();
+                } else {
+                    shown &= contains(in, fixed.get(input));
+                }
+            }
+            if (shown) {
+                boxes.add(r);
+            }
+        }
+        if (boxes.isEmpty()) {
+            return;
+        }
+        svg.raw("<defs><pattern id=\"gap-hatch\" width=\"8\" height=\"8\" patternUnits=\"userSpaceOnUse\""
+                + " patternTransform=\"rotate(45)\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"8\" stroke=\"" + GAP
+                + "\" stroke-width=\"3\"/></pattern></defs>");
+        svg.raw("<g class=\"gaps\">");
+        for (double[] r : boxes) {
+            double x0 = px(Math.max(r[0], dx[0]), dx);
+            double x1 = px(Math.min(r[1], dx[1]), dx);
+            double y0 = y == null ? TOP + PLOT_HEIGHT : py(Math.max(r[2], dy[0]), dy);
+            double y1 = y == null ? TOP : py(Math.min(r[3], dy[1]), dy);
+            if (x1 < x0 || y0 < y1) {
+                continue;    // outside the drawn span
+            }
+            // a zero-width region still shows: at least 2 px wide
+            double w = Math.max(x1 - x0, 2);
+            double h = Math.max(y0 - y1, 2);
+            svg.raw("<rect class=\"gap\" x=\"" + Svg.n(x0 - (w - (x1 - x0)) / 2) + "\" y=\""
+                    + Svg.n(y1 - (h - (y0 - y1)) / 2) + "\" width=\"" + Svg.n(w) + "\" height=\"" + Svg.n(h)
+                    + "\" fill=\"url(#gap-hatch)\" fill-opacity=\"0.6\" stroke=\"" + GAP + "\" stroke-width=\"2\"/>");
+        }
+        svg.raw("</g>");
+        svg.text(LEFT, HEIGHT - 8, "start", "hatched: no rule fires, " + output + " falls back (FCL-W005)");
+    }
+
+    private static boolean contains(CoverageGaps.Interval in, Double v) {
+        return v != null && (in.lowClosed() ? v >= in.low() : v > in.low())
+                && (in.highClosed() ? v <= in.high() : v < in.high());
     }
 
     private String fixedNote(List<String> varying) {

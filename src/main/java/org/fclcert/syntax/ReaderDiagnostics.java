@@ -105,6 +105,22 @@ final class ReaderDiagnostics {
         }
     }
 
+    /** The warnings reported so far. */
+    List<Diagnostic> warnings() {
+        return all.stream().filter(d -> !d.isError()).toList();
+    }
+
+    /**
+     * Keeps a warning found by another reading of the same text (the repaired one, {@link SyntaxRepair}) unless
+     * this collector already has it (same code at the same place).
+     */
+    void keepWarning(Diagnostic warning) {
+        boolean known = all.stream().anyMatch(d -> d.code().equals(warning.code()) && d.location().sameAs(warning.location()));
+        if (!known && warningCounts.merge(warning.code(), 1, Integer::sum) <= MAX_WARNINGS_PER_CODE + 1) {
+            all.add(warning);
+        }
+    }
+
     /** This collector as a token filter's report. */
     ReaderOptions.Report asReport() {
         return new ReaderOptions.Report() {

@@ -133,7 +133,9 @@ public final class StrictReader implements FclReader {
         }
         if (!parsed.complete()) {
             // the builder needs a tree without gaps: the semantic checks get the repaired text's, if any
-            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, parsed.tokens(), options));
+            // its warnings (W1nn) stay reported alongside the errors: they hold of the text the reader recovered
+            return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, parsed.tokens(), options,
+                    diagnostics));
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());

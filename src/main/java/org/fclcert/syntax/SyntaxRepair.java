@@ -31,7 +31,8 @@ final class SyntaxRepair {
     }
 
     /** The program the repaired tokens give, or empty when the errors cannot be repaired token by token. */
-    static Optional<Program> program(String sourceName, List<Token> tokens, ReaderOptions options) {
+    static Optional<Program> program(String sourceName, List<Token> tokens, ReaderOptions options,
+            ReaderDiagnostics warningsTo) {
         // the tokens themselves, not copies: after the parse that reported the errors nothing else reads them,
         // and a large program's tokens are most of what the error path holds
         List<Token> current = new ArrayList<>(tokens);
@@ -65,7 +66,11 @@ final class SyntaxRepair {
                 return Optional.empty();
             }
             Program program = builder.program(tree);
-            return scratch.hasErrors() ? Optional.empty() : Optional.of(program);
+            if (scratch.hasErrors()) {
+                return Optional.empty();
+            }
+            scratch.warnings().forEach(warningsTo::keepWarning);
+            return Optional.of(program);
         }
         return Optional.empty();
     }
