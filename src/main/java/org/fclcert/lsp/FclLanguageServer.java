@@ -52,7 +52,7 @@ import org.fclcert.syntax.dialect.DialectCode;
  */
 public final class FclLanguageServer implements LanguageServer, LanguageClientAware {
     /** Milliseconds of quiet after an edit before the diagnostics are recomputed. */
-    public static final long DEFAULT_DEBOUNCE_MILLIS = 150;
+    public static final long DEFAULT_DEBOUNCE_MILLIS = 50;
     /**
      * Stack of the server's threads: reading and checking recurse once or a few times per nesting level of a
      * condition, as deep as the reader's limit allows (address space reserved, committed only when used).
