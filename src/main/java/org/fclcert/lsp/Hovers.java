@@ -72,11 +72,19 @@ final class Hovers {
             case FUNCTION_BLOCK -> Optional.of("**FUNCTION_BLOCK " + o.name() + "**: " + s.dialectNote()
                     + fb.map(b -> "; " + b.variables().size() + " variables, " + b.ruleBlocks().size() + " rule blocks")
                             .orElse(""));
-            case VARIABLE -> fb.flatMap(b -> b.variable(o.name()).map(v -> variable(b, v)));
+            case VARIABLE -> fb.flatMap(b -> b.variable(o.name()).map(v -> variable(b, v)))
+                    .or(() -> declaredOnly(s, o));
             case TERM -> fb.flatMap(b -> term(b, o.owner(), o.name()));
             case RULE_BLOCK -> fb.flatMap(b -> b.ruleBlock(o.name())).map(Hovers::ruleBlock);
             case RULE -> Optional.empty();
         };
+    }
+
+    /** Without a model (a text the reader cannot make one of): where the tokens say the variable is declared. */
+    private static Optional<String> declaredOnly(Snapshot s, Outline.Occurrence o) {
+        return s.outline().declaration(o).filter(d -> d.section() != null).map(d -> "**" + d.name() + "** — declared in "
+                + d.section().keyword() + " of " + d.block() + ", line " + s.outline().tokens().get(d.token()).line()
+                + " (the text has errors the reader cannot mend, so its type and terms are not shown)");
     }
 
     static String variable(FunctionBlock b, Variable v) {

@@ -5,27 +5,22 @@ import java.io.IOException;
 import java.io.PipedInputStream;
 import java.io.PipedOutputStream;
 import java.util.List;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.eclipse.lsp4j.ClientCapabilities;
 import org.eclipse.lsp4j.DidChangeTextDocumentParams;
 import org.eclipse.lsp4j.DidOpenTextDocumentParams;
 import org.eclipse.lsp4j.InitializeParams;
-import org.eclipse.lsp4j.MessageActionItem;
-import org.eclipse.lsp4j.MessageParams;
 import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.PublishDiagnosticsParams;
 import org.eclipse.lsp4j.Range;
-import org.eclipse.lsp4j.ShowMessageRequestParams;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 import org.eclipse.lsp4j.TextDocumentItem;
 import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
 import org.eclipse.lsp4j.launch.LSPLauncher;
-import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 import org.fclcert.lsp.FclLanguageServer;
+import org.fclcert.lsp.RecordingClient;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
@@ -63,7 +58,7 @@ public class LspBenchmark {
     @Param({"valid", "syntaxError"})
     public String text;
 
-    private final BlockingQueue<PublishDiagnosticsParams> published = new LinkedBlockingQueue<>();
+    private final RecordingClient client = new RecordingClient();
     private PipedOutputStream toServer;
     private LanguageServer server;
     private String uri = "file:///bench/large.fcl";
@@ -86,7 +81,7 @@ public class LspBenchmark {
         PipedInputStream clientIn = new PipedInputStream(1 << 22);
         PipedOutputStream toClient = new PipedOutputStream(clientIn);
         CompletableFuture.runAsync(() -> FclLanguageServer.serve(serverIn, toClient));
-        var launcher = LSPLauncher.createClientLauncher(new Client(), clientIn, toServer);
+        var launcher = LSPLauncher.createClientLauncher(client, clientIn, toServer);
         launcher.startListening();
         server = launcher.getRemoteProxy();
         InitializeParams init = new InitializeParams();
@@ -112,7 +107,7 @@ public class LspBenchmark {
 
     private PublishDiagnosticsParams await(int v) throws InterruptedException {
         while (true) {
-            PublishDiagnosticsParams p = published.poll(60, TimeUnit.SECONDS);
+            PublishDiagnosticsParams p = client.diagnostics.poll(60, TimeUnit.SECONDS);
             if (p == null) {
                 throw new IllegalStateException("no diagnostics for version " + v + " within 60 s");
             }
@@ -125,29 +120,5 @@ public class LspBenchmark {
     @TearDown(Level.Trial)
     public void stop() throws IOException {
         toServer.close();
-    }
-
-    private final class Client implements LanguageClient {
-        @Override
-        public void telemetryEvent(Object object) {
-        }
-
-        @Override
-        public void publishDiagnostics(PublishDiagnosticsParams diagnostics) {
-            published.add(diagnostics);
-        }
-
-        @Override
-        public void showMessage(MessageParams messageParams) {
-        }
-
-        @Override
-        public CompletableFuture<MessageActionItem> showMessageRequest(ShowMessageRequestParams requestParams) {
-            return CompletableFuture.completedFuture(null);
-        }
-
-        @Override
-        public void logMessage(MessageParams message) {
-        }
     }
 }

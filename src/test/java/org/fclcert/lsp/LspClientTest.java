@@ -22,11 +22,9 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.eclipse.lsp4j.ClientCapabilities;
 import org.eclipse.lsp4j.CodeAction;
@@ -49,7 +47,6 @@ import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
 import org.eclipse.lsp4j.Location;
-import org.eclipse.lsp4j.MessageActionItem;
 import org.eclipse.lsp4j.MessageParams;
 import org.eclipse.lsp4j.MessageType;
 import org.eclipse.lsp4j.Position;
@@ -57,7 +54,6 @@ import org.eclipse.lsp4j.PublishDiagnosticsParams;
 import org.eclipse.lsp4j.Range;
 import org.eclipse.lsp4j.ReferenceContext;
 import org.eclipse.lsp4j.ReferenceParams;
-import org.eclipse.lsp4j.ShowMessageRequestParams;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.TextDocumentItem;
@@ -68,7 +64,6 @@ import org.eclipse.lsp4j.jsonrpc.Launcher;
 import org.eclipse.lsp4j.jsonrpc.ResponseErrorException;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
 import org.eclipse.lsp4j.launch.LSPLauncher;
-import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 import org.fclcert.cli.Main;
 import org.junit.jupiter.api.AfterEach;
@@ -118,7 +113,7 @@ class LspClientTest {
     @TempDir
     Path dir;
 
-    private final Client client = new Client();
+    private final RecordingClient client = new RecordingClient();
     private FclLanguageServer server;
     private LanguageServer remote;
     private Launcher<LanguageServer> launcher;
@@ -126,36 +121,6 @@ class LspClientTest {
     private PipedInputStream fromClient;
     private CompletableFuture<Integer> served;
     private int version;
-
-    static final class Client implements LanguageClient {
-        final BlockingQueue<PublishDiagnosticsParams> diagnostics = new LinkedBlockingQueue<>();
-        final BlockingQueue<MessageParams> logged = new LinkedBlockingQueue<>();
-        final BlockingQueue<MessageParams> shown = new LinkedBlockingQueue<>();
-
-        @Override
-        public void telemetryEvent(Object object) {
-        }
-
-        @Override
-        public void publishDiagnostics(PublishDiagnosticsParams p) {
-            diagnostics.add(p);
-        }
-
-        @Override
-        public void showMessage(MessageParams m) {
-            shown.add(m);
-        }
-
-        @Override
-        public CompletableFuture<MessageActionItem> showMessageRequest(ShowMessageRequestParams requestParams) {
-            return CompletableFuture.completedFuture(null);
-        }
-
-        @Override
-        public void logMessage(MessageParams m) {
-            logged.add(m);
-        }
-    }
 
     @BeforeEach
     void start() throws Exception {
@@ -318,6 +283,12 @@ class LspClientTest {
                 hover(bad, 25, 28).getContents().getRight().getValue());
         assertTrue(hover(bad, 0, 2).getContents().getRight().getValue().startsWith("**FUNCTION_BLOCK** (IEC 61131-7 5.2.1, 5.4)"));
         assertNull(hover(bad, 999, 999), "nothing past the end");
+        // a text no repair mends (two slips in one rule): still the declaration, from the tokens
+        String unreadable = open("unreadable.fcl", MISTAKES.replace("IF service IS good THEN", "IF service IS IS good THEN THEN"));
+        diagnosticsOf(unreadable);
+        assertEquals("**service** — declared in VAR_INPUT of tipper, line 3 (the text has errors the reader cannot"
+                + " mend, so its type and terms are not shown)", hover(unreadable, 25, 18).getContents().getRight().getValue()
+                .replaceAll("(?s)^`.*`\\n\\n", ""));
     }
 
     @Test
