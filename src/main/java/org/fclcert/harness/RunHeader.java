@@ -57,7 +57,7 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
     /** The same header, recording the isolation the implementation ran under. */
     public RunHeader withIsolation(org.fclcert.sandbox.Isolation isolation) {
         return new RunHeader(new Iut(iut.name(), iut.version(), iut.command(), iut.spec(), iut.classpath(),
-                iut.claims(), iut.declaredLimits(), isolation), toolkit, corpus, selection, startedAt, presentAs);
+                iut.claims(), iut.declaredLimits(), isolation), toolkit, corpus, selection, startedAt, presentAs, provenance);
     }
 
     /**
