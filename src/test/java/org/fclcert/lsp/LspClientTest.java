@@ -91,8 +91,8 @@ class LspClientTest {
                 flow : REAL;
             END_VAR
             FUZZIFY level
-                TERM low := (0, 1) (5, 0);
-                TERM high := (5, 0) (10, 1);
+                TERM low := (0, 1) (6, 0);
+                TERM high := (4, 0) (10, 1);
             END_FUZZIFY
             DEFUZZIFY flow
                 RANGE (0 .. 100);
@@ -406,14 +406,16 @@ class LspClientTest {
                 new CodeActionContext(p.getDiagnostics()))).get(30, TimeUnit.SECONDS).stream().map(e -> e.getRight()).toList();
         assertEquals(List.of("Insert the missing ';'", "Add 'DEFAULT := NC;'", "Change 'servce' to 'service'",
                 "Change 'rancd' to 'rancid'"), actions.stream().map(CodeAction::getTitle).toList());
-        // every fix applied: check then finds only the unused term (which no fix is offered for)
+        // every fix applied: check then finds only the unused term and the program's real coverage gap (service
+        // above 9 is neither poor nor good, food above 3 is not rancid: no rule fires), which no fix is offered for
         List<TextEdit> edits = new ArrayList<>();
         actions.forEach(a -> edits.addAll(a.getEdit().getChanges().get(uri)));
         String fixed = apply(MISTAKES, edits);
         Files.writeString(dir.resolve("fixed.fcl"), fixed);
         List<String> after = check(dir.resolve("fixed.fcl"), "strict");
-        assertEquals(1, after.size(), after.toString());
-        assertTrue(after.get(0).contains("FCL-W001"));
+        assertEquals(2, after.size(), after.toString());
+        assertTrue(after.get(0).contains("FCL-W001"), after.toString());
+        assertTrue(after.get(1).contains("FCL-W005") && after.get(1).contains("service in [9, inf)"), after.toString());
         assertTrue(fixed.contains("    DEFAULT := NC;\nEND_DEFUZZIFY"), fixed);
 
         // ACCU written in DEFUZZIFY (strict reading): moved into the RULEBLOCK
