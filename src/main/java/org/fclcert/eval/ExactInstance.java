@@ -28,7 +28,8 @@ import org.fclcert.model.OrAlgorithm;
  * not piece-wise linear (smooth shapes, PROBOR on point terms: {@link SmoothSet} on doubles). The square roots
  * of the hedges somewhat and seldom are computed to 60 significant digits.
  *
- * <p>Slower than the fast path (every number a fraction of BigIntegers); meant for judging: corpus replay,
+ * <p>Slower than the reference's doubles (every number a fraction of BigIntegers); the reference evaluator's
+ * fallback where its error bounds cannot settle a decision, and the judge of corpus replay,
  * probing, fuzzing, certification of the reference. Not thread-safe.
  */
 public final class ExactInstance {
@@ -61,7 +62,7 @@ public final class ExactInstance {
     private final Map<Double, Rational> weights = new java.util.HashMap<>();
 
     ExactInstance(BlockPlan plan, NumberReading reading) {
-        // dialect constructs only the fast path evaluates: refused, never computed wrong
+        // dialect constructs only the double computation evaluates: refused, never computed wrong
         if (plan.chainedTerms > 0 || plan.contributionHedges.length > 0
                 || java.util.Arrays.stream(plan.shapes).anyMatch(sh -> sh.computed != null)
                 || java.util.Arrays.stream(plan.outputs).anyMatch(o -> o.method() == DefuzzificationMethod.TSUKAMOTO

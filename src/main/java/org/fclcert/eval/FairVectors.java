@@ -116,8 +116,8 @@ public final class FairVectors {
 
     /**
      * As {@link #judge(LoadedProgram, String, List, Agreement)}; without the double-arithmetic run when
-     * {@code withFastPath} is false — for the test that compares the fast path with the exact one, which must not
-     * let the fast path vouch for itself. An integer output rounded from exactly k + ½ is then a knife edge
+     * {@code withFastPath} is false — without the plain-double run, for a test that compares doubles with the exact
+     * path, which must not let doubles vouch for themselves. An integer output rounded from exactly k + ½ is then a knife edge
      * outright (doubles may compute k + ½ − 1 ulp).
      */
     static Verdict judge(LoadedProgram program, String block, List<Map<String, Double>> steps, Agreement agreement,

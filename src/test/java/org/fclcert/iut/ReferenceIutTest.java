@@ -38,6 +38,34 @@ class ReferenceIutTest {
         }
     }
 
+    /*
+     * Issue 24, the two disagreements, through certify's reference implementation (they were 10 or 5.55e-16, and
+     * -62). NOT (x IS one OR x IS up), OR : ASUM, one = 1 everywhere, x = 13: 1 + 0.13 - 0.13 = 1 exactly, NOT
+     * gives 0, nothing fires: DEFAULT 35. y : INT with the single singleton -62.5 fired at degree 0.55: CoGS =
+     * -62.5 exactly, half away from zero: -63.
+     */
+    @Test
+    void theIssue24CasesGiveTheExactAnswer() throws IutException {
+        String asum = "FUNCTION_BLOCK f\nVAR_INPUT x : REAL; END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n"
+                + "FUZZIFY x TERM one := (0, 1) (100, 1); TERM up := (0, 0) (100, 1); END_FUZZIFY\n"
+                + "DEFUZZIFY y TERM s := 10; METHOD : CoGS; DEFAULT := 35; END_DEFUZZIFY\n"
+                + "RULEBLOCK r OR : ASUM; ACCU : MAX; RULE 1 : IF NOT (x IS one OR x IS up) THEN y IS s; END_RULEBLOCK\n"
+                + "END_FUNCTION_BLOCK\n";
+        String half = "FUNCTION_BLOCK f\nVAR_INPUT x : REAL; END_VAR\nVAR_OUTPUT y : INT; END_VAR\n"
+                + "FUZZIFY x TERM up := (0, 0) (1, 1); END_FUZZIFY\n"
+                + "DEFUZZIFY y TERM s := -62.5; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY\n"
+                + "RULEBLOCK r AND : MIN; ACCU : MAX; RULE 1 : IF x IS up THEN y IS s; END_RULEBLOCK\n"
+                + "END_FUNCTION_BLOCK\n";
+        try (ImplementationUnderTest iut = open()) {
+            iut.load(asum);
+            assertEquals(35.0, iut.eval(null, Map.of("x", 13.0)).get("y"));
+            iut.load(asum.replace("METHOD : CoGS", "METHOD : LM"));
+            assertEquals(35.0, iut.eval(null, Map.of("x", 13.0)).get("y"));
+            iut.load(half);
+            assertEquals(-63.0, iut.eval(null, Map.of("x", 0.55)).get("y"));
+        }
+    }
+
     @Test
     void anErrorIsARejectionWithItsCodeAndLine() throws IutException {
         try (ImplementationUnderTest iut = open()) {
