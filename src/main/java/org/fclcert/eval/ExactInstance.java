@@ -53,6 +53,8 @@ public final class ExactInstance {
     private final Rational[] previous;
     /** Per output: nothing fired in the last evaluation (DEFAULT or NC). */
     private final boolean[] defaulted;
+    /** Per output: the last value before its conversion to the output's data type (the trace shows the rounding). */
+    private final Rational[] computed;
     private final ExactSet set = new ExactSet();
     private final SmoothSet[] smoothSets;
     private boolean exact = true;
@@ -111,6 +113,7 @@ public final class ExactInstance {
         defaults = new Rational[no];
         previous = new Rational[no];
         defaulted = new boolean[no];
+        computed = new Rational[no];
         smoothSets = new SmoothSet[no];
         for (int i = 0; i < no; i++) {
             OutputPlan o = plan.outputs[i];
@@ -245,7 +248,7 @@ public final class ExactInstance {
             OutputPlan o = plan.outputs[i];
             Trace.Outcome outcome = !defaulted[i] ? Trace.Outcome.DEFUZZIFIED
                     : o.noChange() ? Trace.Outcome.NO_CHANGE : Trace.Outcome.DEFAULT;
-            out.add(new Trace.Result(o.variable(), toDouble(values[o.slot()]), outcome));
+            out.add(new Trace.Result(o.variable(), toDouble(values[o.slot()]), outcome, toDouble(computed[i])));
         }
         return out;
     }
@@ -444,6 +447,7 @@ public final class ExactInstance {
         if (empty) {
             result = o.noChange() ? previous[i] : defaults[i];
         }
+        computed[i] = result;
         store(o.slot(), result);
     }
 
