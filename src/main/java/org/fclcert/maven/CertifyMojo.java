@@ -79,6 +79,13 @@ public class CertifyMojo extends AbstractMojo {
     private long timeoutMillis;
 
     /**
+     * Run a process implementation as a plain process of the build's user instead of in the bubblewrap sandbox
+     * (docs/iut-protocol.md, "The sandbox"); the reports say so.
+     */
+    @Parameter(property = "fclcert.noSandbox", defaultValue = "false")
+    private boolean noSandbox;
+
+    /**
      * Time the whole run may take, cases and probes, in seconds; the cases not run by then are reported as skipped
      * with the reason, and the goal fails.
      */
@@ -139,7 +146,9 @@ public class CertifyMojo extends AbstractMojo {
             throw new MojoExecutionException("fclcert:certify: budgetSeconds must be at least 1, not " + budgetSeconds);
         }
         Corpus corpus = corpus();
-        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis));
+        IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis))
+                .withSandbox(noSandbox ? org.fclcert.sandbox.SandboxSettings.none()
+                        : org.fclcert.sandbox.SandboxSettings.defaults());
         List<Path> classpath = iut.startsWith("java:") ? testClasspath() : List.of();
         if (!classpath.isEmpty()) {
             options = options.withClasspath(classpath);

@@ -141,7 +141,10 @@ public final class Sandbox {
         long size = settings.limits().fileSizeBytes() + (64L << 20);
         List<String> a = new ArrayList<>(List.of(engine.bwrap().toString()));
         if (!engine.root()) {
-            a.addAll(List.of("--unshare-user", "--disable-userns"));
+            a.add("--unshare-user");
+            if (engine.disablesUserns()) {
+                a.add("--disable-userns");   // bubblewrap 0.8 and later: no nested user namespace either
+            }
         }
         a.addAll(List.of("--unshare-pid", "--unshare-net", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try",
                 "--die-with-parent", "--new-session", "--hostname", "fclcert-sandbox"));
@@ -256,7 +259,8 @@ public final class Sandbox {
     }
 
     /** Where the engine's programs are, found once per JVM. */
-    record Engine(Path bwrap, Path prlimit, Path setpriv, boolean root, String version, String problem) {
+    record Engine(Path bwrap, Path prlimit, Path setpriv, boolean root, String version, boolean disablesUserns,
+            String problem) {
         private static Engine probed;
 
         boolean works() {
@@ -284,7 +288,8 @@ public final class Sandbox {
                 return broken(root, "prlimit or setpriv (util-linux) is not installed");
             }
             String version = run(List.of(bwrap.get().toString(), "--version")).strip().replace("bubblewrap ", "");
-            Engine engine = new Engine(bwrap.get(), prlimit.get(), setpriv.get(), root, version, null);
+            boolean disables = run(List.of(bwrap.get().toString(), "--help")).contains("--disable-userns");
+            Engine engine = new Engine(bwrap.get(), prlimit.get(), setpriv.orElse(null), root, version, disables, null);
             Path truth = Path.of("/bin/true");
             try {
                 Sandbox trial = new Sandbox(SandboxSettings.defaults(), engine);
@@ -310,7 +315,7 @@ public final class Sandbox {
         }
 
         private static Engine broken(boolean root, String problem) {
-            return new Engine(null, null, null, root, "", problem);
+            return new Engine(null, null, null, root, "", false, problem);
         }
 
         private static String run(List<String> command) {
