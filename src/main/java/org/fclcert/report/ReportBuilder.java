@@ -187,7 +187,7 @@ public final class ReportBuilder {
                     .filter(c -> !against.contains(c))
                     .map(c -> c.id() + " (" + Attribution.notCountedBecause(c, f) + ")").toList();
             FeatureStatus status;
-            if (run < required) {
+            if (required < 0 || run < required) {
                 status = run == 0 && passed == 0 ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
             } else if (passed + against.size() == 0) {
                 status = notCounted.isEmpty() ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
@@ -205,7 +205,7 @@ public final class ReportBuilder {
 
     /**
      * How many cases the row's verdict needs: the corpus's count from the run header; for a header without it, the
-     * planned cases when nothing narrowed the run, else at least one more than were planned (never decided).
+     * planned cases when nothing narrowed the run, else -1: unknown, so never decided.
      */
     private static int rowCases(RunHeader header, Feature f, int planned) {
         Integer known = header.corpus().rowCases().get(f.id());
@@ -215,7 +215,7 @@ public final class ReportBuilder {
         if (!header.corpus().rowCases().isEmpty() || header.selection().whole()) {
             return planned;
         }
-        return planned + 1;
+        return -1;
     }
 
     private static Predicate<CaseResult> testing(Feature f) {
@@ -252,8 +252,9 @@ public final class ReportBuilder {
             } else if (row.status() == FeatureStatus.NOT_TESTED) {
                 untested.add(row.id());
             } else if (row.status() == FeatureStatus.NOT_DETERMINED) {
-                notDetermined.add(row.id() + (row.run() < row.required() ? " (" + row.run() + " of " + row.required()
-                        + " run)" : " (its failures count against other rows)"));
+                notDetermined.add(row.id() + (row.required() < 0 ? " (" + row.run() + " run)"
+                        : row.run() < row.required() ? " (" + row.run() + " of " + row.required() + " run)"
+                        : " (its failures count against other rows)"));
             } else {
                 notRealised.add(row.id() + " (" + row.status().label() + ")");
             }
