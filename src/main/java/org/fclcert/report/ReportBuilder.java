@@ -152,14 +152,19 @@ public final class ReportBuilder {
         return (int) statuses.stream().filter(s -> s == status).count();
     }
 
-    private static Report.Semantic semanticRow(List<CaseResult> evidence) {
+    /** The semantic verdict of a row; {@code incomplete}: not all the cases the row needs ran, so not determined. */
+    private static Report.Semantic semanticRow(List<CaseResult> evidence, boolean incomplete) {
         List<CaseResult> positive = evidence.stream().filter(ReportBuilder::positive).toList();
         int notPresentable = (int) positive.stream()
                 .filter(c -> presentedStatus(c) == PresentedStatus.NOT_PRESENTABLE).count();
         List<CaseResult> presented = positive.stream()
                 .filter(c -> presentedStatus(c) != PresentedStatus.NOT_PRESENTABLE).toList();
         int passed = (int) presented.stream().filter(c -> presentedStatus(c) == PresentedStatus.PASSED).count();
-        return new Report.Semantic(FeatureStatus.of(passed, presented.size()), passed, presented.size(),
+        FeatureStatus status = FeatureStatus.of(passed, presented.size());
+        if (incomplete && status != FeatureStatus.NOT_TESTED) {
+            status = FeatureStatus.NOT_DETERMINED;
+        }
+        return new Report.Semantic(status, passed, presented.size(),
                 notPresentable, presented.stream().filter(c -> presentedStatus(c) != PresentedStatus.PASSED)
                         .map(CaseResult::id).toList());
     }
@@ -197,7 +202,8 @@ public final class ReportBuilder {
             rows.add(new Report.FeatureRow(f.id(), f.table(), f.level().word(), f.element(), f.description(),
                     status, passed, count(against, CaseStatus.FAILED), count(against, CaseStatus.ERRORED),
                     count(evidence, CaseStatus.SKIPPED), evidence.stream().map(CaseResult::id).toList(),
-                    against.stream().map(CaseResult::id).toList(), semantic ? semanticRow(evidence) : null,
+                    against.stream().map(CaseResult::id).toList(),
+                    semantic ? semanticRow(evidence, required < 0 || run < required) : null,
                     required, run, notCounted));
         }
         return rows;
