@@ -160,6 +160,8 @@ public record Report(
             FeatureStatus status, int passed, int failed, int errored, int skipped, List<String> cases,
             List<String> notPassed, @JsonInclude(JsonInclude.Include.NON_NULL) Semantic semantic,
             int required, int run, @JsonInclude(JsonInclude.Include.NON_EMPTY) List<String> notCounted) {
+        // required: the cases of its level or below the verdict needs (-1: unknown, a results file without
+        // corpus.rowCases narrowed by a selection); run: how many of them ran
         public FeatureRow {
             cases = List.copyOf(cases);
             notPassed = List.copyOf(notPassed);
@@ -193,6 +195,8 @@ public record Report(
             if (status == FeatureStatus.NOT_DETERMINED || status == FeatureStatus.NOT_TESTED) {
                 if (required > 0) {
                     parts.add(run + " of " + required + " run");
+                } else if (required < 0) {
+                    parts.add(run + " run");
                 }
             } else if (counted > 0) {
                 parts.add(passed + " of " + counted + " passed");

@@ -158,14 +158,19 @@ public final class ReportBuilder {
         return (int) statuses.stream().filter(s -> s == status).count();
     }
 
-    private static Report.Semantic semanticRow(List<CaseResult> evidence) {
+    /** The semantic verdict of a row; {@code incomplete}: not all the cases the row needs ran, so not determined. */
+    private static Report.Semantic semanticRow(List<CaseResult> evidence, boolean incomplete) {
         List<CaseResult> positive = evidence.stream().filter(ReportBuilder::positive).toList();
         int notPresentable = (int) positive.stream()
                 .filter(c -> presentedStatus(c) == PresentedStatus.NOT_PRESENTABLE).count();
         List<CaseResult> presented = positive.stream()
                 .filter(c -> presentedStatus(c) != PresentedStatus.NOT_PRESENTABLE).toList();
         int passed = (int) presented.stream().filter(c -> presentedStatus(c) == PresentedStatus.PASSED).count();
-        return new Report.Semantic(FeatureStatus.of(passed, presented.size()), passed, presented.size(),
+        FeatureStatus status = FeatureStatus.of(passed, presented.size());
+        if (incomplete && status != FeatureStatus.NOT_TESTED) {
+            status = FeatureStatus.NOT_DETERMINED;
+        }
+        return new Report.Semantic(status, passed, presented.size(),
                 notPresentable, presented.stream().filter(c -> presentedStatus(c) != PresentedStatus.PASSED)
                         .map(CaseResult::id).toList());
     }
@@ -193,7 +198,7 @@ public final class ReportBuilder {
                     .filter(c -> !against.contains(c))
                     .map(c -> c.id() + " (" + Attribution.notCountedBecause(c, f) + ")").toList();
             FeatureStatus status;
-            if (run < required) {
+            if (required < 0 || run < required) {
                 status = run == 0 && passed == 0 ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
             } else if (passed + against.size() == 0) {
                 status = notCounted.isEmpty() ? FeatureStatus.NOT_TESTED : FeatureStatus.NOT_DETERMINED;
@@ -203,7 +208,8 @@ public final class ReportBuilder {
             rows.add(new Report.FeatureRow(f.id(), f.table(), f.level().word(), f.element(), f.description(),
                     status, passed, count(against, CaseStatus.FAILED), count(against, CaseStatus.ERRORED),
                     count(evidence, CaseStatus.SKIPPED), evidence.stream().map(CaseResult::id).toList(),
-                    against.stream().map(CaseResult::id).toList(), semantic ? semanticRow(evidence) : null,
+                    against.stream().map(CaseResult::id).toList(),
+                    semantic ? semanticRow(evidence, required < 0 || run < required) : null,
                     required, run, notCounted));
         }
         return rows;
@@ -211,7 +217,7 @@ public final class ReportBuilder {
 
     /**
      * How many cases the row's verdict needs: the corpus's count from the run header; for a header without it, the
-     * planned cases when nothing narrowed the run, else at least one more than were planned (never decided).
+     * planned cases when nothing narrowed the run, else -1: unknown, so never decided.
      */
     private static int rowCases(RunHeader header, Feature f, int planned) {
         Integer known = header.corpus().rowCases().get(f.id());
@@ -221,7 +227,7 @@ public final class ReportBuilder {
         if (!header.corpus().rowCases().isEmpty() || header.selection().whole()) {
             return planned;
         }
-        return planned + 1;
+        return -1;
     }
 
     private static Predicate<CaseResult> testing(Feature f) {
@@ -258,8 +264,9 @@ public final class ReportBuilder {
             } else if (row.status() == FeatureStatus.NOT_TESTED) {
                 untested.add(row.id());
             } else if (row.status() == FeatureStatus.NOT_DETERMINED) {
-                notDetermined.add(row.id() + (row.run() < row.required() ? " (" + row.run() + " of " + row.required()
-                        + " run)" : " (its failures count against other rows)"));
+                notDetermined.add(row.id() + (row.required() < 0 ? " (" + row.run() + " run)"
+                        : row.run() < row.required() ? " (" + row.run() + " of " + row.required() + " run)"
+                        : " (its failures count against other rows)"));
             } else {
                 notRealised.add(row.id() + " (" + row.status().label() + ")");
             }

@@ -113,8 +113,11 @@ final class Texts {
 
     /** How many of the cases a row's verdict needs ran, when not all did: {@code " (1 of 6 run)"}, else "". */
     static String runOfRequired(Report.FeatureRow f) {
-        return (f.status() == FeatureStatus.NOT_DETERMINED || f.status() == FeatureStatus.NOT_TESTED)
-                && f.run() < f.required() ? " (" + f.run() + " of " + f.required() + " run)" : "";
+        if (f.status() != FeatureStatus.NOT_DETERMINED && f.status() != FeatureStatus.NOT_TESTED) {
+            return "";
+        }
+        return f.required() < 0 ? " (" + f.run() + " run)" : f.run() < f.required() ? " (" + f.run() + " of "
+                + f.required() + " run)" : "";
     }
 
     /** Passed of the cases counted for a row: those that passed and those whose failure is attributed to it. */

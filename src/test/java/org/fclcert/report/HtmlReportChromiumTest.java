@@ -75,8 +75,9 @@ class HtmlReportChromiumTest {
         String md = MarkdownReport.render(failingContinuousCase());
         assertTrue(md.contains("Not tested in this run (partial selection): B-FB, B-IN-TERM, B-OUT-SINGLETON, B-AND-MIN,"),
                 md);
-        assertTrue(md.contains("| defuzzification method | E-COG: METHOD CoG, centre of gravity | **not realised** | 0/1 "
-                + "| E-COG-001 |"), md);
+        // one case of a narrowed run whose header does not say how many E-COG has: failed, yet no verdict on the row
+        assertTrue(md.contains("| defuzzification method | E-COG: METHOD CoG, centre of gravity | not determined (1 run)"
+                + " | 0/1 | E-COG-001 |"), md);
         assertTrue(!md.contains("| not tested |"), "no untested row is tabled");
         assertTrue(md.contains("    - rules fired: RULE 1 at 0.6 → y IS mid\n"), md);
     }
