@@ -62,6 +62,11 @@ public final class CoverageGaps {
             return low == Double.NEGATIVE_INFINITY && high == Double.POSITIVE_INFINITY;
         }
 
+        /** Whether v lies in the interval, its ends included where they are closed. */
+        public boolean contains(double v) {
+            return (lowClosed ? v >= low : v > low) && (highClosed ? v <= high : v < high);
+        }
+
         /** A single point, a gap of zero width. */
         public boolean point() {
             return low == high;

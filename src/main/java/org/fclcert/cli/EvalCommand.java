@@ -58,6 +58,10 @@ final class EvalCommand implements Callable<Integer> {
                     + "an empty cell keeps the input's previous value")
     String csv;
 
+    @Option(names = "--ignore-unknown-columns", description = "with --csv: skip columns that name no input of the"
+            + " block (a time stamp, a logged output); they are not passed through to the output")
+    boolean ignoreUnknownColumns;
+
     @Option(names = "--out", paramLabel = "FILE", description = "write the result here instead of stdout")
     String outFile;
 
@@ -81,11 +85,19 @@ final class EvalCommand implements Callable<Integer> {
             err.println("fclcert: --trace cannot be combined with --csv (trace one step with --in instead)");
             return ExitCodes.USAGE;
         }
+        List<String> named = new ArrayList<>();
         for (String in : inputs) {
             if (in.indexOf('=') <= 0) {
                 err.println("fclcert: --in " + TerminalText.visible(in) + ": expected NAME=VALUE, e.g. --in temp=5");
                 return ExitCodes.USAGE;
             }
+            String name = in.substring(0, in.indexOf('=')).trim();
+            if (named.stream().anyMatch(n -> Names.same(n, name))) {
+                // last-wins would hide a typo in a long command line
+                err.println("fclcert: --in " + TerminalText.visible(name) + " is given twice; give each input once");
+                return ExitCodes.USAGE;
+            }
+            named.add(name);
         }
         try {
             Optional<Program> program = checkedProgram(err);
@@ -162,7 +174,19 @@ final class EvalCommand implements Callable<Integer> {
         Run run = start(program);
         List<String> lines = SourceFiles.read(csv).lines().toList();
         CsvTable table = CsvTable.parse(csv, lines);
-        for (String column : table.columns()) {
+        boolean[] skipped = new boolean[table.columns().size()];
+        for (int c = 0; c < table.columns().size(); c++) {
+            String column = table.columns().get(c);
+            for (int before = 0; before < c; before++) {
+                if (Names.same(table.columns().get(before), column)) {
+                    throw new InputProblem(csv + ":" + table.headerLine() + ": column '" + column + "' is given twice"
+                            + " (columns " + (before + 1) + " and " + (c + 1) + "); give each input one column");
+                }
+            }
+            if (ignoreUnknownColumns && run.fb.inputNames().stream().noneMatch(n -> Names.same(n, column))) {
+                skipped[c] = true;
+                continue;
+            }
             // a header typo is the header's mistake, found before any row runs
             run.requireInput(column, csv + ":" + table.headerLine() + ": column '" + column + "'");
         }
@@ -171,7 +195,7 @@ final class EvalCommand implements Callable<Integer> {
         for (CsvTable.Row row : table.rows()) {
             String where = csv + ":" + row.line();
             for (int c = 0; c < table.columns().size(); c++) {
-                if (!row.cells().get(c).isEmpty()) {
+                if (!skipped[c] && !row.cells().get(c).isEmpty()) {
                     run.set(table.columns().get(c), row.cells().get(c), where);
                 }
             }

@@ -86,8 +86,8 @@ final class FmtCommand implements Callable<Integer> {
                 if (diff.isEmpty()) {
                     return ExitCodes.OK;
                 }
-                err.println("fclcert: " + name + " is not in canonical layout ('fclcert fmt --write " + name
-                        + "' rewrites it)");
+                err.println("fclcert: " + name + " is not in canonical layout (" + (SourceFiles.STDIN.equals(file)
+                        ? "'fclcert fmt -' prints it" : "'fclcert fmt --write " + name + "' rewrites it") + ")");
                 return ExitCodes.ERRORS;
             }
             if (!write) {

@@ -376,8 +376,7 @@ public final class Plotter {
     }
 
     private static boolean contains(CoverageGaps.Interval in, Double v) {
-        return v != null && (in.lowClosed() ? v >= in.low() : v > in.low())
-                && (in.highClosed() ? v <= in.high() : v < in.high());
+        return v != null && in.contains(v);
     }
 
     private String fixedNote(List<String> varying) {

@@ -253,10 +253,7 @@ class CoverageGapsTest {
 
     private static boolean contains(CoverageGaps.Box box, double[] at) {
         for (int a = 0; a < at.length; a++) {
-            CoverageGaps.Interval in = box.intervals().get(a);
-            boolean ok = (in.lowClosed() ? at[a] >= in.low() : at[a] > in.low())
-                    && (in.highClosed() ? at[a] <= in.high() : at[a] < in.high());
-            if (!ok) {
+            if (!box.intervals().get(a).contains(at[a])) {
                 return false;
             }
         }

@@ -135,4 +135,26 @@ class KeyboardFeaturesTest {
         assertEquals(2, twice.exitCode());
         assertEquals(List.of("fclcert: --in TREND is given twice; give each input once"), twice.errLines());
     }
+
+    @Test
+    void evalCsvSkipsUnknownColumnsOnRequestAndRefusesRepeatedColumnsAndInputs(@TempDir Path dir) {
+        // logged data with a time stamp; the valve's values at temp 5, pressure 60 and 90 are README's (74.803..,
+        // 4.587..), worked out there by the evaluator's own tests
+        Path csv = Cli.write(dir, "log.csv", "time,temp,pressure\n0,5,60\n10,5,90\n");
+        Cli refused = Cli.run("eval", "examples/valve.fcl", "--csv", csv.toString());
+        assertEquals(1, refused.exitCode());
+        assertTrue(refused.err().contains(":1: column 'time': function block 'Fuzzy_FB' has no variable"), refused.err());
+        Cli r = Cli.run("eval", "examples/valve.fcl", "--csv", csv.toString(), "--ignore-unknown-columns");
+        assertEquals(0, r.exitCode(), r.err());
+        assertEquals(List.of("temp,pressure,valve", "5.0,60.0,74.80314960629921", "5.0,90.0,4.587155963302753"),
+                r.outLines());
+        Path twice = Cli.write(dir, "twice.csv", "temp,pressure,TEMP\n5,60,6\n");
+        Cli repeated = Cli.run("eval", "examples/valve.fcl", "--csv", twice.toString());
+        assertEquals(1, repeated.exitCode());
+        assertEquals(List.of("fclcert: " + twice + ":1: column 'TEMP' is given twice (columns 1 and 3); give each"
+                + " input one column"), repeated.errLines());
+        Cli in = Cli.run("eval", "examples/valve.fcl", "--in", "temp=5", "--in", "pressure=60", "--in", "temp=6");
+        assertEquals(2, in.exitCode());
+        assertEquals(List.of("fclcert: --in temp is given twice; give each input once"), in.errLines());
+    }
 }

@@ -56,7 +56,14 @@ class ReadmeTest {
                 before.put(p, Files.readAllBytes(p));
             }
         }
-        Cli r = Cli.run(args.toArray(String[]::new));
+        // '< FILE' at the end (a command reading standard input, '-'): the file becomes standard input
+        Cli r;
+        if (args.size() >= 2 && args.get(args.size() - 2).equals("<")) {
+            byte[] input = Files.readAllBytes(Path.of(args.get(args.size() - 1)));
+            r = SarifOutputTest.withStdin(input, args.subList(0, args.size() - 2).toArray(String[]::new));
+        } else {
+            r = Cli.run(args.toArray(String[]::new));
+        }
         for (var e : before.entrySet()) {
             boolean changed = !java.util.Arrays.equals(e.getValue(), Files.readAllBytes(e.getKey()));
             Files.write(e.getKey(), e.getValue());

@@ -88,4 +88,25 @@ class PlotChromiumTest {
         }
         return n;
     }
+
+    @Test
+    void theRegionsWhereNoRuleFiresAreHatchedWhereHandDerivationPutsThem() throws Exception {
+        // examples/heater.fcl, surface over error (x, [-5, 5]) and trend (y, [-2, 2]): by hand no rule fires for
+        // error <= -1 with trend <= 0, and on the lines error = -1 (trend > 0) and error = 1
+        String text = java.nio.file.Files.readString(Path.of("examples/heater.fcl"));
+        org.fclcert.model.Program program = org.fclcert.check.Analysis.analyze(new org.fclcert.syntax.StrictReader(),
+                "heater.fcl", text).program().orElseThrow();
+        Plotter.Picture surface = new Plotter(program, null, Map.of()).pictures().get(3);
+        BufferedImage png = Chromium.render(dir, "gaps", surface.svg(), Plotter.WIDTH, Plotter.HEIGHT);
+        double[] dx = {-5, 5};
+        double[] dy = {-2, 2};
+        // the outline of the box: its right edge at error = -1, its top at trend = 0
+        assertTrue(Chromium.colourNear(png, Plotter.px(-1, dx), Plotter.py(-1, dy), 1, Plotter.GAP, 60), "edge -1");
+        assertTrue(Chromium.colourNear(png, Plotter.px(-3, dx), Plotter.py(0, dy), 1, Plotter.GAP, 60), "top 0");
+        // the zero-width gap at error = 1, drawn as a line over the whole trend axis
+        assertTrue(Chromium.colourNear(png, Plotter.px(1, dx), Plotter.py(1.5, dy), 1, Plotter.GAP, 60), "line 1");
+        // no hatching where rules fire: error = 3 (cold) and error = -3 with trend = 1 (hot and rising)
+        assertFalse(Chromium.colourNear(png, Plotter.px(3, dx), Plotter.py(0, dy), 3, Plotter.GAP, 60), "at 3");
+        assertFalse(Chromium.colourNear(png, Plotter.px(-3, dx), Plotter.py(1, dy), 3, Plotter.GAP, 60), "at -3, 1");
+    }
 }

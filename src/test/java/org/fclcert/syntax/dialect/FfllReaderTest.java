@@ -119,9 +119,10 @@ class FfllReaderTest {
     @Test
     void writtenVariablesGiveWayToPositionWithAWarning() {
         Analysis a = analyze("mixer.fcl");
+        // the mixer's two rules leave regions where none fires (FCL-W005, CoverageGapsTest's concern): left out here
         assertEquals(List.of("FCL-D116@35:5", "FCL-D117@40:5", "FCL-D111@47:16", "FCL-D111@47:33", "FCL-W105@48:48",
-                "FCL-D113@48:53"), codes(a));
-        Diagnostic first = a.diagnostics().get(2);
+                "FCL-D113@48:53"), codes(a).stream().filter(c -> !c.startsWith("FCL-W005")).toList());
+        Diagnostic first = a.diagnostics().stream().filter(d -> !d.code().equals("FCL-W005")).toList().get(2);
         assertTrue(first.message().contains("read as 'speed IS slow'"), first.message());
         Rule r1 = a.program().orElseThrow().functionBlocks().get(0).ruleBlocks().get(0).rules().get(0);
         Condition.And c = (Condition.And) r1.condition();
