@@ -73,12 +73,7 @@ public final class FisReader implements DialectReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
-        try {
-            return restate(sourceName, text).read();
-        } catch (RuntimeException | StackOverflowError e) {
-            return new ReadResult(Optional.empty(), List.of(DialectParser.internalError(
-                    sourceName == null ? "<input>" : sourceName, "FIS reader", e)));
-        }
+        return EngineText.read(sourceName, text, "FIS reader", FisReader::restate);
     }
 
     /** One variable of the file: its name and its terms' names, in order. */
@@ -214,14 +209,7 @@ public final class FisReader implements DialectReader {
                     close = input ? "END_FUZZIFY " : "END_DEFUZZIFY ";
                 }
                 case "Range" -> {
-                    String[] p = value.replace("[", "").replace("]", "").strip().split("[\\s,]+");
-                    Optional<String> lo = p.length == 2 ? EngineText.number(p[0]) : Optional.empty();
-                    Optional<String> hi = p.length == 2 ? EngineText.number(p[1]) : Optional.empty();
-                    if (lo.isEmpty() || hi.isEmpty()) {
-                        t.error(i, DialectCode.SYNTAX, "expected 'Range=[MIN MAX]', found '" + s + "'");
-                    } else {
-                        t.put(i, "RANGE := (" + lo.get() + " .. " + hi.get() + ");");
-                    }
+                    t.range(i, value.replace("[", "").replace("]", "").strip().split("[\\s,]+"), "Range=[MIN MAX]");
                 }
                 case "NumMFs" -> { }
                 case "Enabled" -> {
