@@ -54,6 +54,9 @@ public final class Iuts {
         }
     }
 
+    private static final String NAN_INPUTS = "its variables start at NaN: the adapter sets every input to 0 (the"
+            + " initial value of a REAL) when an instance is made, so a program used directly must set every input";
+
     /** Every kind, in the order help texts list them; a spec is matched against them in this order. */
     public static final List<Kind> KINDS = List.of(
             new Kind("reference", "reference", "fclcert's own reference evaluator", Argument.NONE, Optional.empty(),
@@ -74,8 +77,7 @@ public final class Iuts {
             new Kind(JfuzzyliteImplementation.SPEC, "jfuzzylite[:JAR]", "jfuzzylite 6.0.1 in a JVM of its own",
                     Argument.OPTIONAL, Optional.of(Dialect.FUZZYLITE), List.of(
                             "jfuzzylite builds only the first function block of a program",
-                            "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
-                                    + " when an instance is made, so a program used directly must set every input",
+                            NAN_INPUTS,
                             "a call that hangs cannot be killed in process: it is abandoned on its thread",
                             "see docs/iut-protocol.md, \"jfuzzylite\""),
                     (spec, argument, options) -> JfuzzyliteImplementation.open(spec, options)),
@@ -83,8 +85,7 @@ public final class Iuts {
                     Argument.OPTIONAL, Optional.of(Dialect.JFUZZYLOGIC), List.of(
                             "jFuzzyLogic prints parse errors and still returns a system: fclcert counts a printed"
                                     + " parse error as a rejection; one it recovers from without printing shows only as wrong values",
-                            "its variables start at NaN: the adapter sets every input to 0 (the initial value of a REAL)"
-                                    + " when an instance is made, so a program used directly must set every input",
+                            NAN_INPUTS,
                             "it runs in a JVM of its own; its static state lives as long as that JVM",
                             "see docs/iut-protocol.md, \"jFuzzyLogic\""),
                     (spec, argument, options) -> JFuzzyLogicIut.open(spec, options)),

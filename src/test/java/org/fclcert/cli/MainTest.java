@@ -44,7 +44,7 @@ class MainTest {
         Cli r = Cli.run("check", "--dialect", "foo", "x.fcl");
         assertEquals(2, r.exitCode());
         assertEquals(List.of("Invalid value for option '--dialect': expected one of [strict, ffll, jfuzzylogic,"
-                + " fuzzylite, auto] (case-insensitive) but was 'foo'",
+                + " fuzzylite, fll, fis, auto] (case-insensitive) but was 'foo'",
                 "Try 'fclcert check --help' for more information."), r.err().lines().toList());
     }
 

@@ -100,8 +100,12 @@ public enum DialectCode implements DiagnosticCode {
             "jFuzzyLogic reads an output in a condition at its value when the evaluation begins (its DEFAULT), so rule"
                     + " blocks do not chain; read so"),
     FIS_SUM("FCL-W314", Severity.WARNING, "Table 5",
-            "FIS AggMethod 'sum': MATLAB and Octave add the rules' sets (read so, ACCU SUM); fuzzylite 6 reads it as"
-                    + " the algebraic sum (probor)");
+            "a FIS aggregation Octave and fuzzylite evaluate differently, read as MATLAB: 'sum' adds the rules' sets"
+                    + " (fuzzylite 6: probor); a Sugeno output averages every rule's value (Octave first aggregates the"
+                    + " rules concluding one term by AggMethod)"),
+    FIS_HEDGE("FCL-W315", Severity.WARNING, "Table 10",
+            "a hedge in a FIS rule that Octave evaluates otherwise than fuzzylite (read as fuzzylite): 'extremely' (.3)"
+                    + " Octave cubes; a hedge in a consequent Octave applies to the output's term, not the rule's degree");
 
     private final String code;
     private final Severity severity;

@@ -127,6 +127,29 @@ final class EngineText {
         return new Program(p.sourceName(), p.functionBlocks(), own);
     }
 
+    /** A file read by restating it ({@code restate}); a bug of the reader is a located FCL-S999, never an exception. */
+    static ReadResult read(String source, String text, String reader,
+            java.util.function.BiFunction<String, String, EngineText> restate) {
+        try {
+            return restate.apply(source, text).read();
+        } catch (RuntimeException | StackOverflowError e) {
+            return new ReadResult(Optional.empty(), List.of(DialectParser.internalError(
+                    source == null ? "<input>" : source, reader, e)));
+        }
+    }
+
+    /** {@code RANGE := (lo .. hi);} on line {@code index} from two written numbers, else a located FCL-S305. */
+    void range(int index, String[] written, String expected) {
+        Optional<String> lo = written.length == 2 ? number(written[0]) : Optional.empty();
+        Optional<String> hi = written.length == 2 ? number(written[1]) : Optional.empty();
+        if (lo.isEmpty() || hi.isEmpty()) {
+            error(index, DialectCode.SYNTAX, "expected '" + expected + "' (two numbers), found '"
+                    + String.join(" ", written) + "'");
+        } else {
+            put(index, "RANGE := (" + lo.get() + " .. " + hi.get() + ");");
+        }
+    }
+
     /** A name as an FCL identifier: each run of other characters as '_', a leading digit prefixed. */
     static String identifier(String name, String fallback) {
         String s = name.strip().replaceAll("[^A-Za-z0-9_]+", "_");

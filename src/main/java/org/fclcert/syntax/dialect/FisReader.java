@@ -63,7 +63,8 @@ public final class FisReader implements DialectReader {
             Map.entry("function", new Shape("Function", null)));
 
     /** fuzzylite's hedges in a rule's index, by its fraction (as its FIS exporter writes them and its importer reads). */
-    private static final Map<Integer, String> HEDGES = Map.of(20, "very", 30, "extremely", 40, "very very", 99, "any");
+    private static final Map<Integer, String> HEDGES = Map.of(5, "somewhat", 20, "very", 30, "extremely",
+            40, "very very", 99, "any");
 
     @Override
     public Dialect dialect() {
@@ -72,12 +73,7 @@ public final class FisReader implements DialectReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
-        try {
-            return restate(sourceName, text).read();
-        } catch (RuntimeException | StackOverflowError e) {
-            return new ReadResult(Optional.empty(), List.of(DialectParser.internalError(
-                    sourceName == null ? "<input>" : sourceName, "FIS reader", e)));
-        }
+        return EngineText.read(sourceName, text, "FIS reader", FisReader::restate);
     }
 
     /** One variable of the file: its name and its terms' names, in order. */
@@ -136,6 +132,8 @@ public final class FisReader implements DialectReader {
         int outputIndex = -1;
         int rules = 0;
         boolean sawSystem = false;
+        Map<Integer, Map<Long, Integer>> concluded = new java.util.HashMap<>();
+        Map<Integer, Integer> nameLines = new java.util.HashMap<>();
         for (int i = 0; i < lines.size(); i++) {
             String s = strip(lines.get(i));
             if (s.isEmpty()) {
@@ -178,7 +176,7 @@ public final class FisReader implements DialectReader {
             }
             if (section.equals("Rules")) {
                 rules++;
-                rule(t, i, s, rules, inputs, outputs);
+                rule(t, i, s, rules, inputs, outputs, concluded);
                 continue;
             }
             int eq = s.indexOf('=');
@@ -200,6 +198,9 @@ public final class FisReader implements DialectReader {
             String name = EngineText.identifier(v.name(), input ? "input" : "output");
             switch (key) {
                 case "Name" -> {
+                    if (!input) {
+                        nameLines.put(outputIndex, i);
+                    }
                     StringBuilder b = new StringBuilder(close).append(input ? "FUZZIFY " : "DEFUZZIFY ").append(name);
                     if (!input) {
                         outputSettings(t, i, b, v, type, system);
@@ -208,14 +209,7 @@ public final class FisReader implements DialectReader {
                     close = input ? "END_FUZZIFY " : "END_DEFUZZIFY ";
                 }
                 case "Range" -> {
-                    String[] p = value.replace("[", "").replace("]", "").strip().split("[\\s,]+");
-                    Optional<String> lo = p.length == 2 ? EngineText.number(p[0]) : Optional.empty();
-                    Optional<String> hi = p.length == 2 ? EngineText.number(p[1]) : Optional.empty();
-                    if (lo.isEmpty() || hi.isEmpty()) {
-                        t.error(i, DialectCode.SYNTAX, "expected 'Range=[MIN MAX]', found '" + s + "'");
-                    } else {
-                        t.put(i, "RANGE := (" + lo.get() + " .. " + hi.get() + ");");
-                    }
+                    t.range(i, value.replace("[", "").replace("]", "").strip().split("[\\s,]+"), "Range=[MIN MAX]");
                 }
                 case "NumMFs" -> { }
                 case "Enabled" -> {
@@ -251,6 +245,21 @@ public final class FisReader implements DialectReader {
         }
         if (!sawSystem) {
             t.error(0, DialectCode.SYNTAX, "no '[System]' section: not a FIS file");
+        }
+        // Sugeno outputs: MATLAB and fuzzylite average every rule's value; Octave first aggregates by AggMethod the
+        // rules that conclude one term
+        String agg = system.getOrDefault("AggMethod", "max");
+        for (int k = 0; k < outputs.size(); k++) {
+            Variable v = outputs.get(k);
+            boolean sugeno = !v.kinds().isEmpty() && v.kinds().stream().allMatch(x -> List.of("constant", "linear",
+                    "function").contains(x));
+            long repeated = concluded.getOrDefault(k, Map.of()).values().stream().filter(c -> c > 1).count();
+            if (sugeno && repeated > 0 && !agg.equalsIgnoreCase("sum")) {
+                t.warn(nameLines.getOrDefault(k, 0), DialectCode.FIS_SUM, "'" + v.name() + "' (Sugeno): read as MATLAB"
+                        + " and fuzzylite read it, the weighted average of every rule's value; Octave first takes the"
+                        + " AggMethod '" + agg + "' of the rules concluding one term (here " + repeated + " terms are"
+                        + " concluded by several rules)");
+            }
         }
         t.end(close + "END_FUNCTION_BLOCK");
         return t;
@@ -362,7 +371,8 @@ public final class FisReader implements DialectReader {
     }
 
     /** {@code a1 .. an , c1 .. cm (w) : 1|2}: the indices of the inputs' and the outputs' terms (0: none, < 0: not). */
-    private static void rule(EngineText t, int i, String s, int number, List<Variable> inputs, List<Variable> outputs) {
+    private static void rule(EngineText t, int i, String s, int number, List<Variable> inputs, List<Variable> outputs,
+            Map<Integer, Map<Long, Integer>> concluded) {
         Matcher m = RULE.matcher(s);
         if (!m.matches()) {
             t.error(i, DialectCode.SYNTAX, "expected a rule 'i1 .. in, o1 .. om (weight) : 1|2', found '" + s + "'");
@@ -411,6 +421,12 @@ public final class FisReader implements DialectReader {
             t.error(i, DialectCode.BAD_NUMBER, "a rule's weight '" + m.group(3).strip() + "' is no number");
             return;
         }
+        for (int k = 0; k < cons.length; k++) {
+            long term = Math.abs((long) Double.parseDouble(cons[k]));
+            if (term > 0) {
+                concluded.computeIfAbsent(k, x -> new java.util.HashMap<>()).merge(term, 1, Integer::sum);
+            }
+        }
         t.put(i, "RULE " + number + " : if " + String.join(join, conditions) + " then "
                 + String.join(" and ", conclusions) + (Double.parseDouble(weight.get()) == 1 ? "" : " with "
                 + weight.get()) + ";");
@@ -439,9 +455,15 @@ public final class FisReader implements DialectReader {
         }
         String hedge = fraction == 0 ? "" : HEDGES.get(fraction);
         if (hedge == null) {
-            t.error(i, DialectCode.UNSUPPORTED, "index " + index + ": fclcert reads fuzzylite's hedges .2 (very), .3"
-                    + " (extremely), .4 (very very) and 0.99 (any) only");
+            t.error(i, DialectCode.UNSUPPORTED, "index " + index + ": fclcert reads the hedges .05 (somewhat), .2 (very),"
+                    + " .3 (extremely), .4 (very very) and 0.99 (any) only");
             return null;
+        }
+        if (fraction == 30 || !hedge.isEmpty() && !input) {
+            t.warn(i, DialectCode.FIS_HEDGE, "index " + index + " of '" + v.name() + "': read as fuzzylite reads it"
+                    + (input ? " (its 'extremely': 2x² below 0.5, 1 - 2(1 - x)² above); Octave raises the degree to the"
+                    + " third power" : " (the hedge on the rule's degree); Octave hedges the output's term (Mamdani) or"
+                    + " raises the degree to 1/hedge (Sugeno)"));
         }
         if (x < 0 && !input) {
             t.error(i, DialectCode.UNSUPPORTED, "a negated consequent (index " + index + ") is not evaluated by fclcert");

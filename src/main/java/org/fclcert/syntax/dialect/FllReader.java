@@ -36,12 +36,7 @@ public final class FllReader implements DialectReader {
 
     @Override
     public ReadResult read(String sourceName, String text) {
-        try {
-            return restate(sourceName, text).read();
-        } catch (RuntimeException | StackOverflowError e) {
-            return new ReadResult(Optional.empty(), List.of(DialectParser.internalError(
-                    sourceName == null ? "<input>" : sourceName, "FLL reader", e)));
-        }
+        return EngineText.read(sourceName, text, "FLL reader", FllReader::restate);
     }
 
     private record Line(int index, String key, String value) {
@@ -144,15 +139,7 @@ public final class FllReader implements DialectReader {
                     }
                 }
                 case "InputVariable.range", "OutputVariable.range" -> {
-                    String[] p = v.split("\\s+");
-                    Optional<String> lo = p.length == 2 ? EngineText.number(p[0]) : Optional.empty();
-                    Optional<String> hi = p.length == 2 ? EngineText.number(p[1]) : Optional.empty();
-                    if (lo.isEmpty() || hi.isEmpty()) {
-                        t.error(l.index, DialectCode.SYNTAX, "expected 'range: MIN MAX' (two numbers), found '"
-                                + v + "'");
-                    } else {
-                        t.put(l.index, "RANGE := (" + lo.get() + " .. " + hi.get() + ");");
-                    }
+                    t.range(l.index, v.split("\\s+"), "range: MIN MAX");
                 }
                 case "InputVariable.lock-range" -> {
                     if (l.value.equals("true")) {
