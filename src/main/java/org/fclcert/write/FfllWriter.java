@@ -87,6 +87,8 @@ public final class FfllWriter implements DialectWriter {
         final List<Variable> inputs;
         /** Terms added to an input, by input key: name → points. */
         final Map<String, Map<String, List<double[]>>> added = new LinkedHashMap<>();
+        /** The RANGE written for each input, by key. */
+        final Map<String, double[]> spans = new java.util.HashMap<>();
 
         Block(BlockContext cx) {
             this.cx = cx;
@@ -108,8 +110,7 @@ public final class FfllWriter implements DialectWriter {
                 out.append(kind.keyword()).append('\n');
                 for (Variable v : vs) {
                     FuzzyliteWriter.initialValue(cx, v);
-                    double[] span = kind == VariableKind.INPUT ? fb.fuzzification(v.name()).map(cx::inputSpan)
-                            .orElse(new double[] {0, 1}) : fb.defuzzification(v.name()).map(cx::outputSpan)
+                    double[] span = kind == VariableKind.INPUT ? inputSpan(v.name()) : fb.defuzzification(v.name()).map(cx::outputSpan)
                             .orElse(new double[] {0, 1});
                     out.append(IN).append(v.name()).append(' ').append(v.type().name()).append("; (* RANGE(")
                             .append(LibraryText.number(span[0])).append(" .. ").append(LibraryText.number(span[1]))
@@ -122,7 +123,7 @@ public final class FfllWriter implements DialectWriter {
             for (Fuzzification f : fb.fuzzifications()) {
                 out.append("FUZZIFY ").append(cx.variable(f.variable())).append('\n');
                 for (Term t : f.terms()) {
-                    term(t, cx.inputSpan(f), out);
+                    term(t, inputSpan(f.variable()), out);
                 }
                 addedTerms(f.variable(), out);
                 out.append("END_FUZZIFY\n\n");
@@ -146,6 +147,29 @@ public final class FfllWriter implements DialectWriter {
             }
             blocks.forEach(out::append);
             out.append("END_FUNCTION_BLOCK\n");
+        }
+
+        /**
+         * The RANGE written for an input: its own, widened to the right where a shoulder rising to the end needs it
+         * ({@link FfllShapes#rightEnd}): FFLL clamps inputs to the RANGE and every term is constant beyond its last
+         * point, so a wider RANGE to the right changes no degree, only the grid.
+         */
+        private double[] inputSpan(String input) {
+            return spans.computeIfAbsent(Names.key(input), k -> {
+                double[] span = fb.fuzzification(input).map(cx::inputSpan).orElse(new double[] {0, 1});
+                double hi = span[1];
+                for (Term t : fb.fuzzification(input).map(Fuzzification::terms).orElse(List.of())) {
+                    if (t.function() instanceof MembershipFunction.Points p) {
+                        Optional<List<double[]>> xy = literal(p.points());
+                        if (xy.isPresent()) {
+                            hi = Math.max(hi, FfllShapes.rightEnd(xy.get(), span[0], span[1]));
+                            List<double[]> complement = xy.get().stream().map(q -> new double[] {q[0], 1 - q[1]}).toList();
+                            hi = Math.max(hi, FfllShapes.rightEnd(complement, span[0], span[1]));
+                        }
+                    }
+                }
+                return new double[] {span[0], hi};
+            });
         }
 
         private void addedTerms(String input, StringBuilder out) {
@@ -420,7 +444,7 @@ public final class FfllWriter implements DialectWriter {
                     return e.getKey();
                 }
             }
-            double[] span = fb.fuzzification(input.name()).map(cx::inputSpan).orElse(new double[] {0, 1});
+            double[] span = inputSpan(input.name());
             String name = fresh(input, "anything");
             terms.put(name, FfllShapes.everywhere(span[0], span[1]));
             return name;
@@ -432,7 +456,7 @@ public final class FfllWriter implements DialectWriter {
             if (t.isEmpty() || t.get().function() instanceof MembershipFunction.Singleton) {
                 return null;
             }
-            double[] span = fb.fuzzification(input.name()).map(cx::inputSpan).orElse(new double[] {0, 1});
+            double[] span = inputSpan(input.name());
             List<Point> points = points(t.get(), span);
             if (points.stream().anyMatch(p -> !(p.x() instanceof Literal) || !(p.degree() instanceof Literal))) {
                 return null;

@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Test;
  * prints into README.md.
  */
 class CommittedReportsTest {
-    static final List<String> DIRS = List.of("reference", "fuzzylite-6.0", "jfuzzylite-6.0.1", "jfuzzylogic-3.3");
+    static final List<String> DIRS = List.of("reference", "fuzzylite-6.0", "jfuzzylite-6.0.1", "jfuzzylogic-3.3", "ffll-2.2.1");
 
     private static List<ComparisonPage.Entry> entries(String prefix) throws Exception {
         List<ComparisonPage.Entry> entries = new ArrayList<>();

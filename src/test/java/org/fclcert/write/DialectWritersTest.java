@@ -131,7 +131,9 @@ class DialectWritersTest {
      * subconclusion in parentheses (FFLL's strict form; unparenthesised it takes the first word for its shorthand);
      * 'b IS NOT dry' becomes the complement term (x, 1 − y) and an input a conjunction leaves out gets the term
      * 'anything' of degree 1. Every term in the shapes FFLL holds (it ignores written degrees): a shoulder as a
-     * trapezoid with a repeated point at the end of the RANGE, 'anything' as the trapezoid over the whole RANGE.
+     * trapezoid with a repeated point at the end of the RANGE (a triangle when its plateau is that point),
+     * 'anything' as the trapezoid over the whole RANGE. Loaded in the real FFLL this gives the hand values below
+     * exactly (FfllIutTest does not repeat it; checked by hand with --iut ffll).
      */
     @Test
     void ffllExpandsOrAndNotIntoRulesOverEveryInput() throws Exception {
@@ -140,15 +142,15 @@ class DialectWritersTest {
         assertTrue(w.exact(), w.notExpressible().toString());
         assertTrue(w.text().contains("""
                 FUZZIFY a
-                    TERM hot := (0, 0) (10, 1) (10, 1) (10, 1);
+                    TERM hot := (0, 0) (10, 1) (10, 1);
                     TERM anything := (0, 1) (0, 1) (10, 1) (10, 1);
                 END_FUZZIFY
                 """), w.text());
         assertTrue(w.text().contains("""
                 FUZZIFY b
                     TERM dry := (0, 1) (0, 1) (4, 1) (8, 0);
-                    TERM not_dry := (4, 0) (8, 1) (10, 1) (10, 1);
-                    TERM anything := (0, 1) (0, 1) (10, 1) (10, 1);
+                    TERM not_dry := (4, 0) (8, 1) (10.452, 1) (10.452, 1);
+                    TERM anything := (0, 1) (0, 1) (10.452, 1) (10.452, 1);
                 END_FUZZIFY
                 """), w.text());
         assertTrue(w.text().contains("""
@@ -157,6 +159,9 @@ class DialectWritersTest {
                     RULE 2: IF (a IS anything) AND (b IS dry) THEN (y IS on);
                 """), w.text());
         assertTrue(w.text().contains("    a REAL; (* RANGE(0 .. 10) *)\n"), w.text());
+        // not_dry rises over 4 .. 8, more than 2/3 of 4 .. 10: FFLL would pull the trapezoid's second point back, so
+        // b's RANGE moves right to 4 + 1.6 · 4 = 10.4 and a grid step (10.4 / 200 = 0.052) more
+        assertTrue(w.text().contains("    b REAL; (* RANGE(0 .. 10.452) *)\n"), w.text());
         // by hand: a = 5, b = 6: hot 0.5, dry 0.5, not dry 0.5; off = max(0.5, 0.5) = 0.5, on = 0.5 → 50
         // a = 2, b = 9: hot 0.2, dry 0, not dry 1; off = 1, on = 0 → 0
         Program back = Analysis.analyze(DialectReaders.reader(Dialect.FFLL), "w.fcl", w.text()).program().orElseThrow();

@@ -247,6 +247,9 @@ final class FfllModel {
         if (c instanceof Condition.VariableSubcondition) {
             return Optional.empty();
         }
+        if (c instanceof Condition.Parenthesized p && p.inner() instanceof Condition.TermSubcondition) {
+            return firstNonAnd(p.inner());   // '(x IS t)' is FFLL's own strict form: the parentheses change nothing
+        }
         if (c instanceof Condition.And a) {
             for (Condition o : a.operands()) {
                 Optional<SourceLocation> at = firstNonAnd(o);

@@ -35,6 +35,8 @@ import org.fclcert.syntax.ReaderOptions;
  *       {@code : =} becomes {@code :=} (O-SPACED-ASSIGN), as FFLL's API sample writes them;</li>
  *   <li>a subconclusion in parentheses, {@code THEN (valve IS open)} as FFLL's writer writes it, loses them
  *       (FCL-D121);</li>
+ *   <li>an empty statement in a RULEBLOCK ({@code ;} after a comment), as FFLL's writer closes its
+ *       {@code (* RULE n : No Rule Specified *)} lines, is dropped;</li>
  *   <li>{@code DEFUZZIFY x} naming no declared variable, in a block with one output, is read as that output's
  *       DEFUZZIFY: FFLL skips the name and defuzzifies its one output (its own sample files do this; FCL-D122).</li>
  * </ul>
@@ -95,6 +97,7 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
         List<Declaration> section = new ArrayList<>();
         Map<String, RangeComment> fbRanges = new HashMap<>();
         boolean afterThen = false;
+        boolean inRuleBlock = false;
         int previous = -1;
         java.util.Set<Integer> dropped = new java.util.HashSet<>();
         List<String> declared = new ArrayList<>();
@@ -108,6 +111,15 @@ final class FfllTokens implements ReaderOptions.TokenFilter {
                 previous = type;
                 if (dropped.contains(i)) {
                     continue;
+                }
+                if (type == FclLexer.SEMI && before == FclLexer.SEMI && inRuleBlock) {
+                    // FFLL's writer closes its '(* RULE n : No Rule Specified *)' lines with ';': an empty statement
+                    continue;
+                }
+                if (type == FclLexer.RULEBLOCK) {
+                    inRuleBlock = true;
+                } else if (type == FclLexer.END_RULEBLOCK) {
+                    inRuleBlock = false;
                 }
                 if (type == FclLexer.THEN) {
                     afterThen = true;
