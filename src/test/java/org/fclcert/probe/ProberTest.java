@@ -170,7 +170,9 @@ class ProberTest {
         java.util.concurrent.atomic.AtomicInteger opened = new java.util.concurrent.atomic.AtomicInteger();
         Map<String, DataCheckEntry> rows = probe(() -> {
             opened.incrementAndGet();
-            return Iuts.open(spec, IutOptions.defaults());
+            // the script imports the example implementation beside it: that directory is bound read-only too
+            return Iuts.open(spec, IutOptions.defaults().withSandbox(org.fclcert.sandbox.SandboxSettings.defaults()
+                    .withReadOnly(List.of(Path.of("examples/iut").toAbsolutePath()))));
         }, 2048,
                 Table11.RULES_PER_BLOCK, Table11.RULES_TOTAL, Table11.MEMORY);
         DataCheckEntry perBlock = rows.get("max-rules-per-block");
