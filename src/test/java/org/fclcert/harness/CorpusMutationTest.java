@@ -1,0 +1,62 @@
+package org.fclcert.harness;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.fclcert.corpus.Corpus;
+import org.fclcert.corpus.CorpusException;
+import org.fclcert.iut.ImplementationUnderTest;
+import org.fclcert.iut.IutException;
+import org.fclcert.iut.IutOptions;
+import org.fclcert.iut.Iuts;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The conformance corpus as a test of the reference evaluator: every case of {@code conformance/} is run on
+ * {@code reference} by the harness's own {@link Runner} with the reference export check, exactly as
+ * {@code fclcert certify --iut reference} judges it (tolerance, knife edges not judged, the reverse-order rerun,
+ * negative cases), and must pass. It is the only test of the {@code mutation} profile (pom.xml, PIT): a
+ * mutant of {@code org.fclcert.eval} is killed only when the corpus alone tells it apart.
+ */
+class CorpusMutationTest {
+    private static final Path CORPUS = Path.of("conformance");
+
+    static Stream<Arguments> corpusCases() throws CorpusException {
+        List<RunCase> cases = RunCases.from(Corpus.load(CORPUS).cases());
+        assertFalse(cases.isEmpty(), "the corpus has cases");
+        return cases.stream().map(c -> Arguments.of(c.id(), c));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("corpusCases")
+    void referencePassesTheCase(String id, RunCase c) throws IOException, IutException {
+        try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
+            CaseResult result = runOne(reference, c);
+            assertEquals(CaseStatus.PASSED, result.status(), () -> c.id() + ": " + result.message());
+        }
+    }
+
+    private static CaseResult runOne(ImplementationUnderTest iut, RunCase c) throws IOException, IutException {
+        List<RunCase> one = List.of(c);
+        var info = iut.hello();
+        RunHeader header = RunHeaders.of(info, info.command(), null, CORPUS.toString(), "", one, one,
+                List.of(List.of(), List.of(), List.of()));
+        List<CaseResult> results = new Runner(RunListener.NONE).run(iut, header, one, new ResultSink() {
+            @Override
+            public void header(RunHeader h) {
+            }
+
+            @Override
+            public void accept(CaseResult result) {
+            }
+        });
+        assertEquals(1, results.size());
+        return results.get(0);
+    }
+}
