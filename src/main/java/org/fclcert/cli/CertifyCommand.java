@@ -117,6 +117,11 @@ final class CertifyCommand implements Callable<Integer> {
             + " from (default: drawn anew; every report records it, and the same seed replays the run exactly)")
     Long seed;
 
+    @Option(names = "--no-fresh-evidence", description = "For testing fclcert's harness with fake implementations and"
+            + " corpora: no seed, fresh vectors or disguise, no check of a custom corpus; the results are UNVERIFIED,"
+            + " issue no Basic Level verdict, and report --verify, compare and fclcert:verify refuse them")
+    boolean noFreshEvidence;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
@@ -179,7 +184,7 @@ final class CertifyCommand implements Callable<Integer> {
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
                 .reportsRoot(reproducing ? Certification.scratchReportsRoot() : Certification.DEFAULT_REPORTS_ROOT)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
-                .presentAs(presentAs).budget(budget).seed(seed).build();
+                .presentAs(presentAs).budget(budget).seed(seed).freshEvidence(!noFreshEvidence).build();
         boolean terminal = System.console() != null;
         ProgressLine progress = new ProgressLine(err, terminal, iut.spec, iut.classpath, corpusArgument());
         TerminalHooks hooks = new TerminalHooks(progress, err, terminal);
