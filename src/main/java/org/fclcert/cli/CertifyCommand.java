@@ -313,9 +313,7 @@ final class CertifyCommand implements Callable<Integer> {
         }
         out.println("Basic Level: " + (r.basicLevel().conformant() ? "conformant" : "not conformant") + " ("
                 + r.basicLevel().reason() + ")");
-        if (r.origin() != null && r.origin().provenance() != null) {
-            out.println("Run seed: " + r.origin().provenance().seed() + "; results digest: " + r.origin().digest());
-        }
+
         String axis = r.semantic() != null ? " (language axis)" : "";
         out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
         out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));
