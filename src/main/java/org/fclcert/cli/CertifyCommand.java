@@ -118,6 +118,11 @@ final class CertifyCommand implements Callable<Integer> {
             + " from (default: drawn anew; every report records it, and the same seed replays the run exactly)")
     Long seed;
 
+    @Option(names = "--no-fresh-evidence", description = "For testing fclcert's harness with fake implementations and"
+            + " corpora: no seed, fresh vectors or disguise, no check of a custom corpus; the results are UNVERIFIED,"
+            + " issue no Basic Level verdict, and report --verify, compare and fclcert:verify refuse them")
+    boolean noFreshEvidence;
+
     @Option(names = "--no-probe", description = "Do not measure the Table 11 data check list")
     boolean noProbe;
 
@@ -199,7 +204,7 @@ final class CertifyCommand implements Callable<Integer> {
                 .corpusName(corpusName()).selection(selection).outDir(out).probe(probe)
                 .reportsRoot(reportsRoot)
                 .filters(levels.stream().map(ConformanceLevel::word).toList(), features, cases)
-                .presentAs(presentAs).budget(budget).seed(seed).build();
+                .presentAs(presentAs).budget(budget).seed(seed).freshEvidence(!noFreshEvidence).build();
         Certification.Outcome outcome;
         runStarted = true;
         try {
@@ -334,9 +339,6 @@ final class CertifyCommand implements Callable<Integer> {
             r.origin().warnings().forEach(w -> out.println(TerminalText.visible(w)));
         }
         out.println("Basic Level: " + r.basicLevel().sentence());
-        if (r.origin() != null && r.origin().provenance() != null) {
-            out.println("Run seed: " + r.origin().provenance().seed() + "; results digest: " + r.origin().digest());
-        }
         String axis = r.semantic() != null ? " (language axis)" : "";
         out.println("Standard Extensions realised (Table 9)" + axis + ": " + realised(r, 9));
         out.println("Open Level features realised (Table 10)" + axis + ": " + realised(r, 10));

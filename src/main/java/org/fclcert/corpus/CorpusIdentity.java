@@ -37,7 +37,7 @@ public final class CorpusIdentity {
     }
 
     /**
-     * The ids of the built-in cases of {@code level} (not flagged interpretation, not negative) that {@code corpus}
+     * The ids of the built-in cases of {@code level} (not flagged interpretation, negative ones included) that {@code corpus}
      * does not hold unchanged (same program, vectors, expected error, tolerance and flags); every built-in id when
      * there is no built-in corpus to compare with is not known, so then the answer is a one-element list saying so.
      */
@@ -49,7 +49,7 @@ public final class CorpusIdentity {
                 .collect(Collectors.toMap(CorpusCase::id, Function.identity(), (a, b) -> a));
         List<String> missing = new ArrayList<>();
         for (CorpusCase c : builtIn.cases()) {
-            if (c.level() != level || c.expectReject() || c.interpretation().isPresent()) {
+            if (c.level() != level || c.interpretation().isPresent()) {
                 continue;
             }
             CorpusCase other = mine.get(c.id());

@@ -37,13 +37,13 @@ import org.fclcert.syntax.StrictReader;
  * names are not case-sensitive (IEC 61131-3 B.1.1), so all spellings of one name get the same new name; eval
  * requests and replies are mapped both ways ({@link DisguisedIut}), an exported text is mapped back;</li>
  * <li>rule numbers renumbered one to one (a duplicate stays a duplicate);</li>
- * <li>comments rewritten (positive cases), lines indented anew, and 1 to 3 comment lines put in front, the
+ * <li>comments rewritten (positive cases), lines indented anew, and 1 to 3 blank lines put in front, the
  * expected error line of a negative case moved with them.</li>
  * </ul>
  * Each disguise is checked before it is used: a positive case must read without error and evaluate, on the
  * reference's exact path, to the same values as the corpus text on every vector; a negative case must still
  * have its error, with the same code, at the moved line. Where a step of the disguise fails that check, the
- * weaker disguise without it is used (the leading comment lines alone always keep both), so the text sent never
+ * weaker disguise without it is used (the leading blank lines alone always keep both), so the text sent never
  * equals the corpus text. Not done: reordering declarations, terms and rules (5.2 would allow it).
  */
 public final class Disguise {
@@ -144,10 +144,9 @@ public final class Disguise {
             }
         }
         int shift = 1 + random.nextInt(3);
-        StringBuilder head = new StringBuilder();
-        for (int i = 0; i < shift; i++) {
-            head.append("(* ").append(noise(random, 6 + random.nextInt(20))).append(" *)\n");
-        }
+        // blank lines, not comments: a comment before the first block is itself a reason some libraries refuse a
+        // program (fuzzylite), and the disguise must not add reasons of its own
+        String head = "\n".repeat(shift);
         long commentSeed = random.nextLong();
         long layoutSeed = random.nextLong();
         int ruleBase = 1 + random.nextInt(900);
@@ -165,7 +164,7 @@ public final class Disguise {
                 return new Disguise(renames, spellings, candidate, shift, moved);
             }
         }
-        // the leading comment lines alone: they change neither the meaning nor the error; the error's line is
+        // the leading blank lines alone: they change neither the meaning nor the error; the error's line is
         // where the reference places it (an empty program's error stays at line 1)
         String text = head + c.program();
         Optional<ExpectedError> placed = moved.map(e -> new ExpectedError(e.code(), lineOf(text, e.code()).orElse(e.line())));

@@ -79,10 +79,14 @@ public final class Certification {
      *                    when it runs out the run is stopped, and the cases not run are reported as skipped with the
      *                    reason
      * @param seed        the run seed the fresh vectors and disguises are drawn from ({@code --seed}); null: drawn anew
+     * @param freshEvidence false only to drive fclcert's own harness with fakes ({@code --no-fresh-evidence}): no seed,
+     *                    no fresh vectors, no disguise, no check of a custom corpus; the results are unverifiable, their
+     *                    Basic verdict "not determined", and report --verify, compare and fclcert:verify refuse them
      */
     public record Request(String iutSpec, IutOptions options, String classpath, Corpus corpus, String corpusName,
             CaseSelection selection, Path outDir, Path reportsRoot, Prober.Options probe,
-            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget, Long seed) {
+            List<List<String>> filters, PresentAs presentAs, String rerun, Duration budget, Long seed,
+            boolean freshEvidence) {
 
         public Request {
             budget = budget == null ? Defaults.RUN_BUDGET : budget;
@@ -135,6 +139,7 @@ public final class Certification {
         private String rerun;
         private Duration budget = Defaults.RUN_BUDGET;
         private Long seed;
+        private boolean freshEvidence = true;
 
         private Builder(String iutSpec, Corpus corpus) {
             this.iutSpec = iutSpec;
@@ -212,9 +217,15 @@ public final class Certification {
             return this;
         }
 
+        /** False: run without fresh evidence (see {@link Request}); the results are unverifiable. */
+        public Builder freshEvidence(boolean value) {
+            freshEvidence = value;
+            return this;
+        }
+
         public Request build() {
             return new Request(iutSpec, options, classpath, corpus, corpusName, selection, outDir, reportsRoot,
-                    probe, filters, presentAs, rerun, budget, seed);
+                    probe, filters, presentAs, rerun, budget, seed, freshEvidence);
         }
     }
 
@@ -328,7 +339,7 @@ public final class Certification {
             if (selected.isEmpty()) {
                 throw new NothingSelected(request.corpusName());
             }
-            Provenance.CorpusIdentity corpusIdentity = CorpusCheck.identify(request.corpus());
+            Provenance.CorpusIdentity corpusIdentity = request.freshEvidence() ? CorpusCheck.identify(request.corpus()) : null;
             long seed = request.seed() != null ? request.seed() : RunSeed.fresh();
             // an explicit output directory is locked before the implementation starts: a second run refuses at once
             try (OutputDirectory claimed = request.outDir() != null ? OutputDirectory.claim(request.outDir()) : null;
@@ -336,8 +347,8 @@ public final class Certification {
                 IutInfo info = hello(iut, request.iutSpec());
                 RunHeader plain = RunHeaders.of(info, request.iutSpec(), request.classpath(), request.corpusName(),
                         request.corpus().sha256(), all, selected, request.filtersForReport(), request.rerun())
-                        .withProvenance(Provenance.of(seed, info, request.iutSpec(), request.options().classpath(),
-                                corpusIdentity));
+                        .withProvenance(request.freshEvidence() ? Provenance.of(seed, info, request.iutSpec(),
+                                request.options().classpath(), corpusIdentity) : null);
                 RunHeader header = request.presentAs().resolve(request.iutSpec())
                         .map(d -> plain.presentedAs(d.cliName())).orElse(plain).withIsolation(iut.isolation());
                 Path dir = request.outDir() != null ? request.outDir()
@@ -364,8 +375,11 @@ public final class Certification {
             hooks.started(iut, out.target(), resultsFile);
             Dialect layout = request.presentAs().resolve(request.iutSpec()).orElse(null);
             RecordingIut recording = new RecordingIut(iut);
-            List<CaseResult> done = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout)
-                    .withSeed(RunSeed.parse(header.provenance().seed())).run(recording, header, selected, sink, stop);
+            Runner runner = new Runner(new ReferenceExportCheck(), new Transcripts(recording, dir, listener), layout);
+            if (header.provenance() != null) {
+                runner.withSeed(RunSeed.parse(header.provenance().seed()));
+            }
+            List<CaseResult> done = runner.run(recording, header, selected, sink, stop);
             hooks.casesFinished();
             List<DataCheckEntry> dataCheckList = List.of();
             if (request.probe() != null) {

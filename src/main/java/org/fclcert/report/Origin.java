@@ -60,6 +60,9 @@ public record Origin(Provenance provenance, String endedAt, String digest, Strin
         if (provenance == null) {
             warnings.add("UNVERIFIED: these results carry no run seed and no evidence (written without fresh vectors"
                     + " and disguise); nothing in them can be checked again");
+            basic = new Report.BasicLevel(false, basic.required(), basic.run(), basic.passed(), "not determined: the"
+                    + " results carry no run seed and no evidence, so no verdict can be issued from them ("
+                    + basic.reason() + ")");
         }
         warnings.addAll(moreWarnings);
         Origin origin = new Origin(provenance, seal == null ? null : seal.endedAt(), seal == null ? null : seal.digest(),

@@ -57,6 +57,17 @@ public final class ReportVerifier {
         List<String> inconsistencies = new ArrayList<>();
         List<String> notes = new ArrayList<>();
         ResultsChain.Check chain = ResultsChain.check(name, lines);
+        if (file.header().provenance() == null) {
+            // no seed, no evidence (certify --no-fresh-evidence, or an older fclcert): nothing to judge again; the
+            // report says UNVERIFIED and issues no Basic verdict (Origin), and verify refuses it
+            if (chain.chained() && !chain.intact()) {
+                notes.add(chain.firstBreak());   // no verdict is issued from such results either way
+            }
+            notes.add(name + ": UNVERIFIED: the results carry no run seed and no evidence; the reports issue no verdict");
+            Report report = Origin.apply(ReportBuilder.build(file, generatedAt), null, chain.intact() ? chain.seal() : null,
+                    "not recomputed: the results carry no evidence", List.of());
+            return new Rebuilt(report, inconsistencies, notes);
+        }
         if (!chain.intact()) {
             inconsistencies.add(chain.firstBreak());
         } else if (chain.seal() == null) {
@@ -171,7 +182,10 @@ public final class ReportVerifier {
             return new Verified(List.of(json + ": its generation time '" + written.generatedAt() + "' cannot be read"), null);
         }
         List<String> out = new ArrayList<>(rebuilt.inconsistencies());
-        if (rebuilt.report().origin() == null || rebuilt.report().origin().digest() == null) {
+        if (rebuilt.report().origin().provenance() == null) {
+            out.add(results + ": the results carry no run seed and no evidence: nothing in them can be verified");
+        }
+        if (rebuilt.report().origin().digest() == null) {
             out.addAll(rebuilt.notes());
         }
         if (!out.isEmpty()) {

@@ -53,8 +53,9 @@ class CertifyCommandTest {
     }
 
     private int certify(String iut, String... more) {
+        // the fakes answer sums, which no FCL gives: a harness test, run without fresh evidence (issue 26)
         List<String> args = new java.util.ArrayList<>(List.of("certify", "--iut", iut, "--corpus", CORPUS,
-                "--out", dir.toString()));
+                "--out", dir.toString(), "--no-fresh-evidence"));
         if (!List.of(more).contains("--probe-cap")) {
             args.add("--no-probe");   // the probes have their own tests (ProberTest); keep these quick
         }
@@ -92,7 +93,7 @@ class CertifyCommandTest {
         assertTrue(Files.readString(dir.resolve("report.md")).contains(
                 "`./fclcert certify --iut 'process:python3 src/test/resources/iut/crash_on_fifth_eval.py' --corpus "
                         + CORPUS + " --case B-FB-002`"));
-        assertEquals(5, Files.readAllLines(dir.resolve("results.jsonl")).size(), "a header and four cases");
+        assertEquals(6, Files.readAllLines(dir.resolve("results.jsonl")).size(), "a header, four cases, the end line");
         assertTrue(out.toString().contains("fake 1.0: 4 cases, 2 passed, 1 failed, 1 errored, 0 skipped"), out::toString);
         String md = Files.readString(dir.resolve("report.md"));
         assertTrue(md.contains("\n  - step 1, inputs: a = 2.0, b = 3.0\n"), md);
@@ -228,8 +229,9 @@ class CertifyCommandTest {
     void certifyFillsTheDataCheckListOfResultsAndReports() throws Exception {
         assertEquals(0, certify("reference", "--probe-cap", "8"));
         List<String> lines = java.nio.file.Files.readAllLines(dir.resolve("results.jsonl"));
-        assertTrue(lines.get(lines.size() - 1).startsWith("{\"type\":\"dataCheckList\",\"entries\":[{\"id\":\"data-types\""),
-                lines.get(lines.size() - 1));
+        assertTrue(lines.get(lines.size() - 2).startsWith("{\"type\":\"dataCheckList\",\"entries\":[{\"id\":\"data-types\""),
+                lines.get(lines.size() - 2));
+        assertTrue(lines.get(lines.size() - 1).startsWith("{\"type\":\"end\",\"digest\":"), "the chain's end line last");
         org.fclcert.report.Report r = org.fclcert.report.JsonReport.read(dir.resolve("report.json"));
         assertEquals(22, r.dataCheckList().size());
         assertEquals("8", r.dataCheckList().get(17).value());

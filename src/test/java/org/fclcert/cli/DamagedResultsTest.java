@@ -21,7 +21,7 @@ class DamagedResultsTest {
     @BeforeEach
     void certify() throws Exception {
         Cli run = Cli.run("certify", "--iut", "process:python3 src/test/resources/iut/well_behaved.py",
-                "--corpus", "src/test/resources/corpus-process", "--out", dir.toString(), "--no-probe");
+                "--corpus", "src/test/resources/corpus-process", "--out", dir.toString(), "--no-probe", "--no-fresh-evidence");
         assertEquals(0, run.exitCode(), run.err());
         lines = Files.readAllLines(dir.resolve("results.jsonl"));
         assertTrue(lines.get(0).contains("\"type\":\"run\"") && lines.get(2).contains("\"type\":\"case\""));

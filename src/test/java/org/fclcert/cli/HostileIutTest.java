@@ -61,7 +61,7 @@ class HostileIutTest {
     /** Certifies with the hostile mode, asserts the run ended normally and the five outputs agree; returns the report. */
     private Report certify(String mode, String... more) throws Exception {
         List<String> args = new ArrayList<>(List.of("certify", "--iut", HOSTILE + mode, "--corpus", CORPUS,
-                "--out", dir.toString(), "--no-probe"));
+                "--out", dir.toString(), "--no-probe", "--no-fresh-evidence"));
         args.addAll(List.of(more));
         if (!args.contains("--timeout")) {
             args.addAll(List.of("--timeout", "5s"));
@@ -135,8 +135,8 @@ class HostileIutTest {
         Report r = certify("surrogate-name");
         assertEquals("sur\uFFFDrogate", r.iut().name());
         assertTrue(Files.readString(dir.resolve("report.md")).contains("sur\uFFFDrogate"));
-        assertEquals(1 + IDS.size(), Files.readAllLines(dir.resolve("results.jsonl")).size(),
-                "a header and each case once, no torn or doubled line");
+        assertEquals(1 + IDS.size() + 1, Files.readAllLines(dir.resolve("results.jsonl")).size(),
+                "a header, each case once, no torn or doubled line, the end line");
 
         Report m = certify("surrogate-msg");
         CaseResult c = result(m, "B-FB-001");
@@ -247,7 +247,7 @@ class HostileIutTest {
                 "n".repeat(300), "n".repeat(64));
         for (Map.Entry<String, String> e : expected.entrySet()) {
             Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                    System.getProperty("java.class.path"), "org.fclcert.cli.Main", "certify", "--no-probe", "--corpus",
+                    System.getProperty("java.class.path"), "org.fclcert.cli.Main", "certify", "--no-probe", "--no-fresh-evidence", "--corpus",
                     corpus, "--iut", "process:python3 " + script + " name '" + e.getKey() + "'")
                     .directory(checkout.toFile()).redirectErrorStream(true).start();
             String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

@@ -165,7 +165,8 @@ class InterruptedRunTest {
 
     private void interruptCertify(String signal, boolean wholeGroup, int exitCode) throws Exception {
         Path out = dir.resolve("out");
-        Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe");
+        Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe",
+                "--no-fresh-evidence");
         awaitLines(streaming(out), 2);   // the header and the first case: the second is under way
         signal(signal, wholeGroup ? "-" + p.pid() : String.valueOf(p.pid()));
         assertEquals(exitCode, awaitExit(p), () -> "stderr: " + safeText("stderr"));
@@ -215,7 +216,7 @@ class InterruptedRunTest {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         PrintWriter errWriter = new PrintWriter(err, true, StandardCharsets.UTF_8);
         int exit = Main.run(new PrintWriter(new ByteArrayOutputStream()), errWriter, "certify", "--iut", slow(0.85), "--no-sandbox",
-                "--timeout", "1s", "--budget", "2s", "--corpus", CORPUS, "--out", out.toString(), "--probe-cap", "4");
+                "--timeout", "1s", "--budget", "2s", "--no-fresh-evidence", "--corpus", CORPUS, "--out", out.toString(), "--probe-cap", "4");
         assertEquals(2, exit, err.toString(StandardCharsets.UTF_8));
         Report r = agreeing(out, "not run: the run was stopped: the run budget of 2s ran out");
         assertTrue(err.toString(StandardCharsets.UTF_8).contains("the run was stopped (the run budget of 2s ran out)"),

@@ -73,7 +73,7 @@ class FreshEvidenceTest {
                         c.id() + ": the corpus name '" + w + "' is in the text sent");
             }
         }
-        assertEquals(125, renamedCases);
+        assertEquals(cases.stream().filter(c -> !c.expectReject()).count(), renamedCases, "every positive case is renamed");
     }
 
     private static List<String> declared(RunCase c) {
