@@ -44,7 +44,8 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
             org.fclcert.sandbox.Isolation isolation) {
         public Iut {
             claims = claims == null ? List.of() : List.copyOf(claims);
-            declaredLimits = declaredLimits == null ? Map.of() : Map.copyOf(declaredLimits);
+            declaredLimits = declaredLimits == null ? Map.of()
+                    : java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(declaredLimits));
         }
 
         /** An implementation whose isolation is not recorded (results written before fclcert recorded it). */
@@ -86,7 +87,8 @@ public record RunHeader(Iut iut, Toolkit toolkit, CorpusInfo corpus, Selection s
             @com.fasterxml.jackson.annotation.JsonInclude(com.fasterxml.jackson.annotation.JsonInclude.Include.NON_EMPTY)
             Map<String, Integer> rowCases) {
         public CorpusInfo {
-            rowCases = rowCases == null ? Map.of() : Map.copyOf(rowCases);
+            // in the order given (feature order, and the file's order when read back): Map.copyOf's order changes per JVM
+            rowCases = rowCases == null ? Map.of() : java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(rowCases));
         }
 
         public CorpusInfo(String dir, int cases, String sha256, int basicCases) {
