@@ -103,6 +103,17 @@ final class DisguisedIut implements ImplementationUnderTest {
         return inner.lastEvalMillis();
     }
 
+    /** The breakdowns of the implementation behind the disguise: the harness counts a case's crashes from them. */
+    @Override
+    public org.fclcert.iut.IutHealth health() {
+        return inner.health();
+    }
+
+    @Override
+    public org.fclcert.sandbox.Isolation isolation() {
+        return inner.isolation();
+    }
+
     @Override
     public void close() {
         // the run closes the implementation
