@@ -35,7 +35,9 @@ class FuzzyliteCertificationTest {
         Fuzzylite.assumeInstalled();
         Certification.Request request = Certification.Request.builder("fuzzylite", Corpus.load(Path.of("conformance")))
                 .options(Fuzzylite.options()).corpusName("conformance")
-                .selection(new CaseSelection(Set.of(), Set.of(), CASES)).outDir(out).build();
+                .selection(new CaseSelection(Set.of(), Set.of(), CASES)).outDir(out)
+                // the library's own reaction to the corpus text as written (its lines, its messages): no disguise
+                .freshEvidence(false).build();
         Report report = Certification.run(request, RunListener.NONE).report();
         Map<String, CaseResult> byId = report.cases().stream()
                 .collect(Collectors.toMap(CaseResult::id, Function.identity()));

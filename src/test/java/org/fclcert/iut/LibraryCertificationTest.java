@@ -33,7 +33,9 @@ class LibraryCertificationTest {
     private static Report certify(String spec, List<String> cases, Path out) throws Exception {
         Certification.Request request = Certification.Request.builder(spec, Corpus.load(Path.of("conformance")))
                 .options(IutOptions.defaults().withTimeout(Duration.ofSeconds(20))).corpusName("conformance")
-                .selection(new CaseSelection(Set.of(), Set.of(), cases)).outDir(out).build();
+                .selection(new CaseSelection(Set.of(), Set.of(), cases)).outDir(out)
+                // the library's own reaction to the corpus text as written (its lines, its messages): no disguise
+                .freshEvidence(false).build();
         return Certification.run(request, RunListener.NONE).report();
     }
 
@@ -53,7 +55,8 @@ class LibraryCertificationTest {
         assertEquals("6.0.1", report.iut().version());
         Map<String, CaseResult> cases = byId(report);
         List<CaseResult> positive = report.cases().stream().filter(c -> !c.id().startsWith("N-")).toList();
-        assertEquals(125, positive.size());
+        assertEquals(Corpus.load(Path.of("conformance")).cases().stream().filter(c -> !c.expectReject()).count(),
+                positive.size());
         // as measured by hand with jfuzzylite on the case files: not one positive case loads
         assertTrue(positive.stream().allMatch(c -> c.status() == CaseStatus.FAILED
                 && c.message().startsWith("rejected a program the standard accepts")),

@@ -263,7 +263,7 @@ class LspClientTest {
         assertTrue(flow.contains("RANGE (0 .. 100)") && flow.contains("METHOD : CoGS") && flow.contains("DEFAULT := 0")
                 && flow.contains("terms: shut, open"), flow);
         // 'high' in RULE 2: rising ramp (5, 0) (10, 1), degree 1 from 10 on (the last degree holds beyond)
-        assertEquals("**level IS high**: rising ramp through (5, 0) (10, 1); degree 1 at x ≥ 10",
+        assertEquals("**level IS high**: rising ramp through (4, 0) (10, 1); degree 1 at x ≥ 10",
                 hover(uri, 22, 26).getContents().getRight().getValue());
         // 'open' where declared: a singleton
         assertEquals("**flow IS open**: singleton: degree 1 at 100, 0 elsewhere",
