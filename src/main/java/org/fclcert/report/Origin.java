@@ -46,7 +46,7 @@ public record Origin(Provenance provenance, String endedAt, String digest, Strin
             if (!c.missingBasic().isEmpty()) {
                 List<String> named = c.missingBasic().subList(0, Math.min(5, c.missingBasic().size()));
                 basic = new Report.BasicLevel(false, basic.required(), basic.run(), basic.passed(),
-                        "not determined: the custom corpus does not hold " + c.missingBasic().size() + " of the built-in"
+                        "the custom corpus does not hold " + c.missingBasic().size() + " of the built-in"
                         + " Basic Level cases unchanged (" + String.join(", ", named)
                         + (c.missingBasic().size() > named.size() ? ", …" : "") + "); a Basic Level verdict is issued"
                         + " only when every built-in Basic Level case was run");

@@ -33,7 +33,7 @@ class SharedOutputDirectoryTest {
         StringWriter firstErr = new StringWriter();
         Thread first = new Thread(() -> firstExit.set(Main.run(new PrintWriter(new StringWriter()),
                 new PrintWriter(firstErr), "certify", "--iut", "process:python3 src/test/resources/iut/slow.py 0.3",
-                "--corpus", CORPUS, "--out", out.toString(), "--no-probe")));
+                "--corpus", CORPUS, "--out", out.toString(), "--no-probe", "--no-fresh-evidence")));
         first.start();
         Path lock = dir.resolve(".out.lock");
         long until = System.nanoTime() + 30_000_000_000L;
@@ -46,7 +46,7 @@ class SharedOutputDirectoryTest {
         long start = System.nanoTime();
         int exit = Main.run(new PrintWriter(new StringWriter()), new PrintWriter(err), "certify", "--iut",
                 "process:python3 src/test/resources/iut/well_behaved.py", "--corpus", CORPUS, "--out", out.toString(),
-                "--no-probe");
+                "--no-probe", "--no-fresh-evidence");
         long millis = (System.nanoTime() - start) / 1_000_000;
         assertEquals(2, exit, err.toString());
         assertTrue(err.toString().contains("is in use by another fclcert run (pid " + ProcessHandle.current().pid()

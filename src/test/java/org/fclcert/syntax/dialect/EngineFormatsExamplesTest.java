@@ -237,7 +237,8 @@ class EngineFormatsExamplesTest {
                 double[] y = evaluate(back.program().get(), row);
                 for (int k = 0; k < x.length; k++) {
                     if (!Double.isNaN(x[k])) {
-                        assertEquals(x[k], y[k], 0.0, name(p) + " output " + k + " at " + java.util.Arrays.toString(row));
+                        // the same meaning evaluated from two texts: equal but for the last bits of a different order of operations
+                        assertEquals(x[k], y[k], 4 * Math.ulp(Math.max(Math.abs(x[k]), 1.0)), name(p) + " output " + k + " at " + java.util.Arrays.toString(row));
                         values++;
                     }
                 }
