@@ -69,7 +69,7 @@ class SandboxedRunTest {
 
     private Report certify(Path outDir, String iut, String... more) throws Exception {
         List<String> args = new ArrayList<>(List.of("certify", "--iut", iut, "--corpus", CORPUS,
-                "--out", outDir.toString(), "--no-probe", "--timeout", "10s"));
+                "--out", outDir.toString(), "--no-probe", "--timeout", "10s", "--no-fresh-evidence"));
         args.addAll(List.of(more));
         int exit = Main.run(args.toArray(String[]::new));
         assertEquals(0, exit, () -> "exit " + exit + "; stderr: " + err);
