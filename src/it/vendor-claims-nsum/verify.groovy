@@ -6,6 +6,7 @@ assert !log.contains('claimed E-ACCU-BSUM')
 assert log.contains('BUILD FAILURE')
 // the reports name the Maven command that reruns a case, not a ./fclcert launcher a Maven user does not have
 def md = new File(basedir, 'target/fclcert-reports/report.md').text
-assert md.contains('reproduce: `mvn verify -Dfclcert.cases=E-ACCU-NSUM-001`')
+// the run's seed too, so that the rerun sends the same disguise and fresh vectors
+assert md.contains('reproduce: `mvn verify -Dfclcert.cases=E-ACCU-NSUM-001 -Dfclcert.seed=')
 assert !md.contains('./fclcert certify')
 assert new File(basedir, 'target/fclcert-reports/report.html').text.contains('mvn verify -Dfclcert.cases=E-ACCU-NSUM-001')
