@@ -1,15 +1,8 @@
 package org.fclcert.check;
 
 import java.util.List;
-import java.util.function.Supplier;
 import java.util.Optional;
-import org.fclcert.model.Condition;
 import org.fclcert.model.FunctionBlock;
-import org.fclcert.model.Names;
-import org.fclcert.model.Rule;
-import org.fclcert.model.RuleBlock;
-import org.fclcert.model.SourceLocation;
-import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Term;
 
 /**
@@ -32,35 +25,23 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
-        for (RuleBlock rb : block.ruleBlocks()) {
-            for (Rule rule : rb.rules()) {
-                for (Condition c : scope.subconditions(rule)) {
-                    if (c instanceof Condition.TermSubcondition t && !t.any()) {   // 'x is any' names no term
-                        check(scope, scope.conditionTerms(t.variable()), t.variable(), t.term(), true,
-                                () -> Describe.subcondition(t), t.location(), sink);
-                    }
-                }
-                for (Subconclusion s : rule.conclusion()) {
-                    if (s.term().isPresent()) {
-                        check(scope, scope.conclusionTerms(s.variable()), s.variable(), s.term().get(), false,
-                                () -> Describe.subconclusion(s), s.location(), sink);
-                    }
-                }
-            }
+        for (TermUse use : TermUse.of(scope)) {
+            check(scope, use, sink);
         }
     }
 
-    private void check(Scope scope, Optional<List<Term>> terms, String variable, String term, boolean inCondition,
-            Supplier<String> element, SourceLocation at, DiagnosticSink sink) {
+    private void check(Scope scope, TermUse use, DiagnosticSink sink) {
+        Optional<List<Term>> terms = use.terms();
+        String term = use.term();
         if (terms.isEmpty() || terms.get().isEmpty() || Scope.hasTerm(terms.get(), term)) {
             return;
         }
-        List<String> owners = scope.ownersOfTerm(term, variable, inCondition);
+        List<String> owners = scope.ownersOfTerm(term, use.variable(), use.inCondition());
         if (owners.isEmpty()) {
             return;
         }
         String ownedBy = String.join(" and ", owners.stream().map(scope::describe).toList());
-        sink.report(finding(at, element.get() + ": '" + term + "' is a term of " + ownedBy + ", not of "
-                + scope.describe(variable) + " (its terms: " + Describe.termNames(terms.get()) + ")"));
+        sink.report(finding(use.location(), use.element().get() + ": '" + term + "' is a term of " + ownedBy + ", not of "
+                + scope.describe(use.variable()) + " (its terms: " + Describe.termNames(terms.get()) + ")"));
     }
 }
