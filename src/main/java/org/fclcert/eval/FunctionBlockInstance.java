@@ -476,13 +476,15 @@ public final class FunctionBlockInstance {
         double y1 = y[i];
         double d = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
         double e = Math.max(repY[s][i - 1], repY[s][i]);
-        if (y0 != y1) {
+        if (y0 != y1 && (uRep != 0 || repX[s][i - 1] != 0 || repX[s][i] != 0)) {
             // the exact inputs may sit up to the representation errors away: t = (u - x0)/(x1 - x0) moves by at most
             // 2·(δu + δx0 + δx1)/(x1 - x0) while the perturbation is under a quarter of the width
             double shift = uRep + repX[s][i - 1] + repX[s][i];
             double width = x[i] - x[i - 1];
             e = 4 * shift < width ? e + Math.abs(y1 - y0) * 2 * shift / width + 2 * Norms.R
                     : Double.POSITIVE_INFINITY;
+        } else if (y0 != y1) {
+            e += 2 * Norms.R;           // the interpolation's rounding alone (its inputs are exact)
         }
         termErrors[t] = e;
         return d;
@@ -524,8 +526,11 @@ public final class FunctionBlockInstance {
             bareErrors[j] = 0;
         }
         ConditionCode[] conditions = rb.conditions();
+        AndAlgorithm and = rb.and();
+        OrAlgorithm or = rb.or();
         for (int r = 0; r < conditions.length; r++) {
-            double d = aggregate(conditions[r], rb.and(), rb.or());
+            ConditionCode code = conditions[r];
+            double d = code.flatTerms > 0 ? aggregateTerms(code, and, or) : aggregate(code, and, or);
             double ruleDegree = d;
             double ruleError = stackErrors[0];
             double e = ruleError;
@@ -647,6 +652,40 @@ public final class FunctionBlockInstance {
             }
         }
         return st[0];
+    }
+
+    /**
+     * {@link #aggregate} for one AND or OR of terms, folded in the same order without the stack. An AND by MIN or
+     * PROD stops at an exact 0: every later step would give an exact 0 again.
+     */
+    private double aggregateTerms(ConditionCode code, AndAlgorithm and, OrAlgorithm or) {
+        int[] ops = code.ops;
+        int[] args = code.args;
+        int n = code.flatTerms;
+        boolean isAnd = n > 1 && ops[n] == ConditionCode.AND;
+        boolean absorbs = isAnd && (and == AndAlgorithm.MIN || and == AndAlgorithm.PROD);
+        double acc = termDegrees[args[0]];
+        double e = termErrors[args[0]];
+        if (ops[0] == ConditionCode.TERM_NOT) {
+            e = Norms.notError(acc, e);
+            acc = 1.0 - acc;
+        }
+        for (int j = 1; j < n; j++) {
+            if (absorbs && acc == 0 && e == 0) {
+                break;
+            }
+            double y = termDegrees[args[j]];
+            double ey = termErrors[args[j]];
+            if (ops[j] == ConditionCode.TERM_NOT) {
+                ey = Norms.notError(y, ey);
+                y = 1.0 - y;
+            }
+            double r = isAnd ? Norms.and(and, acc, y) : Norms.or(or, acc, y);
+            e = isAnd ? Norms.andError(and, acc, e, y, ey, r) : Norms.orError(or, acc, e, y, ey, r);
+            acc = r;
+        }
+        stackErrors[0] = e;
+        return acc;
     }
 
     private static int fold(double[] st, double[] er, int sp, int n, boolean isAnd, AndAlgorithm and, OrAlgorithm or) {
@@ -959,7 +998,7 @@ public final class FunctionBlockInstance {
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
     private double pointSet(OutputPlan o, Trace trace) throws EvaluationException {
-        double spread = collect(o, set.act);
+        double spread = collect(o, set.act, true);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
         if (!o.hasRange()) {
@@ -1127,8 +1166,9 @@ public final class FunctionBlockInstance {
      * The contributions to o's set that fired (degree · weight &gt; 0), in place of those collected before; decides
      * for each whether it fired, and returns the bound of the accumulated degree (see {@link #decideSet}).
      */
-    private double collect(OutputPlan o, Activations into) {
+    private double collect(OutputPlan o, Activations into, boolean merge) {
         into.clear();
+        merge &= o.accumulation() == AccumulationMethod.MAX;
         int[] cs = o.contributions();
         double largest = 0;
         double total = 0;
@@ -1140,7 +1180,9 @@ public final class FunctionBlockInstance {
             if (!(dw > e) && !(dw == 0 && e == 0)) {
                 undecided("whether a rule fired");
             }
-            if (dw > 0) {
+            if (dw > 0 && merge) {
+                into.addUnderMax(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
+            } else if (dw > 0) {
                 into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
             }
             largest = Math.max(largest, e);
@@ -1155,7 +1197,7 @@ public final class FunctionBlockInstance {
 
     /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
     private double smoothSet(OutputPlan o, SmoothSet smooth, Trace trace) {
-        collect(o, smooth.act);
+        collect(o, smooth.act, false);
         double result = smooth.defuzzify(o.method(), o.accumulation(), o.rangeMin(), o.rangeMax(), plan.shapes,
                 curX, curY);
         // the exact path integrates the same way on its own degrees: a .5 within a billionth is left to it
