@@ -66,6 +66,10 @@ public final class FunctionBlockInstance {
     private final double[] slotErrors;
     /** The slot of each VAR_INPUT, in declaration order. */
     private final int[] inputSlots;
+    /** Per slot: its data type's integer flag and range, read by {@link #store} without the DataType. */
+    private final boolean[] integerSlot;
+    private final double[] slotMin;
+    private final double[] slotMax;
     private long evaluations;
     private long fallbacks;
     private long undecidedWithoutExact;
@@ -86,6 +90,22 @@ public final class FunctionBlockInstance {
      * conclusion on the same variable wrote to it during the rule blocks.
      */
     private final double[] previous;
+    /**
+     * Per rule block, per rule: whether an exact 0 as its first term's degree settles the rule (a lone term, or an
+     * AND by MIN or PROD of terms) and its subconclusions are plain contributions (constant weight, no hedge, not
+     * chained), so that {@link #runRuleBlock} writes their zeros without the steps. Most rules of a large rule
+     * base are settled so: their first input's term is 0 there.
+     */
+    private final java.util.IdentityHashMap<RuleBlockPlan, ZeroSkip> zeroSkip = new java.util.IdentityHashMap<>();
+
+    /**
+     * The rules {@link #runRuleBlock} may settle by an exact 0, in flat arrays (a large rule base is walked without
+     * touching its condition and subconclusion objects): per rule the degree index of its first term, or -1; the
+     * range of its subconclusions in {@code contribution} and {@code weight}.
+     */
+    private record ZeroSkip(int[] firstTerm, int[] from, int[] contribution, double[] weight) {
+    }
+
     /** Shapes with points from variables, re-read at each evaluation. */
     private final int[] variableShapes;
 
@@ -100,6 +120,14 @@ public final class FunctionBlockInstance {
         this.before = new double[values.length];
         this.slotErrors = new double[values.length];
         this.inputSlots = plan.inputNames.stream().mapToInt(plan.slotByName::get).toArray();
+        this.integerSlot = new boolean[values.length];
+        this.slotMin = new double[values.length];
+        this.slotMax = new double[values.length];
+        for (int i = 0; i < values.length; i++) {
+            integerSlot[i] = plan.types[i].isInteger();
+            slotMin[i] = plan.types[i].min();
+            slotMax[i] = plan.types[i].max();
+        }
         this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         this.termErrors = new double[termDegrees.length];
         int shapes = plan.shapes.length;
@@ -141,10 +169,47 @@ public final class FunctionBlockInstance {
         this.bounds = new double[plan.outputs.length];
         this.singletonValue = new double[terms];
         this.previous = new double[plan.outputs.length];
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            zeroSkip.put(rb, zeroSkip(rb));
+        }
         this.smoothSets = new SmoothSet[plan.outputs.length];
         for (int i = 0; i < smoothSets.length; i++) {
             smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
         }
+    }
+
+    private ZeroSkip zeroSkip(RuleBlockPlan rb) {
+        boolean absorbs = rb.and() == AndAlgorithm.MIN || rb.and() == AndAlgorithm.PROD;
+        int rules = rb.conditions().length;
+        int[] first = new int[rules];
+        int[] from = new int[rules + 1];
+        int total = 0;
+        for (SubconclusionPlan[] scs : rb.conclusions()) {
+            total += scs.length;
+        }
+        int[] contribution = new int[total];
+        double[] weight = new double[total];
+        int k = 0;
+        for (int r = 0; r < rules; r++) {
+            ConditionCode code = rb.conditions()[r];
+            int n = code.flatTerms;
+            boolean ok = n > 0 && code.ops[0] == ConditionCode.TERM
+                    && (n == 1 || code.ops[n] == ConditionCode.AND && absorbs);
+            for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                int c = sc.contribution();
+                ok &= c >= 0 && sc.weightSlot() < 0
+                        && (plan.contributionHedges.length == 0 || plan.contributionHedges[c] == null)
+                        && (plan.chainedDegree.length == 0 || plan.chainedDegree[c] < 0);
+            }
+            first[r] = ok ? code.args[0] : -1;
+            from[r] = k;
+            for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                contribution[k] = sc.contribution();
+                weight[k++] = sc.weightConst();
+            }
+        }
+        from[rules] = k;
+        return new ZeroSkip(first, from, contribution, weight);
     }
 
     /** The function block's name as declared. */
@@ -396,9 +461,9 @@ public final class FunctionBlockInstance {
 
     /** Writes a value, converting to the variable's integer type (8.: half away from zero). */
     private double store(int slot, double value) throws EvaluationException {
-        DataType type = plan.types[slot];
-        double v = type.isInteger() ? Conversions.roundHalfAwayFromZero(value) : value;
-        if (v < type.min() || v > type.max()) {
+        double v = integerSlot[slot] ? Conversions.roundHalfAwayFromZero(value) : value;
+        if (v < slotMin[slot] || v > slotMax[slot]) {
+            DataType type = plan.types[slot];
             throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
@@ -444,13 +509,9 @@ public final class FunctionBlockInstance {
         Shape shape = plan.shapes[s];
         double[] x = curX[s];
         double[] y = curY[s];
-        if (shape.singleton) {
-            termErrors[t] = 0;
-            return u == x[0] ? 1.0 : 0.0;
-        }
-        if (shape.kind != null) {
-            termErrors[t] = 0;              // the exact path takes the same double formula's value
-            return shape.kind.degree(shape.params, u);
+        if (shape.singleton || shape.kind != null) {
+            termErrors[t] = 0;              // a named shape: the exact path takes the same double formula's value
+            return shape.singleton ? (u == x[0] ? 1.0 : 0.0) : shape.kind.degree(shape.params, u);
         }
         int n = shape.n;
         if (u < x[0]) {
@@ -463,14 +524,7 @@ public final class FunctionBlockInstance {
         }
         int i = n <= 8 ? Pwl.linearLowerBound(x, u) : Pwl.lowerBound(x, n, u);
         if (x[i] == u) {
-            double max = y[i];
-            double e = repY[s][i];
-            for (int j = i + 1; j < n && x[j] == u; j++) {
-                max = Math.max(max, y[j]);
-                e = Math.max(e, repY[s][j]);
-            }
-            termErrors[t] = e;
-            return max;
+            return degreeAtPoint(s, i, u, t);
         }
         double y0 = y[i - 1];
         double y1 = y[i];
@@ -490,16 +544,31 @@ public final class FunctionBlockInstance {
         return d;
     }
 
+    /** {@link #degree} at a point of the shape (the largest degree of the points at u, a jump). */
+    private double degreeAtPoint(int s, int i, double u, int t) {
+        double[] x = curX[s];
+        double[] y = curY[s];
+        double max = y[i];
+        double e = repY[s][i];
+        for (int j = i + 1; j < x.length && x[j] == u; j++) {
+            max = Math.max(max, y[j]);
+            e = Math.max(e, repY[s][j]);
+        }
+        termErrors[t] = e;
+        return max;
+    }
+
     /**
      * The distance between a double and the shortest decimal that reads as it (the exact path's reading): 0 for
      * an integer below 2^53 and for a multiple of 1/1024 below 2^20 (their decimals are exact), else half an ulp.
      */
     static double representation(double v) {
         double a = Math.abs(v);
-        if (a < 0x1.0p53 && v == Math.rint(v) || a < 0x1.0p20 && v * 1024 == Math.rint(v * 1024)) {
-            return 0;
+        if (a < 0x1.0p20) {
+            double s = a * 1024;         // below 2^30: the conversion to long is exact for an integer
+            return s == (double) (long) s ? 0 : Math.ulp(v) * 0.5;
         }
-        return Math.ulp(v) * 0.5;
+        return a < 0x1.0p53 && a == (double) (long) a ? 0 : Math.ulp(v) * 0.5;
     }
 
     /**
@@ -528,7 +597,21 @@ public final class FunctionBlockInstance {
         ConditionCode[] conditions = rb.conditions();
         AndAlgorithm and = rb.and();
         OrAlgorithm or = rb.or();
+        ZeroSkip skip = zeroSkip.get(rb);
+        int[] first = skip.firstTerm;
         for (int r = 0; r < conditions.length; r++) {
+            int t0 = first[r];
+            if (t0 >= 0 && trace == null && termDegrees[t0] == 0 && termErrors[t0] == 0) {
+                // what the steps below give for an exact 0 (aggregateTerms stops at it): d = 0, w·d bound 0
+                for (int k = skip.from[r]; k < skip.from[r + 1]; k++) {
+                    int c = skip.contribution[k];
+                    contributionDegree[c] = 0;
+                    contributionWeight[c] = skip.weight[k];
+                    contributionError[c] = 0;
+                    contributionDegreeError[c] = 0;
+                }
+                continue;
+            }
             ConditionCode code = conditions[r];
             double d = code.flatTerms > 0 ? aggregateTerms(code, and, or) : aggregate(code, and, or);
             double ruleDegree = d;
