@@ -48,6 +48,25 @@ final class Activations {
         n++;
     }
 
+    /**
+     * Adds as {@link #add(int, double, double, ActivationMethod)}, or, for MIN or PROD activation, raises the level of
+     * a contribution already added on the same shape with the same activation and weight. Only for MAX
+     * accumulation: there w·min(a, μ) max w·min(b, μ) = w·min(max(a, b), μ), and the same with PROD, exactly in
+     * doubles too (each rounding is monotonic), so the set is the same with fewer contributions.
+     */
+    void addUnderMax(int shapeIndex, double activationLevel, double ruleWeight, ActivationMethod activation) {
+        if (activation.standard()) {
+            boolean byProd = activation == ActivationMethod.PROD;
+            for (int j = 0; j < n; j++) {
+                if (shape[j] == shapeIndex && norm[j] == null && prod[j] == byProd && weight[j] == ruleWeight) {
+                    level[j] = Math.max(level[j], activationLevel);
+                    return;
+                }
+            }
+        }
+        add(shapeIndex, activationLevel, ruleWeight, activation);
+    }
+
     /** A.15 with Table 4: contribution j at membership degree mu; the weight multiplies the result of activation. */
     double activate(int j, double mu) {
         double l = level[j];

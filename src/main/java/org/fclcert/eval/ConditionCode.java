@@ -25,11 +25,30 @@ final class ConditionCode {
     final int[] ops;
     final int[] args;
     final int maxStack;
+    /**
+     * The number of operands when the code is one term (negated or not) or one AND or OR of terms (the usual
+     * rule: {@code TERM… AND n}), which the evaluator folds without the stack; else 0.
+     */
+    final int flatTerms;
 
     private ConditionCode(int[] ops, int[] args, int maxStack) {
         this.ops = ops;
         this.args = args;
         this.maxStack = maxStack;
+        this.flatTerms = flatTerms(ops, args);
+    }
+
+    private static int flatTerms(int[] ops, int[] args) {
+        int n = ops.length == 1 ? 1 : ops.length - 1;
+        if (ops.length == 0 || ops.length > 1 && (ops[n] != AND && ops[n] != OR || args[n] != n)) {
+            return 0;
+        }
+        for (int i = 0; i < n; i++) {
+            if (ops[i] != TERM && ops[i] != TERM_NOT) {
+                return 0;
+            }
+        }
+        return n;
     }
 
     /**

@@ -66,6 +66,10 @@ public final class FunctionBlockInstance {
     private final double[] slotErrors;
     /** The slot of each VAR_INPUT, in declaration order. */
     private final int[] inputSlots;
+    /** Per slot: its data type's integer flag and range, read by {@link #store} without the DataType. */
+    private final boolean[] integerSlot;
+    private final double[] slotMin;
+    private final double[] slotMax;
     private long evaluations;
     private long fallbacks;
     private long undecidedWithoutExact;
@@ -86,6 +90,22 @@ public final class FunctionBlockInstance {
      * conclusion on the same variable wrote to it during the rule blocks.
      */
     private final double[] previous;
+    /**
+     * Per rule block, per rule: whether an exact 0 as its first term's degree settles the rule (a lone term, or an
+     * AND by MIN or PROD of terms) and its subconclusions are plain contributions (constant weight, no hedge, not
+     * chained), so that {@link #runRuleBlock} writes their zeros without the steps. Most rules of a large rule
+     * base are settled so: their first input's term is 0 there.
+     */
+    private final java.util.IdentityHashMap<RuleBlockPlan, ZeroSkip> zeroSkip = new java.util.IdentityHashMap<>();
+
+    /**
+     * The rules {@link #runRuleBlock} may settle by an exact 0, in flat arrays (a large rule base is walked without
+     * touching its condition and subconclusion objects): per rule the degree index of its first term, or -1; the
+     * range of its subconclusions in {@code contribution} and {@code weight}.
+     */
+    private record ZeroSkip(int[] firstTerm, int[] from, int[] contribution, double[] weight) {
+    }
+
     /** Shapes with points from variables, re-read at each evaluation. */
     private final int[] variableShapes;
 
@@ -100,6 +120,14 @@ public final class FunctionBlockInstance {
         this.before = new double[values.length];
         this.slotErrors = new double[values.length];
         this.inputSlots = plan.inputNames.stream().mapToInt(plan.slotByName::get).toArray();
+        this.integerSlot = new boolean[values.length];
+        this.slotMin = new double[values.length];
+        this.slotMax = new double[values.length];
+        for (int i = 0; i < values.length; i++) {
+            integerSlot[i] = plan.types[i].isInteger();
+            slotMin[i] = plan.types[i].min();
+            slotMax[i] = plan.types[i].max();
+        }
         this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         this.termErrors = new double[termDegrees.length];
         int shapes = plan.shapes.length;
@@ -141,10 +169,47 @@ public final class FunctionBlockInstance {
         this.bounds = new double[plan.outputs.length];
         this.singletonValue = new double[terms];
         this.previous = new double[plan.outputs.length];
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            zeroSkip.put(rb, zeroSkip(rb));
+        }
         this.smoothSets = new SmoothSet[plan.outputs.length];
         for (int i = 0; i < smoothSets.length; i++) {
             smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
         }
+    }
+
+    private ZeroSkip zeroSkip(RuleBlockPlan rb) {
+        boolean absorbs = rb.and() == AndAlgorithm.MIN || rb.and() == AndAlgorithm.PROD;
+        int rules = rb.conditions().length;
+        int[] first = new int[rules];
+        int[] from = new int[rules + 1];
+        int total = 0;
+        for (SubconclusionPlan[] scs : rb.conclusions()) {
+            total += scs.length;
+        }
+        int[] contribution = new int[total];
+        double[] weight = new double[total];
+        int k = 0;
+        for (int r = 0; r < rules; r++) {
+            ConditionCode code = rb.conditions()[r];
+            int n = code.flatTerms;
+            boolean ok = n > 0 && code.ops[0] == ConditionCode.TERM
+                    && (n == 1 || code.ops[n] == ConditionCode.AND && absorbs);
+            for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                int c = sc.contribution();
+                ok &= c >= 0 && sc.weightSlot() < 0
+                        && (plan.contributionHedges.length == 0 || plan.contributionHedges[c] == null)
+                        && (plan.chainedDegree.length == 0 || plan.chainedDegree[c] < 0);
+            }
+            first[r] = ok ? code.args[0] : -1;
+            from[r] = k;
+            for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                contribution[k] = sc.contribution();
+                weight[k++] = sc.weightConst();
+            }
+        }
+        from[rules] = k;
+        return new ZeroSkip(first, from, contribution, weight);
     }
 
     /** The function block's name as declared. */
@@ -396,9 +461,9 @@ public final class FunctionBlockInstance {
 
     /** Writes a value, converting to the variable's integer type (8.: half away from zero). */
     private double store(int slot, double value) throws EvaluationException {
-        DataType type = plan.types[slot];
-        double v = type.isInteger() ? Conversions.roundHalfAwayFromZero(value) : value;
-        if (v < type.min() || v > type.max()) {
+        double v = integerSlot[slot] ? Conversions.roundHalfAwayFromZero(value) : value;
+        if (v < slotMin[slot] || v > slotMax[slot]) {
+            DataType type = plan.types[slot];
             throw new EvaluationException(EvaluationCode.OUT_OF_RANGE, "value " + value + " of '"
                     + plan.variableNames[slot] + "' does not fit its data type " + type);
         }
@@ -444,13 +509,9 @@ public final class FunctionBlockInstance {
         Shape shape = plan.shapes[s];
         double[] x = curX[s];
         double[] y = curY[s];
-        if (shape.singleton) {
-            termErrors[t] = 0;
-            return u == x[0] ? 1.0 : 0.0;
-        }
-        if (shape.kind != null) {
-            termErrors[t] = 0;              // the exact path takes the same double formula's value
-            return shape.kind.degree(shape.params, u);
+        if (shape.singleton || shape.kind != null) {
+            termErrors[t] = 0;              // a named shape: the exact path takes the same double formula's value
+            return shape.singleton ? (u == x[0] ? 1.0 : 0.0) : shape.kind.degree(shape.params, u);
         }
         int n = shape.n;
         if (u < x[0]) {
@@ -463,29 +524,38 @@ public final class FunctionBlockInstance {
         }
         int i = n <= 8 ? Pwl.linearLowerBound(x, u) : Pwl.lowerBound(x, n, u);
         if (x[i] == u) {
-            double max = y[i];
-            double e = repY[s][i];
-            for (int j = i + 1; j < n && x[j] == u; j++) {
-                max = Math.max(max, y[j]);
-                e = Math.max(e, repY[s][j]);
-            }
-            termErrors[t] = e;
-            return max;
+            return degreeAtPoint(s, i, u, t);
         }
         double y0 = y[i - 1];
         double y1 = y[i];
         double d = Pwl.interpolate(x[i - 1], y0, x[i], y1, u);
         double e = Math.max(repY[s][i - 1], repY[s][i]);
-        if (y0 != y1) {
+        if (y0 != y1 && (uRep != 0 || repX[s][i - 1] != 0 || repX[s][i] != 0)) {
             // the exact inputs may sit up to the representation errors away: t = (u - x0)/(x1 - x0) moves by at most
             // 2·(δu + δx0 + δx1)/(x1 - x0) while the perturbation is under a quarter of the width
             double shift = uRep + repX[s][i - 1] + repX[s][i];
             double width = x[i] - x[i - 1];
             e = 4 * shift < width ? e + Math.abs(y1 - y0) * 2 * shift / width + 2 * Norms.R
                     : Double.POSITIVE_INFINITY;
+        } else if (y0 != y1) {
+            e += 2 * Norms.R;           // the interpolation's rounding alone (its inputs are exact)
         }
         termErrors[t] = e;
         return d;
+    }
+
+    /** {@link #degree} at a point of the shape (the largest degree of the points at u, a jump). */
+    private double degreeAtPoint(int s, int i, double u, int t) {
+        double[] x = curX[s];
+        double[] y = curY[s];
+        double max = y[i];
+        double e = repY[s][i];
+        for (int j = i + 1; j < x.length && x[j] == u; j++) {
+            max = Math.max(max, y[j]);
+            e = Math.max(e, repY[s][j]);
+        }
+        termErrors[t] = e;
+        return max;
     }
 
     /**
@@ -494,10 +564,11 @@ public final class FunctionBlockInstance {
      */
     static double representation(double v) {
         double a = Math.abs(v);
-        if (a < 0x1.0p53 && v == Math.rint(v) || a < 0x1.0p20 && v * 1024 == Math.rint(v * 1024)) {
-            return 0;
+        if (a < 0x1.0p20) {
+            double s = a * 1024;         // below 2^30: the conversion to long is exact for an integer
+            return s == (double) (long) s ? 0 : Math.ulp(v) * 0.5;
         }
-        return Math.ulp(v) * 0.5;
+        return a < 0x1.0p53 && a == (double) (long) a ? 0 : Math.ulp(v) * 0.5;
     }
 
     /**
@@ -524,8 +595,25 @@ public final class FunctionBlockInstance {
             bareErrors[j] = 0;
         }
         ConditionCode[] conditions = rb.conditions();
+        AndAlgorithm and = rb.and();
+        OrAlgorithm or = rb.or();
+        ZeroSkip skip = zeroSkip.get(rb);
+        int[] first = skip.firstTerm;
         for (int r = 0; r < conditions.length; r++) {
-            double d = aggregate(conditions[r], rb.and(), rb.or());
+            int t0 = first[r];
+            if (t0 >= 0 && trace == null && termDegrees[t0] == 0 && termErrors[t0] == 0) {
+                // what the steps below give for an exact 0 (aggregateTerms stops at it): d = 0, w·d bound 0
+                for (int k = skip.from[r]; k < skip.from[r + 1]; k++) {
+                    int c = skip.contribution[k];
+                    contributionDegree[c] = 0;
+                    contributionWeight[c] = skip.weight[k];
+                    contributionError[c] = 0;
+                    contributionDegreeError[c] = 0;
+                }
+                continue;
+            }
+            ConditionCode code = conditions[r];
+            double d = code.flatTerms > 0 ? aggregateTerms(code, and, or) : aggregate(code, and, or);
             double ruleDegree = d;
             double ruleError = stackErrors[0];
             double e = ruleError;
@@ -647,6 +735,40 @@ public final class FunctionBlockInstance {
             }
         }
         return st[0];
+    }
+
+    /**
+     * {@link #aggregate} for one AND or OR of terms, folded in the same order without the stack. An AND by MIN or
+     * PROD stops at an exact 0: every later step would give an exact 0 again.
+     */
+    private double aggregateTerms(ConditionCode code, AndAlgorithm and, OrAlgorithm or) {
+        int[] ops = code.ops;
+        int[] args = code.args;
+        int n = code.flatTerms;
+        boolean isAnd = n > 1 && ops[n] == ConditionCode.AND;
+        boolean absorbs = isAnd && (and == AndAlgorithm.MIN || and == AndAlgorithm.PROD);
+        double acc = termDegrees[args[0]];
+        double e = termErrors[args[0]];
+        if (ops[0] == ConditionCode.TERM_NOT) {
+            e = Norms.notError(acc, e);
+            acc = 1.0 - acc;
+        }
+        for (int j = 1; j < n; j++) {
+            if (absorbs && acc == 0 && e == 0) {
+                break;
+            }
+            double y = termDegrees[args[j]];
+            double ey = termErrors[args[j]];
+            if (ops[j] == ConditionCode.TERM_NOT) {
+                ey = Norms.notError(y, ey);
+                y = 1.0 - y;
+            }
+            double r = isAnd ? Norms.and(and, acc, y) : Norms.or(or, acc, y);
+            e = isAnd ? Norms.andError(and, acc, e, y, ey, r) : Norms.orError(or, acc, e, y, ey, r);
+            acc = r;
+        }
+        stackErrors[0] = e;
+        return acc;
     }
 
     private static int fold(double[] st, double[] er, int sp, int n, boolean isAnd, AndAlgorithm and, OrAlgorithm or) {
@@ -959,7 +1081,7 @@ public final class FunctionBlockInstance {
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
     private double pointSet(OutputPlan o, Trace trace) throws EvaluationException {
-        double spread = collect(o, set.act);
+        double spread = collect(o, set.act, true);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
         if (!o.hasRange()) {
@@ -1127,8 +1249,9 @@ public final class FunctionBlockInstance {
      * The contributions to o's set that fired (degree · weight &gt; 0), in place of those collected before; decides
      * for each whether it fired, and returns the bound of the accumulated degree (see {@link #decideSet}).
      */
-    private double collect(OutputPlan o, Activations into) {
+    private double collect(OutputPlan o, Activations into, boolean merge) {
         into.clear();
+        merge &= o.accumulation() == AccumulationMethod.MAX;
         int[] cs = o.contributions();
         double largest = 0;
         double total = 0;
@@ -1140,7 +1263,9 @@ public final class FunctionBlockInstance {
             if (!(dw > e) && !(dw == 0 && e == 0)) {
                 undecided("whether a rule fired");
             }
-            if (dw > 0) {
+            if (dw > 0 && merge) {
+                into.addUnderMax(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
+            } else if (dw > 0) {
                 into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
             }
             largest = Math.max(largest, e);
@@ -1155,7 +1280,7 @@ public final class FunctionBlockInstance {
 
     /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
     private double smoothSet(OutputPlan o, SmoothSet smooth, Trace trace) {
-        collect(o, smooth.act);
+        collect(o, smooth.act, false);
         double result = smooth.defuzzify(o.method(), o.accumulation(), o.rangeMin(), o.rangeMax(), plan.shapes,
                 curX, curY);
         // the exact path integrates the same way on its own degrees: a .5 within a billionth is left to it

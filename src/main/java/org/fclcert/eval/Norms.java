@@ -128,7 +128,9 @@ final class Norms {
     /** The bound of {@code and(a, x, y)} = r, from the bounds ex, ey of its operands (degrees in [0, 1]). */
     static double andError(AndAlgorithm a, double x, double ex, double y, double ey, double r) {
         return switch (a) {
-            case MIN -> x + ex <= y - ey ? ex : y + ey <= x - ex ? ey : Math.max(ex, ey);
+            // an exact 0 operand gives an exact 0 (the other operand is a degree, so not below 0)
+            case MIN -> x == 0 && ex == 0 || y == 0 && ey == 0 ? 0
+                    : x + ex <= y - ey ? ex : y + ey <= x - ex ? ey : Math.max(ex, ey);
             case PROD -> productError(x, ex, y, ey, r);
             case BDIF -> clampAtZero(x + y - 1.0, ex + ey + R);
             // Lipschitz constant at most 1 in each operand on [0, 1]^2
