@@ -142,7 +142,7 @@ class DisguiseOrderTest {
             Analysis a = Analysis.analyze(StrictReader.openLevel(), c.id(), twin);
             assertFalse(a.hasErrors(), c.id() + ": " + a.diagnostics() + "\n" + twin);
         }
-        // measured on the corpus of 72 negative cases: 44 repaired by one small edit (RepairedTwin)
-        assertTrue(twins >= 40, "twins: " + twins + " of " + negative);
+        // measured on the corpus of 72 negative cases: 52 repaired by one small edit (RepairedTwin)
+        assertTrue(twins >= 48, "twins: " + twins + " of " + negative);
     }
 }
