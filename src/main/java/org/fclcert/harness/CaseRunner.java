@@ -47,20 +47,48 @@ final class CaseRunner {
      * counted by the difference of its health around it.
      */
     Ran run(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain) {
+        return run(iut, c, plainIut, plain, Optional.<Disguise.Twin>empty());
+    }
+
+    /**
+     * As {@link #run(ImplementationUnderTest, RunCase, ImplementationUnderTest, RunCase)}; a negative case with an
+     * accepted {@code twin} ({@link RepairedTwin}) passes only when the implementation rejects the case and then
+     * loads the twin.
+     */
+    Ran run(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain,
+            Optional<Disguise.Twin> twin) {
+        return run(iut, c, plainIut, plain, twin, null);
+    }
+
+    /**
+     * As above, with {@code disguise} (null: none) the disguise {@code c} was sent under: the semantic axis then
+     * presents the disguised program over {@code iut}, so that its exchanges are part of the case's evidence.
+     */
+    Ran run(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain,
+            Optional<Disguise.Twin> twin, Disguise disguise) {
         IutHealth before = iut.health();
-        Ran ran = runCounted(iut, c, plainIut, plain);
+        Ran ran = runCounted(iut, c, plainIut, plain, twin, disguise);
         IutHealth during = iut.health().since(before);
         return new Ran(ran.result().withBreakdowns(during.crashes(), during.restarts()), ran.gaveUp());
     }
 
-    private Ran runCounted(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain) {
+    private Ran runCounted(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain,
+            Optional<Disguise.Twin> twin, Disguise disguise) {
         long start = System.nanoTime();
         ResultBuilder r = new ResultBuilder(c);
         boolean gaveUp = false;
         try {
+            // the twin goes before or after the case as the disguise drew it, so that the order gives nothing away
+            LoadOutcome twinOutcome = twin.isPresent() && twin.get().first() ? iut.load(twin.get().text()) : null;
             LoadOutcome outcome = iut.load(c.program());
             if (c.expectReject()) {
+                if (twin.isPresent() && !twin.get().first()) {
+                    twinOutcome = iut.load(twin.get().text());
+                }
                 judgeRejection(c, outcome, r);
+                if (twinOutcome != null && r.status() == CaseStatus.PASSED) {
+                    judgeTwin(twinOutcome, r);
+                }
             } else {
                 runPositive(iut, c, outcome, r);
             }
@@ -85,7 +113,8 @@ final class CaseRunner {
             if (gaveUp) {
                 result = notPresented(c, result, "the implementation was given up");
             } else {
-                Presenter.Presentation p = presenter.present(plainIut, plain);
+                Presenter.Presentation p = disguise == null ? presenter.present(plainIut, plain)
+                        : presenter.present(iut, c, plain, disguise);
                 result = result.withPresented(p.presented());
                 gaveUp = p.gaveUp();
             }
@@ -122,6 +151,18 @@ final class CaseRunner {
         } else {
             r.failed("accepted a program the standard rejects: " + want.code() + " at line " + want.line())
                     .sentences(expected, "accepted");
+        }
+    }
+
+    /** The twin must load: a rejection of it too shows the implementation refuses the program, not this error. */
+    private static void judgeTwin(LoadOutcome outcome, ResultBuilder r) {
+        if (outcome instanceof LoadOutcome.Rejected rejected) {
+            String where = rejected.line().isPresent() ? " at line " + rejected.line().getAsInt() : "";
+            r.failed("rejected the case's accepted twin (the same program with the defect repaired, which the standard"
+                    + " accepts)" + where + ": " + rejected.message() + "; so the rejection of the case does not show"
+                    + " that this error was found");
+        } else {
+            r.note("loaded the case's accepted twin (the same program with the defect repaired)");
         }
     }
 

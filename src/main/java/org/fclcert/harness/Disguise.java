@@ -37,14 +37,18 @@ import org.fclcert.syntax.StrictReader;
  * names are not case-sensitive (IEC 61131-3 B.1.1), so all spellings of one name get the same new name; eval
  * requests and replies are mapped both ways ({@link DisguisedIut}), an exported text is mapped back;</li>
  * <li>rule numbers renumbered one to one (a duplicate stays a duplicate);</li>
- * <li>comments rewritten (positive cases), lines indented anew, and 1 to 3 blank lines put in front, the
- * expected error line of a negative case moved with them.</li>
+ * <li>declarations, FUZZIFY and DEFUZZIFY blocks, terms and rules reordered where 5.2 leaves the order free, a
+ * blank within a statement now and then turned into a line break, every line indented anew ({@link DisguiseText}),
+ * comments rewritten (positive cases), and 1 to 3 blank lines put in front;</li>
+ * <li>a negative case's expected error follows the transformation: the token the reference's error points at in
+ * the corpus text is followed to its new line and column, and the reference must report the error there;</li>
+ * <li>a negative case brings its accepted twin ({@link RepairedTwin}), disguised by the same steps.</li>
  * </ul>
  * Each disguise is checked before it is used: a positive case must read without error and evaluate, on the
  * reference's exact path, to the same values as the corpus text on every vector; a negative case must still
  * have its error, with the same code, at the moved line. Where a step of the disguise fails that check, the
  * weaker disguise without it is used (the leading blank lines alone always keep both), so the text sent never
- * equals the corpus text. Not done: reordering declarations, terms and rules (5.2 would allow it).
+ * equals the corpus text.
  */
 public final class Disguise {
     private static final Pattern COMMENT_OR_WORD = Pattern.compile("\\(\\*.*?(\\*\\)|\\z)|[A-Za-z_][A-Za-z0-9_]*",
@@ -52,6 +56,8 @@ public final class Disguise {
     private static final Pattern RULE_NUMBER = Pattern.compile("(?i)(RULE\\s+)(\\d+)(\\s*:)");
     private static final String LETTERS = "abcdefghijklmnopqrstuvwxyz";
     private static final String ALNUM = LETTERS + "0123456789";
+    /** One line break between statements in this many gets a blank line after it. */
+    private static final int BREAK_ONE_IN = 6;
 
     /** New name per {@link Names#key} of an original name. */
     private final Map<String, String> names;
@@ -60,14 +66,44 @@ public final class Disguise {
     private final String text;
     private final int lineShift;
     private final Optional<ExpectedError> expectedError;
+    private final Optional<DisguiseText.Place> errorPlace;
+    private final boolean reordered;
+    private final Optional<Twin> twin;
 
     private Disguise(Map<String, String> names, Map<String, String> originals, String text, int lineShift,
-            Optional<ExpectedError> expectedError) {
+            Optional<ExpectedError> expectedError, Optional<DisguiseText.Place> errorPlace, boolean reordered,
+            Optional<Twin> twin) {
         this.names = names;
         this.originals = originals;
         this.text = text;
         this.lineShift = lineShift;
         this.expectedError = expectedError;
+        this.errorPlace = errorPlace;
+        this.reordered = reordered;
+        this.twin = twin;
+    }
+
+    /**
+     * A negative case's accepted twin as sent ({@link RepairedTwin}, disguised as the case is): the program with its
+     * defect repaired, which an implementation must load for its rejection of the case to count; empty when the
+     * case has none.
+     */
+    public Optional<Twin> twin() {
+        return twin;
+    }
+
+    /** A negative case's accepted twin as sent, and whether it is loaded before the case (drawn) or after it. */
+    public record Twin(String text, boolean first) {
+    }
+
+    /** Where the token the reference's error points at in the corpus text now is (line and column). */
+    Optional<DisguiseText.Place> errorPlace() {
+        return errorPlace;
+    }
+
+    /** Whether declarations, blocks, terms and rules were reordered. */
+    public boolean reordered() {
+        return reordered;
     }
 
     /** The text sent in place of the corpus program. */
@@ -143,6 +179,9 @@ public final class Disguise {
                 }
             }
         }
+        Map<String, String> twinRenames = new LinkedHashMap<>(renames);
+        twinRenames.put(Names.key(RepairedTwin.NEW_NAME), freshName(random));
+        boolean twinFirst = random.nextBoolean();
         int shift = 1 + random.nextInt(3);
         // blank lines, not comments: a comment before the first block is itself a reason some libraries refuse a
         // program (fuzzylite), and the disguise must not add reasons of its own
@@ -150,25 +189,98 @@ public final class Disguise {
         long commentSeed = random.nextLong();
         long layoutSeed = random.nextLong();
         int ruleBase = 1 + random.nextInt(900);
-        // strongest first; each later one drops a step whose check failed
-        List<String> candidates = new ArrayList<>();
+        long orderSeed = random.nextLong();
+        long breakSeed = random.nextLong();
         String renamed = renumberRules(rename(c.program(), renames), ruleBase);
+        Optional<String> twin = RepairedTwin.of(c).map(t -> renumberRules(rename(t, twinRenames), ruleBase));
+        Steps steps = new Steps(orderSeed, breakSeed, layoutSeed);
+        // strongest first; each later one drops a step whose check failed
+        List<Step[]> levels = List.of(new Step[] {Step.ORDER, Step.BREAKS, Step.INDENT},
+                new Step[] {Step.ORDER, Step.INDENT}, new Step[] {Step.INDENT}, new Step[] {});
         if (!c.expectReject()) {
-            candidates.add(head + indent(rewriteComments(renamed, commentSeed), layoutSeed));
-        }
-        candidates.add(head + indent(renamed, layoutSeed));
-        candidates.add(head + renamed);
-        Optional<ExpectedError> moved = c.expectedError().map(e -> new ExpectedError(e.code(), e.line() + shift));
-        for (String candidate : candidates) {
-            if (c.expectReject() ? stillRejected(candidate, moved.get()) : sameMeaning(c, original, candidate, renames)) {
-                return new Disguise(renames, spellings, candidate, shift, moved);
+            String commented = rewriteComments(renamed, commentSeed);
+            for (Step[] level : levels) {
+                for (String base : level.length == 0 ? List.of(renamed) : List.of(commented, renamed)) {
+                    String candidate = steps.apply(DisguiseText.of(head + base), level).text();
+                    if (sameMeaning(c, original, candidate, renames)) {
+                        return new Disguise(renames, spellings, candidate, shift, Optional.empty(), Optional.empty(),
+                                level.length > 0 && level[0] == Step.ORDER, Optional.empty());
+                    }
+                }
+            }
+        } else {
+            ExpectedError want = c.expectedError().orElseThrow();
+            // the error as the reference places it in the renamed text, and the token there, followed through every step
+            Optional<Diagnostic> at = errorAt(renamed, want);
+            DisguiseText read = DisguiseText.of(head + renamed);
+            int origin = at.map(d -> read.originAt(head + renamed, new DisguiseText.Place(d.location().line() + shift,
+                    d.location().column()))).orElse(-1);
+            for (Step[] level : origin < 0 ? List.<Step[]>of() : levels) {
+                DisguiseText sent = steps.apply(read, level);
+                Optional<DisguiseText.Place> place = sent.placeOf(origin);
+                if (place.isEmpty()) {
+                    continue;
+                }
+                ExpectedError moved = new ExpectedError(want.code(), place.get().line());
+                if (stillRejected(sent.text(), moved)) {
+                    Optional<Twin> sentTwin = twin.map(t -> steps.apply(DisguiseText.of(head + t), level).text())
+                            .filter(Disguise::loads).map(t -> new Twin(t, twinFirst));
+                    return new Disguise(renames, spellings, sent.text(), shift, Optional.of(moved), place,
+                            level.length > 0 && level[0] == Step.ORDER, sentTwin);
+                }
             }
         }
         // the leading blank lines alone: they change neither the meaning nor the error; the error's line is
         // where the reference places it (an empty program's error stays at line 1)
         String text = head + c.program();
+        Optional<ExpectedError> moved = c.expectedError().map(e -> new ExpectedError(e.code(), e.line() + shift));
         Optional<ExpectedError> placed = moved.map(e -> new ExpectedError(e.code(), lineOf(text, e.code()).orElse(e.line())));
-        return new Disguise(Map.of(), Map.of(), text, shift, placed);
+        return new Disguise(Map.of(), Map.of(), text, shift, placed, Optional.empty(), false,
+                RepairedTwin.of(c).map(t -> head + t).filter(Disguise::loads).map(t -> new Twin(t, twinFirst)));
+    }
+
+    /** The order and layout steps of one disguise, each drawing from its own seed. */
+    private enum Step {
+        ORDER, BREAKS, INDENT
+    }
+
+    private record Steps(long order, long breaks, long indent) {
+        DisguiseText apply(DisguiseText t, Step[] level) {
+            DisguiseText out = t;
+            for (Step s : level) {
+                out = switch (s) {
+                    case ORDER -> out.reordered(new SplittableRandom(order));
+                    case BREAKS -> out.broken(new SplittableRandom(breaks), BREAK_ONE_IN);
+                    case INDENT -> out.indented(new SplittableRandom(indent));
+                };
+            }
+            return out;
+        }
+    }
+
+    /** The first error of {@code code} at {@code want}'s line of {@code text}. */
+    private static Optional<Diagnostic> errorAt(String text, ExpectedError want) {
+        try {
+            return Analysis.analyze(StrictReader.openLevel(), "disguise", text).diagnostics().stream()
+                    .filter(Diagnostic::isError).filter(d -> d.code().equals(want.code()))
+                    .filter(d -> d.location().line() == want.line()).findFirst();
+        } catch (RuntimeException | StackOverflowError e) {
+            return Optional.empty();
+        }
+    }
+
+    /** The reference reads {@code text} without error and loads it. */
+    private static boolean loads(String text) {
+        try {
+            Analysis a = Analysis.analyze(StrictReader.openLevel(), "twin", text);
+            if (a.hasErrors() || a.program().isEmpty()) {
+                return false;
+            }
+            Evaluator.load(a.program().get());
+            return true;
+        } catch (RuntimeException | StackOverflowError e) {
+            return false;
+        }
     }
 
     private static Optional<Program> partial(String text) {
@@ -287,31 +399,6 @@ public final class Disguise {
         return out.toString();
     }
 
-    /** Each non-blank line's leading blanks replaced by 0 to 6 spaces (lines inside comments left alone). */
-    private static String indent(String text, long seed) {
-        SplittableRandom random = new SplittableRandom(seed);
-        StringBuilder out = new StringBuilder();
-        boolean inComment = false;
-        for (String line : text.split("\n", -1)) {
-            if (out.length() > 0) {
-                out.append('\n');
-            }
-            if (!inComment && !line.isBlank()) {
-                out.append(" ".repeat(random.nextInt(7))).append(line.stripLeading());
-            } else {
-                out.append(line);
-            }
-            int open = line.lastIndexOf("(*");
-            int close = line.lastIndexOf("*)");
-            if (open > close) {
-                inComment = true;
-            } else if (close > open) {
-                inComment = false;
-            }
-        }
-        return out.toString();
-    }
-
     private static Optional<Program> read(String text) {
         try {
             return Analysis.analyze(StrictReader.openLevel(), "disguise", text).program();
@@ -339,7 +426,8 @@ public final class Disguise {
         if (disguised.isEmpty()) {
             return false;
         }
-        Disguise map = new Disguise(renames, Map.of(), text, 0, Optional.empty());
+        Disguise map = new Disguise(renames, Map.of(), text, 0, Optional.empty(), Optional.empty(), false,
+                Optional.empty());
         try {
             String block = c.block().orElse(null);
             ExactInstance a = Evaluator.load(original).newExactInstance(block, NumberReading.DECIMAL);

@@ -50,6 +50,22 @@ final class DisguisedIut implements ImplementationUnderTest {
         }
     }
 
+    /** A program written in a library's layout (the semantic axis), forwarded as such and kept as a load. */
+    @Override
+    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+        try {
+            LoadOutcome outcome = inner.loadWritten(text, layout);
+            exchanges.add(Exchange.load(outcome));
+            return outcome;
+        } catch (IutException e) {
+            exchanges.add(Exchange.failed("load", null, null, e));
+            throw e;
+        } catch (RuntimeException | StackOverflowError e) {
+            exchanges.add(Exchange.broke("load", null, null, e));
+            throw e;
+        }
+    }
+
     @Override
     public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
         String sentBlock = disguise.sent(block);

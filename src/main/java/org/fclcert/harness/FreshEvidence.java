@@ -31,7 +31,11 @@ public final class FreshEvidence {
                     + plain.vectors().size() + " are fresh vectors drawn for this run";
             notes.add("run seed " + RunSeed.text(seed) + ": " + vectors + "; the program was sent disguised ("
                     + disguise.renamed() + " names renamed, " + disguise.lineShift() + " line(s) put in front"
-                    + (corpus.expectReject() ? ", the error's line moved with them" : "") + ")");
+                    + (disguise.reordered() ? ", declarations, blocks, terms and rules reordered" : "")
+                    + (corpus.expectReject() ? ", the error's line following its token" : "")
+                    + disguise.twin().map(t -> "; its accepted twin (the defect repaired) was sent " + (t.first() ? "before"
+                            : "after") + " it").orElse("")
+                    + ")");
             return new CaseResult(r.plan(), new CaseResult.Verdict(r.status(), r.message(), notes,
                     r.verdict().rejection()), r.evidence(), r.export(), r.setup(), r.presented(), r.replies());
         }
@@ -45,7 +49,7 @@ public final class FreshEvidence {
     static CaseRunner.Ran run(CaseRunner runner, ImplementationUnderTest iut, RunCase c, long seed) {
         Prepared p = prepare(c, seed);
         DisguisedIut wire = new DisguisedIut(iut, p.disguise());
-        CaseRunner.Ran ran = runner.run(wire, p.sent(), iut, p.plain());
+        CaseRunner.Ran ran = runner.run(wire, p.sent(), iut, p.plain(), p.disguise().twin(), p.disguise());
         return new CaseRunner.Ran(p.noted(ran.result(), seed).withReplies(wire.exchanges()), ran.gaveUp());
     }
 }

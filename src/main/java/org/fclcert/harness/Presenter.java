@@ -51,7 +51,18 @@ final class Presenter {
     }
 
     Presentation present(ImplementationUnderTest iut, RunCase c) {
-        Prepared prepared = prepare(c);
+        return present(iut, c, c, null);
+    }
+
+    /**
+     * As {@link #present(ImplementationUnderTest, RunCase)}, with {@code c}'s program the text sent under
+     * {@code disguise} (null: none) and {@code iut} the implementation behind it ({@link DisguisedIut}): the disguised
+     * program is what is written in the library's layout, so the semantic axis gets the same renaming, reordering
+     * and fresh vectors as the language axis; its vectors stay in the corpus's names and are mapped as they are sent.
+     * The reference's trace is of {@code plain}, the case as the corpus writes it.
+     */
+    Presentation present(ImplementationUnderTest iut, RunCase c, RunCase plain, Disguise disguise) {
+        Prepared prepared = prepare(c, disguise);
         if (prepared.reason != null) {
             return new Presentation(new CaseResult.Presented(dialect.cliName(), PresentedStatus.NOT_PRESENTABLE,
                     "not presentable in " + dialect.displayName() + "'s layout: " + prepared.reason, List.of(), null,
@@ -80,7 +91,7 @@ final class Presenter {
         for (Diagnostic d : prepared.written.differences()) {
             r.note("known difference (" + d.code() + "): " + d.message());
         }
-        CaseResult ran = r.traceReference(c).build(0);
+        CaseResult ran = r.traceReference(plain).build(0);
         PresentedStatus status = PresentedStatus.of(ran.status());
         return new Presentation(new CaseResult.Presented(dialect.cliName(), status, ran.message(),
                 ran.verdict().notes(), ran.evidence(), status == PresentedStatus.PASSED ? null : written.program()),
@@ -91,7 +102,7 @@ final class Presenter {
     private record Prepared(Written written, String reason) {
     }
 
-    private Prepared prepare(RunCase c) {
+    private Prepared prepare(RunCase c, Disguise disguise) {
         Analysis analysis = AnalysisMemo.analyze(ReaderOptions.OPEN_LEVEL, c.id(), c.program());
         if (analysis.program().isEmpty()) {
             return new Prepared(null, "fclcert cannot read the case's program: " + firstError(analysis.diagnostics()));
@@ -109,20 +120,23 @@ final class Presenter {
             int more = w.notExpressible().size() - REASONS;
             return new Prepared(null, reasons + (more > 0 ? " (and " + more + " more)" : ""));
         }
-        List<Map<String, Double>> steps = c.vectors().stream().map(Vector::in).toList();
-        RoundTrip rt = DialectWriters.readBackAndCompare(program, w, c.block().orElse(null), steps);
+        List<Map<String, Double>> steps = c.vectors().stream().map(Vector::in)
+                .map(in -> disguise == null ? in : disguise.sent(in)).toList();
+        String block = c.block().map(b -> disguise == null ? b : disguise.sent(b)).orElse(null);
+        RoundTrip rt = DialectWriters.readBackAndCompare(program, w, block, steps);
         if (!rt.equal()) {
             return new Prepared(null, "the written text does not read back as the original: " + rt.summary());
         }
-        Optional<String> expected = readBackGivesExpected(c, w);
+        Optional<String> expected = readBackGivesExpected(c, w, disguise);
         return new Prepared(w, expected.orElse(null));
     }
 
     /** The reference evaluator on fclcert's reading of the written text, judged against the case's steps. */
-    private Optional<String> readBackGivesExpected(RunCase c, Written w) {
+    private Optional<String> readBackGivesExpected(RunCase c, Written w, Disguise disguise) {
         RunCase written = withProgram(c, w.text());
         ResultBuilder r = new ResultBuilder(written);
-        try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
+        try (ImplementationUnderTest opened = Iuts.open("reference", IutOptions.defaults())) {
+            ImplementationUnderTest reference = disguise == null ? opened : new DisguisedIut(opened, disguise);
             LoadOutcome outcome = reference.loadWritten(w.text(), dialect);
             if (outcome instanceof LoadOutcome.Rejected rejected) {
                 return Optional.of("fclcert's reader rejects the written text: " + rejected.message());

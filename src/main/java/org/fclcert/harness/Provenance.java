@@ -37,13 +37,20 @@ public record Provenance(String seed, ToolkitBuild toolkit, CorpusIdentity corpu
 
     /**
      * The corpus: {@code builtIn} when it is the corpus built into this fclcert; {@code description} how the
-     * headline names it; {@code missingBasic} the built-in Basic Level cases a custom corpus does not hold
-     * unchanged (its Basic verdict is then not determined).
+     * headline names it; {@code missingBasic} and {@code missingExtension} the built-in Basic and Extension Level
+     * cases a custom corpus does not hold unchanged (its Basic verdict, or its Table 9 verdicts, are then not
+     * determined).
      */
     @JsonInclude(JsonInclude.Include.NON_NULL)
-    public record CorpusIdentity(String sha256, boolean builtIn, String description, List<String> missingBasic) {
+    public record CorpusIdentity(String sha256, boolean builtIn, String description, List<String> missingBasic,
+            List<String> missingExtension) {
         public CorpusIdentity {
             missingBasic = missingBasic == null ? List.of() : List.copyOf(missingBasic);
+            missingExtension = missingExtension == null ? List.of() : List.copyOf(missingExtension);
+        }
+
+        public CorpusIdentity(String sha256, boolean builtIn, String description, List<String> missingBasic) {
+            this(sha256, builtIn, description, missingBasic, List.of());
         }
     }
 

@@ -21,8 +21,8 @@ import org.fclcert.model.ConformanceLevel;
  * Basic Level cases, the plan of each case). A case line without evidence that is skipped stays skipped (a skip is
  * never a pass); one that claims anything else becomes skipped ("not judged: no evidence").
  *
- * <p>What is re-judged is the language axis; a presented case's semantic axis ({@code --present-as}) is kept as
- * recorded.
+ * <p>Both axes are re-judged: a presented case's semantic axis ({@code --present-as}) went over the same disguise,
+ * and its exchanges are part of the case's evidence.
  */
 public final class Rejudge {
     private Rejudge() {
@@ -76,7 +76,17 @@ public final class Rejudge {
             problems.add("the run seed '" + h.provenance().seed() + "' is not a number");
             return new Outcome(file.results(), problems);
         }
-        CaseRunner runner = new CaseRunner(new ReferenceExportCheck());
+        // the semantic axis is judged again too: its exchanges are part of each case's evidence
+        Presenter presenter = null;
+        if (h.presentAs() != null) {
+            Optional<org.fclcert.syntax.dialect.Dialect> dialect = org.fclcert.syntax.dialect.Dialect.byCliName(h.presentAs());
+            if (dialect.isEmpty()) {
+                problems.add("the run header presents as '" + h.presentAs() + "', which is no dialect of this fclcert");
+                return new Outcome(file.results(), problems);
+            }
+            presenter = new Presenter(dialect.get());
+        }
+        CaseRunner runner = new CaseRunner(new ReferenceExportCheck(), presenter);
         List<CaseResult> out = new ArrayList<>();
         for (CaseResult recorded : file.results()) {
             Optional<CorpusCase> c = corpus.byId(recorded.id());
@@ -106,7 +116,8 @@ public final class Rejudge {
         ReplayIut replay = new ReplayIut(recorded.replies());
         CaseResult judged;
         try {
-            judged = runner.run(new DisguisedIut(replay, p.disguise()), p.sent(), replay, p.plain()).result();
+            judged = runner.run(new DisguisedIut(replay, p.disguise()), p.sent(), replay, p.plain(), p.disguise().twin(),
+                    p.disguise()).result();
         } catch (RuntimeException e) {
             problems.add("case " + c.id() + ": its evidence cannot be judged: " + e);
             return CaseResult.skipped(recorded.plan(), NO_EVIDENCE);
@@ -114,7 +125,7 @@ public final class Rejudge {
         judged = p.noted(judged, seed);
         judged = new CaseResult(judged.plan(), judged.verdict(), judged.evidence(), judged.export(),
                 new CaseResult.Setup(judged.setup().block(), judged.setup().tolerance(), judged.setup().program(),
-                        recorded.setup().durationMs()), recorded.presented(), recorded.replies());
+                        recorded.setup().durationMs()), judged.presented(), recorded.replies());
         if (replay.mismatch() != null) {
             problems.add("case " + c.id() + ": the evidence does not answer the requests of this case under the run's"
                     + " seed: " + replay.mismatch());

@@ -11,7 +11,7 @@ import org.fclcert.model.Toolkit;
 
 /**
  * The corpus of a run before anything runs: which corpus it is (the built-in one, or a custom one, and then which
- * built-in Basic Level cases it lacks), and, for a custom corpus, that the exact reference reproduces every
+ * built-in Basic and Extension Level cases it lacks), and, for a custom corpus, that the exact reference reproduces every
  * case's expected values and errors — a case it does not reproduce is refused, named, before any implementation
  * is started.
  */
@@ -34,6 +34,7 @@ final class CorpusCheck {
         }
         return new Provenance.CorpusIdentity(corpus.sha256(), false, "a custom corpus (" + corpus.cases().size()
                 + " cases), not the fclcert conformance corpus",
-                CorpusIdentity.missingBuiltIn(corpus, builtIn, ConformanceLevel.BASIC));
+                CorpusIdentity.missingBuiltIn(corpus, builtIn, ConformanceLevel.BASIC),
+                CorpusIdentity.missingBuiltIn(corpus, builtIn, ConformanceLevel.EXTENSION));
     }
 }

@@ -38,6 +38,7 @@ public record Origin(Provenance provenance, String endedAt, String digest, Strin
             List<String> moreWarnings) {
         List<String> warnings = new ArrayList<>();
         Report.BasicLevel basic = report.basicLevel();
+        List<Report.FeatureRow> features = report.features();
         if (provenance != null && provenance.corpus() != null && !provenance.corpus().builtIn()) {
             Provenance.CorpusIdentity c = provenance.corpus();
             warnings.add("a custom corpus (" + report.corpus().cases() + " cases, sha256 " + c.sha256() + "), not the"
@@ -50,6 +51,15 @@ public record Origin(Provenance provenance, String endedAt, String digest, Strin
                         + " Basic Level cases unchanged (" + String.join(", ", named)
                         + (c.missingBasic().size() > named.size() ? ", …" : "") + "); a Basic Level verdict is issued"
                         + " only when every built-in Basic Level case was run");
+            }
+            if (!c.missingExtension().isEmpty()) {
+                List<String> named = c.missingExtension().subList(0, Math.min(5, c.missingExtension().size()));
+                warnings.add("Extension Level (Table 9): " + Report.BasicLevel.NOT_DETERMINED + ": the custom corpus"
+                        + " does not hold " + c.missingExtension().size() + " of the built-in Extension Level cases"
+                        + " unchanged (" + String.join(", ", named) + (c.missingExtension().size() > named.size()
+                        ? ", …" : "") + "); an Extension Level verdict is issued only when every built-in Extension"
+                        + " Level case was run");
+                features = features.stream().map(Origin::extensionNotDetermined).toList();
             }
         }
         if (basic.conformant() && emptyTable11(report.dataCheckList())) {
@@ -68,8 +78,18 @@ public record Origin(Provenance provenance, String endedAt, String digest, Strin
         Origin origin = new Origin(provenance, seal == null ? null : seal.endedAt(), seal == null ? null : seal.digest(),
                 verification, warnings);
         return new Report(report.formatVersion(), report.generatedAt(), report.iut(), report.toolkit(), report.corpus(),
-                report.run(), report.summary(), report.rejections(), basic, report.features(), report.dataCheckList(),
+                report.run(), report.summary(), report.rejections(), basic, features, report.dataCheckList(),
                 report.interpretation(), report.claims(), report.causes(), report.cases(), report.semantic(), origin);
+    }
+
+    /** A Table 9 row whose verdict a custom corpus cannot give: not determined (its counts kept). */
+    private static Report.FeatureRow extensionNotDetermined(Report.FeatureRow r) {
+        if (r.table() != 9 || r.status() == FeatureStatus.NOT_DETERMINED || r.status() == FeatureStatus.NOT_TESTED) {
+            return r;
+        }
+        return new Report.FeatureRow(r.id(), r.table(), r.level(), r.element(), r.description(),
+                FeatureStatus.NOT_DETERMINED, r.passed(), r.failed(), r.errored(), r.skipped(), r.cases(), r.notPassed(),
+                r.semantic(), r.required(), r.run(), r.notCounted());
     }
 
     /** Table 11 empty, or every measured value 0 or none. */

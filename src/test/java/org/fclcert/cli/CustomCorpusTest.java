@@ -56,4 +56,42 @@ class CustomCorpusTest {
                 + " vector 2: 'y' expected 91.0, the reference evaluator gives 90.0"), c.err());
         assertFalse(Files.exists(marker), "the implementation was started");
     }
+
+    @Test
+    void aCorpusWithEveryBasicCaseButOneExtensionCaseGetsItsBasicVerdictAndNoExtensionVerdict() throws Exception {
+        Path corpus = dir.resolve("corpus");
+        for (String level : new String[] {"basic", "negative"}) {
+            Files.createDirectories(corpus.resolve(level));
+            try (var files = Files.list(Path.of("conformance", level))) {
+                for (Path f : files.toList()) {
+                    Files.copy(f, corpus.resolve(level).resolve(f.getFileName()));
+                }
+            }
+        }
+        Files.createDirectories(corpus.resolve("extension"));
+        Files.copy(Path.of("conformance/extension/E-ACCU-BSUM-001.fcl"), corpus.resolve("extension/E-ACCU-BSUM-001.fcl"));
+        long extension = org.fclcert.corpus.Corpus.load(Path.of("conformance")).cases().stream()
+                .filter(k -> k.level() == org.fclcert.model.ConformanceLevel.EXTENSION && k.interpretation().isEmpty())
+                .filter(k -> !k.expectReject())   // the negative ones of the Extension Level were copied with negative/
+                .count();
+        Cli c = Cli.run("certify", "--iut", "reference", "--corpus", corpus.toString(), "--no-probe", "--seed", "5",
+                "--out", dir.resolve("out").toString());
+        assertEquals(0, c.exitCode(), c.err());
+        // the Basic verdict is issued (every built-in Basic case is there), the Extension one is not, with its reason
+        assertTrue(c.out().contains("Basic Level: conformant"), c.out());
+        String md = Files.readString(dir.resolve("out/report.md"));
+        assertTrue(md.contains("Extension Level (Table 9): not determined: the custom corpus does not hold "
+                + (extension - 1) + " of the built-in Extension Level cases unchanged"), md);
+        var report = new com.fasterxml.jackson.databind.ObjectMapper().readTree(dir.resolve("out/report.json").toFile());
+        int table9 = 0;
+        for (var row : report.path("features")) {
+            if (row.path("table").asInt() == 9) {
+                table9++;
+                assertTrue(row.path("status").asText().matches("not-determined|not-tested|NOT_DETERMINED|NOT_TESTED"),
+                        row.toString());
+            }
+        }
+        assertEquals(25, table9, "Table 9 rows");
+        assertEquals(0, Cli.run("report", "--verify", dir.resolve("out").toString()).exitCode());
+    }
 }

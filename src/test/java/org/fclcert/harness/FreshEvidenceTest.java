@@ -104,7 +104,8 @@ class FreshEvidenceTest {
                 moved++;
             }
         }
-        assertTrue(moved >= 70, "the error's line moves with the lines put in front: " + moved + " of 72 moved");
+        // the lines put in front move every error; a reordering may now and then bring one back to its corpus line
+        assertTrue(moved >= 65, "the error's line moves with the text: " + moved + " of 72 moved");
     }
 
     @Test
