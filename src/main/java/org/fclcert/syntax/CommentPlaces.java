@@ -34,9 +34,13 @@ final class CommentPlaces {
     private static final Comparator<Item> ORDER = Comparator.comparingInt(Item::line).thenComparingInt(Item::column);
 
     private final List<Item> items;
+    private final java.util.Map<Kind, List<Item>> byKind = new java.util.EnumMap<>(Kind.class);
 
     private CommentPlaces(List<Item> items) {
         this.items = items;
+        for (Kind k : Kind.values()) {
+            byKind.put(k, items.stream().filter(i -> i.kind() == k).toList());
+        }
     }
 
     /**
@@ -142,26 +146,39 @@ final class CommentPlaces {
 
     /** The last element of that kind (any kind when null) starting at or before the token. */
     private Item lastUpTo(Kind kind, Token t) {
-        Item found = null;
-        for (Item i : items) {
-            if (compare(i, t) > 0) {
-                break;
-            }
-            if (kind == null || i.kind() == kind) {
-                found = i;
-            }
-        }
-        return found;
+        List<Item> list = of(kind);
+        int i = firstAfter(list, t, true) - 1;
+        return i < 0 ? null : list.get(i);
     }
 
     /** The first element of that kind (any kind when null) starting at or after the token. */
     private Item firstFrom(Kind kind, Token t) {
-        for (Item i : items) {
-            if (compare(i, t) >= 0 && (kind == null || i.kind() == kind)) {
-                return i;
+        List<Item> list = of(kind);
+        int i = firstAfter(list, t, false);
+        return i == list.size() ? null : list.get(i);
+    }
+
+    private List<Item> of(Kind kind) {
+        return kind == null ? items : byKind.get(kind);
+    }
+
+    /**
+     * Binary search in a list in text order (a large program's comments each look up once): the index of the
+     * first element after the token's start, or, when {@code orAt} is false, at or after it.
+     */
+    private static int firstAfter(List<Item> list, Token t, boolean orAt) {
+        int low = 0;
+        int high = list.size();
+        while (low < high) {
+            int mid = (low + high) >>> 1;
+            int c = compare(list.get(mid), t);
+            if (c < 0 || c == 0 && orAt) {
+                low = mid + 1;
+            } else {
+                high = mid;
             }
         }
-        return null;
+        return low;
     }
 
     private static int compare(Item i, Token t) {
