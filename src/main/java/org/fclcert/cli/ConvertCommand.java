@@ -71,7 +71,7 @@ final class ConvertCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "FILE", description = "write the program here instead of stdout")
     String outFile;
 
-    @Parameters(paramLabel = "FILE", description = "an FCL source file")
+    @Parameters(paramLabel = "FILE", description = "an FCL source file, or - for standard input")
     String file;
 
     @Override
@@ -105,7 +105,8 @@ final class ConvertCommand implements Callable<Integer> {
                     .convert(source.program().get(), new StandardConversion.Options(approximatePoints));
             printFindings(err, result.findings(), allowLossy);
             String standard = new CanonicalWriter().write(result.program());
-            Analysis back = Analysis.analyze(new StrictReader(), file + " (converted)", standard);
+            Analysis back = Analysis.analyze(new StrictReader(), SourceFiles.name(file) + " (converted)",
+                    standard);
             if (back.hasErrors()) {
                 err.println("fclcert: internal error: the converted program is not valid standard FCL: "
                         + back.diagnostics().stream().filter(Diagnostic::isError).findFirst().orElseThrow());
@@ -113,7 +114,7 @@ final class ConvertCommand implements Callable<Integer> {
             }
             err.println("fclcert: " + summary(dialect, result));
             if (!result.expressible() && !allowLossy) {
-                err.println("fclcert: " + file + " not converted: standard FCL cannot say exactly what it says;"
+                err.println("fclcert: " + SourceFiles.name(file) + " not converted: standard FCL cannot say exactly what it says;"
                         + " add --allow-lossy to write the nearest standard program anyway");
                 return ExitCodes.ERRORS;
             }
@@ -153,7 +154,7 @@ final class ConvertCommand implements Callable<Integer> {
             return ExitCodes.INTERNAL;
         }
         if ((!written.exact() || !back.equal()) && !allowLossy) {
-            err.println("fclcert: " + file + " not converted: " + target.displayName() + " cannot say exactly what it"
+            err.println("fclcert: " + SourceFiles.name(file) + " not converted: " + target.displayName() + " cannot say exactly what it"
                     + " says; add --allow-lossy to write the nearest " + target.displayName() + " program anyway");
             return ExitCodes.ERRORS;
         }

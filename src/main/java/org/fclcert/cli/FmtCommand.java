@@ -1,6 +1,7 @@
 package org.fclcert.cli;
 
 import java.io.PrintWriter;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.fclcert.cli.SourceFiles.FileProblem;
 import org.fclcert.model.Program;
@@ -16,8 +17,8 @@ import picocli.CommandLine.Spec;
 /** {@code fclcert fmt}: a valid program in fclcert's canonical layout. */
 @Command(name = "fmt", mixinStandardHelpOptions = true, versionProvider = VersionProvider.class,
         description = "Print a valid FCL program in canonical layout (upper-case keywords, four-space indentation, "
-                + "one declaration per line, blocks in the order of 5.4). Comments are not kept, so --write "
-                + "refuses a file with comments unless --drop-comments is given. "
+                + "one declaration per line, blocks in the order of 5.4). Comments are kept, each on the line "
+                + "it stood before or ended. "
                 + "A program with errors is left alone and its diagnostics are printed on stderr.",
         exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = {ExitCodes.OK_LINE, ExitCodes.ERRORS_LINE, ExitCodes.USAGE_LINE, ExitCodes.INTERNAL_LINE})
@@ -28,7 +29,8 @@ final class FmtCommand implements Callable<Integer> {
     @Option(names = "--write", description = "rewrite FILE in place instead of printing the text")
     boolean write;
 
-    @Option(names = "--drop-comments", description = "with --write: rewrite FILE even though its comments are lost")
+    @Option(names = "--drop-comments", description = "leave the comments out (with --write: also a dialect program's,"
+            + " which the conversion to standard FCL does not keep)")
     boolean dropComments;
 
     @Option(names = "--check", description = "print nothing but a unified diff from FILE to its canonical layout, and"
@@ -76,8 +78,12 @@ final class FmtCommand implements Callable<Integer> {
                 }
                 program = converted.program();
             }
+            if (dropComments) {
+                program = program.withComments(List.of());
+            }
             String canonical = new CanonicalWriter().write(program);
-            int lostComments = occurrences(source, "(*") - occurrences(canonical, "(*");
+            // a dialect program's comments do not survive its conversion; --drop-comments asks to lose them
+            int lostComments = dropComments ? 0 : occurrences(source, "(*") - occurrences(canonical, "(*");
             if (check) {
                 String diff = UnifiedDiff.of(name, source, name + " (canonical)", canonical);
                 out.print(diff);
@@ -109,9 +115,10 @@ final class FmtCommand implements Callable<Integer> {
             return ExitCodes.OK;
         }
         if (lostComments > 0 && !dropComments) {
-            // the model has no comments: rewriting would destroy them, so only on explicit request
-            err.println("fclcert: " + file + " not rewritten: it has " + DiagnosticPrinter.count(lostComments, "comment")
-                    + ", which fmt does not keep; add --drop-comments to rewrite it anyway");
+            // rewriting would destroy them, so only on explicit request
+            err.println("fclcert: " + file + " not rewritten: " + DiagnosticPrinter.count(lostComments, "comment")
+                    + " would be lost (a dialect program's comments do not survive its conversion to standard FCL);"
+                    + " add --drop-comments to rewrite it anyway");
             return ExitCodes.USAGE;
         }
         SourceFiles.write(file, canonical);
@@ -121,8 +128,8 @@ final class FmtCommand implements Callable<Integer> {
 
     private void noteLostComments(PrintWriter err, int lost) {
         if (lost > 0) {
-            err.println("fclcert: note: fmt does not keep comments (" + SourceFiles.name(file) + " has "
-                    + DiagnosticPrinter.count(lost, "comment") + ")");
+            err.println("fclcert: note: " + DiagnosticPrinter.count(lost, "comment") + " of " + SourceFiles.name(file)
+                    + " not kept (a dialect program's comments do not survive its conversion to standard FCL)");
         }
     }
 

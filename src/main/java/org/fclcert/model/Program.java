@@ -10,11 +10,25 @@ import java.util.Optional;
  *                        each where it was written); always empty for a program the strict reader read.
  *                        Like locations they describe how the text was written, so they take no part
  *                        in {@link #equals}: a dialect program and its standard conversion compare by meaning.
+ * @param comments        the text's comments in source order, each with the line it belongs to ({@link Comment});
+ *                        like locations they take no part in {@link #equals}
  */
-public record Program(String sourceName, List<FunctionBlock> functionBlocks, List<FeatureUse> dialectFeatures) {
+public record Program(String sourceName, List<FunctionBlock> functionBlocks, List<FeatureUse> dialectFeatures,
+        List<Comment> comments) {
     public Program {
         functionBlocks = List.copyOf(functionBlocks);
         dialectFeatures = List.copyOf(dialectFeatures);
+        comments = List.copyOf(comments);
+    }
+
+    /** A program without comments. */
+    public Program(String sourceName, List<FunctionBlock> functionBlocks, List<FeatureUse> dialectFeatures) {
+        this(sourceName, functionBlocks, dialectFeatures, List.of());
+    }
+
+    /** This program with these comments instead of its own. */
+    public Program withComments(List<Comment> comments) {
+        return new Program(sourceName, functionBlocks, dialectFeatures, comments);
     }
 
     /** A program read as standard FCL: no dialect features. */

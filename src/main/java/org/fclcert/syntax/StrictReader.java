@@ -65,8 +65,10 @@ public final class StrictReader implements FclReader {
         ReaderDiagnostics diagnostics = new ReaderDiagnostics(sourceName);
         try {
             Outcome outcome = readProgram(sourceName, text, diagnostics, options, directPath);
-            return new ReadResult(diagnostics.hasErrors() ? Optional.empty() : outcome.program(), diagnostics.finish(),
-                    outcome.repaired());
+            String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
+            Optional<Program> program = diagnostics.hasErrors() ? Optional.empty()
+                    : outcome.program().map(p -> CommentPlaces.attach(p, body));
+            return new ReadResult(program, diagnostics.finish(), outcome.repaired());
         } catch (RuntimeException | StackOverflowError e) {
             // A bug in fclcert, not in the program: still a diagnostic, never a stack trace.
             List<Diagnostic> list = List.of(Diagnostic.error(SourceLocation.of(sourceName, 1, 1),

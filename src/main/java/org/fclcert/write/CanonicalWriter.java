@@ -3,6 +3,7 @@ package org.fclcert.write;
 import java.util.ArrayList;
 import java.util.List;
 import org.fclcert.syntax.ReservedWords;
+import org.fclcert.model.Comment.Line;
 import org.fclcert.model.DefaultValue;
 import org.fclcert.model.Defuzzification;
 import org.fclcert.model.FunctionBlock;
@@ -16,6 +17,7 @@ import org.fclcert.model.OptionsBlock;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
 import org.fclcert.model.Rule;
+import org.fclcert.model.SourceLocation;
 import org.fclcert.model.RuleBlock;
 import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Term;
@@ -25,7 +27,9 @@ import org.fclcert.model.VariableRef;
 
 /**
  * Writes a program as standard FCL text in one fixed layout, so that equal models give equal text
- * and reading the text back gives the same model (comments are not part of the model and are lost).
+ * and reading the text back gives the same model. A program's comments ({@link Program#comments}) are written
+ * back on the line of the layout they belong to: on lines of their own before it, at the indentation of that
+ * line, or at its end after one space; their text is written exactly as read.
  *
  * <p>Layout: keywords in upper case, except the defuzzification methods, which are spelled as
  * Table 1 and the 5.4 production spell them ({@code CoG}, {@code CoGS}, {@code CoA}, {@code LM},
@@ -43,20 +47,27 @@ import org.fclcert.model.VariableRef;
 public final class CanonicalWriter {
     static final String INDENT = "    ";
 
-    /** The whole program; function blocks separated by a blank line, text ending in a newline. */
+    /** The whole program with its comments; function blocks separated by a blank line, text ending in a newline. */
     public String write(Program program) {
-        List<String> blocks = program.functionBlocks().stream().map(this::write).toList();
-        return String.join("\n", blocks);
+        CommentLines comments = new CommentLines(program.comments());
+        List<String> blocks = program.functionBlocks().stream().map(fb -> write(fb, comments)).toList();
+        return String.join("\n", blocks) + comments.rest();
     }
 
-    /** One function block, ending in a newline. */
+    /** One function block, ending in a newline (comments belong to the program: none). */
     public String write(FunctionBlock fb) {
-        List<String> sections = new ArrayList<>(variableSections(fb.variables()));
-        fb.fuzzifications().forEach(f -> sections.add(fuzzify(f)));
-        fb.defuzzifications().forEach(d -> sections.add(defuzzify(d)));
-        fb.ruleBlocks().forEach(b -> sections.add(ruleBlock(b)));
-        fb.options().forEach(o -> sections.add(options(o)));
-        return "FUNCTION_BLOCK " + name(fb.name()) + "\n" + String.join("\n", sections) + "END_FUNCTION_BLOCK\n";
+        return write(fb, CommentLines.none());
+    }
+
+    private static String write(FunctionBlock fb, CommentLines c) {
+        List<String> sections = new ArrayList<>(variableSections(fb.variables(), c));
+        fb.fuzzifications().forEach(f -> sections.add(fuzzify(f, c)));
+        fb.defuzzifications().forEach(d -> sections.add(defuzzify(d, c)));
+        fb.ruleBlocks().forEach(b -> sections.add(ruleBlock(b, c)));
+        fb.options().forEach(o -> sections.add(options(o, c)));
+        return c.before(Line.ITEM, fb.location(), "") + "FUNCTION_BLOCK " + name(fb.name())
+                + c.after(Line.ITEM, fb.location()) + "\n" + String.join("\n", sections)
+                + c.before(Line.END, fb.location(), "") + "END_FUNCTION_BLOCK" + c.after(Line.END, fb.location()) + "\n";
     }
 
     /**
@@ -64,28 +75,31 @@ public final class CanonicalWriter {
      * kept; local variables come last because 5.4 puts {@code other_var_declarations} after the
      * input and output sections.
      */
-    private static List<String> variableSections(List<Variable> variables) {
+    private static List<String> variableSections(List<Variable> variables, CommentLines c) {
         List<Variable> ordered = new ArrayList<>(variables.stream().filter(v -> v.kind() != VariableKind.LOCAL).toList());
         ordered.addAll(variables.stream().filter(v -> v.kind() == VariableKind.LOCAL).toList());
         List<String> sections = new ArrayList<>();
         StringBuilder section = null;
-        VariableKind current = null;
-        for (Variable v : ordered) {
-            if (v.kind() != current) {
-                closeSection(sections, section);
-                section = new StringBuilder(v.kind().keyword()).append('\n');
-                current = v.kind();
+        for (int i = 0; i < ordered.size(); i++) {
+            Variable v = ordered.get(i);
+            SourceLocation at = v.location();
+            if (i == 0 || ordered.get(i - 1).kind() != v.kind()) {
+                section = new StringBuilder(c.before(Line.SECTION_START, at, "")).append(v.kind().keyword())
+                        .append(c.after(Line.SECTION_START, at)).append('\n');
+            } else {
+                // the text opened a section here that the layout joins with the one before
+                section.append(c.instead(Line.SECTION_START, at, INDENT));
             }
-            section.append(INDENT).append(declaration(v)).append('\n');
+            section.append(c.before(Line.ITEM, at, INDENT)).append(INDENT).append(declaration(v))
+                    .append(c.after(Line.ITEM, at)).append('\n');
+            if (i == ordered.size() - 1 || ordered.get(i + 1).kind() != v.kind()) {
+                sections.add(section.append(c.before(Line.END, at, INDENT)).append("END_VAR")
+                        .append(c.after(Line.END, at)).append('\n').toString());
+            } else {
+                section.append(c.instead(Line.END, at, INDENT));
+            }
         }
-        closeSection(sections, section);
         return sections;
-    }
-
-    private static void closeSection(List<String> sections, StringBuilder section) {
-        if (section != null) {
-            sections.add(section.append("END_VAR\n").toString());
-        }
     }
 
     private static String declaration(Variable v) {
@@ -93,19 +107,20 @@ public final class CanonicalWriter {
         return name(v.name()) + " : " + v.type().name() + init + ";";
     }
 
-    private static String fuzzify(Fuzzification f) {
-        StringBuilder out = new StringBuilder("FUZZIFY ").append(name(f.variable())).append('\n');
-        f.terms().forEach(t -> line(out, term(t)));
-        return out.append("END_FUZZIFY\n").toString();
+    private static String fuzzify(Fuzzification f, CommentLines c) {
+        StringBuilder out = header(c, "FUZZIFY ", f.variable(), f.location());
+        f.terms().forEach(t -> line(out, c, t.location(), term(t)));
+        return end(out, c, "END_FUZZIFY", f.location());
     }
 
-    private static String defuzzify(Defuzzification d) {
-        StringBuilder out = new StringBuilder("DEFUZZIFY ").append(name(d.variable())).append('\n');
-        d.range().ifPresent(r -> line(out, "RANGE (" + LiteralText.of(r.min()) + " .. " + LiteralText.of(r.max()) + ");"));
-        d.terms().forEach(t -> line(out, term(t)));
-        d.method().ifPresent(m -> line(out, "METHOD : " + m.value().keyword() + ";"));
-        d.defaultValue().ifPresent(v -> line(out, "DEFAULT := " + defaultValue(v) + ";"));
-        return out.append("END_DEFUZZIFY\n").toString();
+    private static String defuzzify(Defuzzification d, CommentLines c) {
+        StringBuilder out = header(c, "DEFUZZIFY ", d.variable(), d.location());
+        d.range().ifPresent(r -> line(out, c, r.location(),
+                "RANGE (" + LiteralText.of(r.min()) + " .. " + LiteralText.of(r.max()) + ");"));
+        d.terms().forEach(t -> line(out, c, t.location(), term(t)));
+        d.method().ifPresent(m -> line(out, c, m.location(), "METHOD : " + m.value().keyword() + ";"));
+        d.defaultValue().ifPresent(v -> line(out, c, v.location(), "DEFAULT := " + defaultValue(v) + ";"));
+        return end(out, c, "END_DEFUZZIFY", d.location());
     }
 
     private static String defaultValue(DefaultValue v) {
@@ -142,14 +157,14 @@ public final class CanonicalWriter {
         return o instanceof Literal l ? LiteralText.of(l) : name(((VariableRef) o).name());
     }
 
-    private static String ruleBlock(RuleBlock b) {
-        StringBuilder out = new StringBuilder("RULEBLOCK ").append(name(b.name())).append('\n');
-        b.and().ifPresent(a -> line(out, "AND : " + a.value().name() + ";"));
-        b.or().ifPresent(o -> line(out, "OR : " + o.value().name() + ";"));
-        b.activation().ifPresent(a -> line(out, "ACT : " + a.value().name() + ";"));
-        b.accumulation().ifPresent(a -> line(out, "ACCU : " + a.value().name() + ";"));
-        b.rules().forEach(r -> out.append(rule(r)));
-        return out.append("END_RULEBLOCK\n").toString();
+    private static String ruleBlock(RuleBlock b, CommentLines c) {
+        StringBuilder out = header(c, "RULEBLOCK ", b.name(), b.location());
+        b.and().ifPresent(a -> line(out, c, a.location(), "AND : " + a.value().name() + ";"));
+        b.or().ifPresent(o -> line(out, c, o.location(), "OR : " + o.value().name() + ";"));
+        b.activation().ifPresent(a -> line(out, c, a.location(), "ACT : " + a.value().name() + ";"));
+        b.accumulation().ifPresent(a -> line(out, c, a.location(), "ACCU : " + a.value().name() + ";"));
+        b.rules().forEach(r -> line(out, c, r.location(), rule(r).strip()));
+        return end(out, c, "END_RULEBLOCK", b.location());
     }
 
     /** {@code RULE n : IF c THEN s1,} with each further subconclusion on its own, deeper line. */
@@ -172,9 +187,10 @@ public final class CanonicalWriter {
         return name(s.variable()) + term + weight;
     }
 
-    private static String options(OptionsBlock o) {
-        String content = o.content().isEmpty() ? "" : o.content() + "\n";
-        return "OPTIONS\n" + content + "END_OPTIONS\n";
+    private static String options(OptionsBlock o, CommentLines c) {
+        StringBuilder out = header(c, "OPTIONS", "", o.location());
+        out.append(o.content().isEmpty() ? "" : o.content() + "\n");
+        return end(out, c, "END_OPTIONS", o.location());
     }
 
     /**
@@ -185,7 +201,22 @@ public final class CanonicalWriter {
         return ReservedWords.unreserved(name);
     }
 
-    private static void line(StringBuilder out, String text) {
-        out.append(INDENT).append(text).append('\n');
+    /** A line inside a block, with the comments before it and at its end. */
+    private static void line(StringBuilder out, CommentLines c, SourceLocation item, String text) {
+        out.append(c.before(Line.ITEM, item, INDENT)).append(INDENT).append(text).append(c.after(Line.ITEM, item))
+                .append('\n');
+    }
+
+    /** A block's first line ({@code keyword name}), with its comments. */
+    private static StringBuilder header(CommentLines c, String keyword, String blockName, SourceLocation item) {
+        return new StringBuilder(c.before(Line.ITEM, item, "")).append(keyword)
+                .append(blockName.isEmpty() ? "" : name(blockName))
+                .append(c.after(Line.ITEM, item)).append('\n');
+    }
+
+    /** A block's END_… line, with its comments; the block's text. */
+    private static String end(StringBuilder out, CommentLines c, String keyword, SourceLocation item) {
+        return out.append(c.before(Line.END, item, INDENT)).append(keyword).append(c.after(Line.END, item))
+                .append('\n').toString();
     }
 }

@@ -127,6 +127,93 @@ class CoverageGapsTest {
         assertEquals(List.of(), messages(text));
     }
 
+    /**
+     * The container crane of Annex C (rule 2's pos_big corrected to pos_high), its gaps derived by hand.
+     *
+     * <p>Where each term used by a rule is above 0 (FCL terms keep their outer degrees beyond the first and last
+     * point): distance far (10,0)(22,1): d &gt; 10; medium (5,0)(10,1)(22,0): 5 &lt; d &lt; 22; close
+     * (0,0)(5,1)(10,0): 0 &lt; d &lt; 10; zero (-5,0)(0,1)(5,0): -5 &lt; d &lt; 5. angle zero: -5 &lt; a &lt; 5;
+     * neg_small (-50,0)(-5,1)(0,0): -50 &lt; a &lt; 0; neg_big (-50,1)(-5,0): a &lt; -5; pos_small (0,0)(5,1)(50,0):
+     * 0 &lt; a &lt; 50. With AND MIN a rule fires exactly where both its terms are above 0:
+     * R1 d&gt;10, -5&lt;a&lt;5; R2 d&gt;10, -50&lt;a&lt;0; R3 d&gt;10, a&lt;-5; R4 5&lt;d&lt;22, -50&lt;a&lt;0;
+     * R5 0&lt;d&lt;10, 0&lt;a&lt;50; R6 -5&lt;d&lt;5, -5&lt;a&lt;5.
+     *
+     * <p>The angles no rule covers, slab by slab of distance:
+     * <pre>
+     * d &lt;= -5      : every a (no distance term above 0)
+     * -5 &lt; d &lt;= 0  : a &lt;= -5 or a &gt;= 5        (R6 only; close(0) = 0)
+     * 0 &lt; d &lt; 5    : a &lt;= -5 or a &gt;= 50       (R5 and R6: -5 &lt; a &lt; 50)
+     * d = 5         : a &lt;= 0 or a &gt;= 50        (R5 only: zero(5) = medium(5) = 0)
+     * 5 &lt; d &lt; 10   : a &lt;= -50, a = 0, a &gt;= 50 (R4 and R5 meet at a = 0, where both are 0)
+     * d = 10        : a &lt;= -50 or a &gt;= 0       (R4 only: close(10) = far(10) = 0)
+     * d &gt; 10        : a &gt;= 5                   (R1, R2, R3 cover a &lt; 5; R4 adds nothing new)
+     * </pre>
+     * Joined into boxes: a &lt;= -50 for every d &lt;= 10 (1); -50 &lt; a &lt;= -5 for d &lt;= 5 (2); a &gt; -5 for
+     * d &lt;= -5 (3); the rest of d = 5, -5 &lt; a &lt;= 0 (4); a = 0 for 5 &lt; d &lt;= 10, a gap of zero width where
+     * medium's R4 and close's R5 hand over (5); the rest of d = 10, a &gt; 0 (6); a &gt;= 5 for -5 &lt; d &lt;= 0 (7);
+     * a &gt;= 5 for d &gt; 10 (8); a &gt;= 50 for 0 &lt; d &lt; 10 (9, where pos_small ends). Nine boxes, disjoint, and
+     * their union is the table: checked below both as the list and point by point on the table's breakpoints and
+     * between them.
+     */
+    @Test
+    void theCraneOfAnnexCHasTheNineHandDerivedGaps() {
+        Analysis analysis = Programs.analyzeResource("standard/crane_annex_c_corrected.fcl");
+        FunctionBlock fb = analysis.program().orElseThrow().functionBlocks().get(0);
+        CoverageGaps.Result result = CoverageGaps.of(fb, fb.ruleBlocks().get(0));
+        assertEquals(List.of("distance", "angle"), result.inputs());
+        assertEquals(0, result.undecidedCells());
+        List<String> expected = List.of(
+                "(-inf, 10] x (-inf, -50]",
+                "(-inf, 5] x (-50, -5]",
+                "(-inf, -5] x (-5, inf)",
+                "= 5 x (-5, 0]",
+                "(5, 10] x = 0",
+                "= 10 x (0, inf)",
+                "(-5, 0] x [5, inf)",
+                "(10, inf) x [5, inf)",
+                "(0, 10) x [50, inf)");
+        List<String> found = result.gaps().stream()
+                .map(b -> b.intervals().get(0) + " x " + b.intervals().get(1)).toList();
+        assertEquals(new TreeSet<>(expected), new TreeSet<>(found), found.toString());
+        assertEquals(expected.size(), found.size());
+        double[] distances = {-9, -5, -2.5, 0, 2.5, 5, 7.5, 10, 16, 22, 30};
+        double[] angles = {-70, -50, -27.5, -5, -2.5, 0, 2.5, 5, 27.5, 50, 70};
+        for (double d : distances) {
+            for (double a : angles) {
+                long boxes = result.gaps().stream().filter(b -> b.intervals().get(0).contains(d)
+                        && b.intervals().get(1).contains(a)).count();
+                assertEquals(craneGapByHand(d, a) ? 1 : 0, boxes, "distance " + d + ", angle " + a);
+            }
+        }
+        // check shows the first eight, in the analysis's order, and counts the ninth
+        List<String> shown = messages(Programs.text("standard/crane_annex_c_corrected.fcl"));
+        assertEquals(8, shown.size());
+        assertTrue(shown.get(7).endsWith("power takes DEFAULT 0 (and 1 more such regions)"), shown.get(7));
+    }
+
+    /** The table of {@link #theCraneOfAnnexCHasTheNineHandDerivedGaps}, as written there. */
+    private static boolean craneGapByHand(double d, double a) {
+        if (d <= -5) {
+            return true;
+        }
+        if (d <= 0) {
+            return a <= -5 || a >= 5;
+        }
+        if (d < 5) {
+            return a <= -5 || a >= 50;
+        }
+        if (d == 5) {
+            return a <= 0 || a >= 50;
+        }
+        if (d < 10) {
+            return a <= -50 || a == 0 || a >= 50;
+        }
+        if (d == 10) {
+            return a <= -50 || a >= 0;
+        }
+        return a >= 5;
+    }
+
     @Test
     void aCaseOfTheCorpusWhoseOneRuleLeavesTheLowerInputsUncovered() throws IOException {
         // E-COA-001: one rule 'a IS on', on := (0, 0) (1, 1): nothing fires for a <= 0, and y falls back to 0

@@ -39,6 +39,31 @@ class ConvertCommandTest {
         assertTrue(allowed.out().contains("METHOD : CoGS;"), allowed.out());
     }
 
+    /** Standard input ('-') goes by {@code <stdin>} in every location and message, as in check. */
+    @Test
+    void standardInputIsNamedStdinInEveryMessage() throws Exception {
+        byte[] lossy = Files.readAllBytes(Path.of("src/test/resources/org/fclcert/syntax/dialect/fuzzylite/obstacle.fcl"));
+        Cli toStandard = SarifOutputTest.withStdin(lossy, "convert", "--from", "fuzzylite", "-");
+        assertEquals(1, toStandard.exitCode(), toStandard.err());
+        assertTrue(toStandard.err().contains("<stdin>:47:15: error FCL-X001: O-HEDGE-VERY is not expressible"),
+                toStandard.err());
+        assertTrue(toStandard.errLines().contains("fclcert: <stdin> not converted: standard FCL cannot say exactly what"
+                + " it says; add --allow-lossy to write the nearest standard program anyway"), toStandard.err());
+
+        byte[] weighted = Files.readAllBytes(Path.of("conformance/extension/E-WITH-VAR-001.fcl"));
+        Cli toLibrary = SarifOutputTest.withStdin(weighted, "convert", "--to", "jfuzzylogic", "-");
+        assertEquals(1, toLibrary.exitCode(), toLibrary.err());
+        assertTrue(toLibrary.err().contains("<stdin>:29:17: error FCL-X101: jFuzzyLogic rejects initial values"),
+                toLibrary.err());
+        assertTrue(toLibrary.errLines().contains("fclcert: <stdin> not converted: jFuzzyLogic cannot say exactly what"
+                + " it says; add --allow-lossy to write the nearest jFuzzyLogic program anyway"), toLibrary.err());
+
+        for (Cli c : List.of(toStandard, toLibrary)) {
+            assertTrue(c.errLines().stream().noneMatch(l -> l.startsWith("-:") || l.contains("fclcert: - ")
+                    || l.contains(" - not ")), c.err());
+        }
+    }
+
     @Test
     void approximationsAskedForAreWrittenWithTheirBound(@TempDir Path dir) {
         Cli without = Cli.run("convert", "examples/jfuzzylogic/tipper.fcl");

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
+import org.fclcert.syntax.StrictReader;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -87,8 +88,10 @@ class FmtCommandTest {
         Path file = Cli.write(dir, "sloppy.fcl", SLOPPY_VALVE);
         Cli r = Cli.run("fmt", file.toString());
         assertEquals(0, r.exitCode(), r.err());
-        assertEquals(CANONICAL_VALVE, r.out());
-        assertEquals(List.of("fclcert: note: fmt does not keep comments (" + file + " has 1 comment)"), r.errLines());
+        // the comment ends the FUNCTION_BLOCK line, where it stood
+        assertEquals(CANONICAL_VALVE.replace("FUNCTION_BLOCK Fuzzy_FB\n", "FUNCTION_BLOCK Fuzzy_FB (* the valve of 5.3 *)\n"),
+                r.out());
+        assertEquals("", r.err());
     }
 
     @Test
@@ -107,18 +110,49 @@ class FmtCommandTest {
     }
 
     @Test
-    void writeKeepsAFileWithCommentsUnlessTold() {
+    void writeKeepsCommentsAndDropCommentsLeavesThemOut() {
         Path file = Cli.write(dir, "sloppy.fcl", SLOPPY_VALVE);
-        Cli refused = Cli.run("fmt", "--write", file.toString());
-        assertEquals(2, refused.exitCode());
-        assertEquals(SLOPPY_VALVE, Cli.read(file));
-        assertEquals(List.of("fclcert: " + file + " not rewritten: it has 1 comment, which fmt does not keep;"
-                + " add --drop-comments to rewrite it anyway"), refused.errLines());
+        Cli kept = Cli.run("fmt", "--write", file.toString());
+        assertEquals(0, kept.exitCode(), kept.err());
+        assertEquals(CANONICAL_VALVE.replace("FUNCTION_BLOCK Fuzzy_FB\n",
+                "FUNCTION_BLOCK Fuzzy_FB (* the valve of 5.3 *)\n"), Cli.read(file));
+        assertEquals(List.of("fclcert: rewrote " + file), kept.errLines());
 
-        Cli forced = Cli.run("fmt", "--write", "--drop-comments", file.toString());
-        assertEquals(0, forced.exitCode(), forced.err());
+        Cli dropped = Cli.run("fmt", "--write", "--drop-comments", file.toString());
+        assertEquals(0, dropped.exitCode(), dropped.err());
         assertEquals(CANONICAL_VALVE, Cli.read(file));
-        assertEquals(List.of("fclcert: rewrote " + file), forced.errLines());
+        assertEquals(List.of("fclcert: rewrote " + file), dropped.errLines());
+    }
+
+    /**
+     * The comment-rich program of CommentsKeptTest (units beside terms, block comments on their own lines and at
+     * line ends, before the first block, in VAR sections, between rules, at the end of the file): --write keeps
+     * every comment byte for byte and in order, the file reads back to the same program, and a second --write
+     * finds nothing to do.
+     */
+    @Test
+    void writeKeepsEveryCommentOfACommentRichProgram() {
+        String source = org.fclcert.write.CommentsKeptTestAccess.commentedHeater();
+        Path file = Cli.write(dir, "dryer.fcl", source);
+        Cli first = Cli.run("fmt", "--write", file.toString());
+        assertEquals(0, first.exitCode(), first.err());
+        assertEquals(List.of("fclcert: rewrote " + file), first.errLines().stream()
+                .filter(l -> l.startsWith("fclcert:")).toList());
+        String written = Cli.read(file);
+        List<String> comments = org.fclcert.write.CommentsKeptTestAccess.comments(source);
+        assertEquals(43, comments.size());
+        assertEquals(comments, org.fclcert.write.CommentsKeptTestAccess.comments(written));
+        StrictReader reader = new StrictReader();
+        assertEquals(reader.read("a", source).program().orElseThrow(), reader.read("a", written).program().orElseThrow());
+
+        Cli second = Cli.run("fmt", "--write", file.toString());
+        assertEquals(0, second.exitCode(), second.err());
+        assertTrue(second.errLines().contains("fclcert: " + file + " is already in canonical layout"), second.err());
+        assertEquals(written, Cli.read(file));
+
+        Cli check = Cli.run("fmt", "--check", file.toString());
+        assertEquals(0, check.exitCode(), check.err());
+        assertEquals("", check.out());
     }
 
     @Test

@@ -384,16 +384,105 @@ class LspClientTest {
         assertEquals(fmt.toString(), edits.get(0).getNewText());
         assertEquals(new Range(new Position(0, 0), new Position(25, 0)), edits.get(0).getRange());
 
-        String commented = open("commented.fcl", "(* the valve *)\n" + messy);
-        assertEquals(List.of(), format(commented));
-        MessageParams refusal = client.shown.poll(30, TimeUnit.SECONDS);
-        assertEquals(MessageType.Warning, refusal.getType());
-        assertTrue(refusal.getMessage().contains("1 comment") && refusal.getMessage().contains("would lose them"),
-                refusal.getMessage());
+        // comments are kept where they stood, as fmt keeps them
+        String commented = open("commented.fcl", "(* the valve *)\n" + messy.replace("  level:REAL;",
+                "  level:REAL;    (* m *)"));
+        List<? extends TextEdit> kept = format(commented);
+        StringWriter fmtCommented = new StringWriter();
+        Main.run(new PrintWriter(fmtCommented), new PrintWriter(new StringWriter()), "fmt",
+                dir.resolve("commented.fcl").toString());
+        assertEquals(1, kept.size());
+        assertEquals(fmtCommented.toString(), kept.get(0).getNewText());
+        assertTrue(kept.get(0).getNewText().startsWith("(* the valve *)\nFUNCTION_BLOCK valve\nVAR_INPUT\n"
+                + "    level : REAL; (* m *)\nEND_VAR\n"), kept.get(0).getNewText());
 
         String broken = open("broken.fcl", MISTAKES);
         assertEquals(List.of(), format(broken));
         assertTrue(client.shown.poll(30, TimeUnit.SECONDS).getMessage().contains("has errors; not formatted"));
+    }
+
+    /** A valve in jFuzzyLogic's dialect (COGS, no RANGE), laid out carelessly. */
+    private static final String JFUZZYLOGIC_MESSY = """
+            FUNCTION_BLOCK valve
+            VAR_INPUT level:REAL; END_VAR
+            VAR_OUTPUT flow:REAL; END_VAR
+            FUZZIFY level
+              TERM low:=(0,1) (6,0);  TERM high:=(4,0) (10,1);
+            END_FUZZIFY
+            DEFUZZIFY flow
+              TERM shut:=0; TERM open:=100;
+              METHOD:COGS; DEFAULT:=0;
+            END_DEFUZZIFY
+            RULEBLOCK r
+              AND:MIN; ACT:MIN; ACCU:MAX;
+              RULE 1:IF level IS low THEN flow IS open;
+              RULE 2:IF level IS high THEN flow IS shut;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    /** The next warning shown to the user (the notes of which dialect a document was read in pass by). */
+    private MessageParams shownWarning() throws InterruptedException {
+        while (true) {
+            MessageParams m = client.shown.poll(30, TimeUnit.SECONDS);
+            assertNotNull(m, "no warning shown within 30 s");
+            if (m.getType() == MessageType.Warning) {
+                return m;
+            }
+        }
+    }
+
+    @Test
+    void formattingADialectDocumentUsesThatDialectsWriter() throws Exception {
+        initialize("{\"dialect\": \"jfuzzylogic\"}");
+        String uri = open("jfl.fcl", JFUZZYLOGIC_MESSY);
+        List<? extends TextEdit> edits = format(uri);
+        assertEquals(1, edits.size());
+        String formatted = edits.get(0).getNewText();
+        // jFuzzyLogic's layout as 'fclcert convert --to jfuzzylogic' writes it (the same writer), not standard FCL
+        StringWriter converted = new StringWriter();
+        Main.run(new PrintWriter(converted), new PrintWriter(new StringWriter()), "convert", "--from", "jfuzzylogic",
+                "--to", "jfuzzylogic", dir.resolve("jfl.fcl").toString());
+        assertEquals(converted.toString(), formatted);
+        assertTrue(formatted.contains("    TERM low := (0, 1) (6, 0);\n") && formatted.contains("METHOD : COGS;"), formatted);
+        // the writer's layout is its own fixed point: formatting it again changes nothing and refuses nothing
+        String again = open("jfl-formatted.fcl", formatted);
+        assertTrue(diagnosticsOf(again).getDiagnostics().isEmpty());
+        assertEquals(List.of(), format(again));
+        for (MessageParams m = client.shown.poll(1, TimeUnit.SECONDS); m != null; m = client.shown.poll(1, TimeUnit.SECONDS)) {
+            assertEquals(MessageType.Info, m.getType(), m.getMessage());   // which dialect it was read in, nothing more
+        }
+
+        // a comment its writer would drop: left alone, and the user is told why
+        String commented = open("jfl-commented.fcl", JFUZZYLOGIC_MESSY.replace("TERM open:=100;", "TERM open:=100; // %"));
+        assertEquals(List.of(), format(commented));
+        MessageParams refusal = shownWarning();
+        assertTrue(refusal.getMessage().contains("jfl-commented.fcl is read as jFuzzyLogic; not formatted: it has"
+                + " 1 comment, which fclcert's jFuzzyLogic writer does not keep"), refusal.getMessage());
+
+        // a format fclcert reads but cannot write
+        remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
+                JsonParser.parseString("{\"fclcert\": {\"dialect\": \"fll\"}}")));
+        String fll = open("dimmer.fll", """
+                Engine: dimmer
+                InputVariable: x
+                  range: 0.000 1.000
+                  term: low Triangle 0.000 0.250 0.500
+                OutputVariable: y
+                  range: 0.000 1.000
+                  aggregation: Maximum
+                  defuzzifier: Centroid 200
+                  default: nan
+                  term: dim Triangle 0.000 0.250 0.500
+                RuleBlock: rules
+                  implication: Minimum
+                  rule: if x is low then y is dim
+                """);
+        diagnosticsOf(fll);
+        assertEquals(List.of(), format(fll));
+        MessageParams none = shownWarning();
+        assertTrue(none.getMessage().contains("dimmer.fll is read as fuzzylite's FLL, and fclcert has no writer of"
+                + " fuzzylite's FLL; not formatted"), none.getMessage());
     }
 
     @Test
