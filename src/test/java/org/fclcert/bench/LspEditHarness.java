@@ -51,7 +51,8 @@ public final class LspEditHarness {
                 pct(w, 90), pct(w, 100));
         System.out.printf("cpu ms per edit (all JVM threads): median %.1f, p10 %.1f, p90 %.1f%n", pct(c, 50),
                 pct(c, 10), pct(c, 90));
-        System.out.printf("heap after GC: edit 100 %.1f MB, edit %d %.1f MB%n", heapAt100 / 1048576.0, edits,
+        System.out.printf("heap after GC: edit 100 %s, edit %d %.1f MB%n",
+                heapAt100 < 0 ? "not reached" : String.format("%.1f MB", heapAt100 / 1048576.0), edits,
                 heapAtEnd / 1048576.0);
     }
 
