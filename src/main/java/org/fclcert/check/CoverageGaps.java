@@ -143,6 +143,9 @@ public final class CoverageGaps {
             return Result.not("it would take " + cells + " cells × " + nodes + " condition nodes (at most "
                     + MAX_WORK + ")");
         }
+        // rules with the same condition have the same degree on every cell: evaluate each condition once
+        // (a large block repeats its conditions across outputs and weights); the limits above count every rule
+        List<int[]> distinct = distinct(programs);
         int[][] andTable = table(and, true);
         int[][] orTable = table(or, false);
         boolean[] gap = new boolean[(int) cells];
@@ -153,7 +156,7 @@ public final class CoverageGaps {
             decode(index, axes, cell);
             boolean certainlyZero = true;
             boolean fires = false;
-            for (int[] program : programs) {
+            for (int[] program : distinct) {
                 int mask = run(program, compiler.leaves, cell, stack, andTable, orTable);
                 if ((mask & ZERO) == 0) {
                     fires = true;
@@ -173,6 +176,26 @@ public final class CoverageGaps {
         }
         List<Box> boxes = boxes(gap, axes);
         return new Result(axes.stream().map(a -> a.variable).toList(), boxes, undecided, Optional.empty());
+    }
+
+    /** The programs without repeats, in first-seen order. */
+    private static List<int[]> distinct(List<int[]> programs) {
+        record Key(int[] program) {
+            @Override
+            public boolean equals(Object o) {
+                return o instanceof Key k && Arrays.equals(program, k.program);
+            }
+
+            @Override
+            public int hashCode() {
+                return Arrays.hashCode(program);
+            }
+        }
+        java.util.Set<Key> seen = new java.util.LinkedHashSet<>();
+        for (int[] p : programs) {
+            seen.add(new Key(p));
+        }
+        return seen.stream().map(Key::program).toList();
     }
 
     /** The cell of each axis for a flat index (axis 0 varies fastest). */
@@ -368,6 +391,8 @@ public final class CoverageGaps {
         final FunctionBlock block;
         final List<Axis> axes = new ArrayList<>();
         final List<Leaf> leaves = new ArrayList<>();
+        /** Leaves made so far, by the subcondition's spelling: a large block names the same few thousand times. */
+        private final java.util.Map<List<Object>, Integer> made = new java.util.HashMap<>();
         String why = "";
 
         Compiler(FunctionBlock block) {
@@ -416,8 +441,23 @@ public final class CoverageGaps {
             return c instanceof Condition.And a ? a.operands() : ((Condition.Or) c).operands();
         }
 
-        /** The leaf of a subcondition, or -1 with {@link #why} set. */
+        /** The leaf of a subcondition, or -1 with {@link #why} set; the same leaf for the same spelling. */
         private int leaf(Condition c) {
+            List<Object> key = c instanceof Condition.TermSubcondition t
+                    ? Arrays.asList(t.variable(), t.term(), t.hedges(), t.negated(), t.any())
+                    : List.of(((Condition.VariableSubcondition) c).variable());
+            Integer known = made.get(key);
+            if (known != null) {
+                return known;
+            }
+            int leaf = newLeaf(c);
+            if (leaf >= 0) {
+                made.put(key, leaf);
+            }
+            return leaf;
+        }
+
+        private int newLeaf(Condition c) {
             String variable = c instanceof Condition.TermSubcondition t ? t.variable()
                     : ((Condition.VariableSubcondition) c).variable();
             Optional<Variable> declared = block.variable(variable);

@@ -2,23 +2,18 @@ package org.fclcert.lsp;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.function.Function;
 import org.eclipse.lsp4j.CompletionItem;
 import org.eclipse.lsp4j.CompletionItemKind;
 import org.eclipse.lsp4j.Position;
-import org.fclcert.model.AccumulationMethod;
-import org.fclcert.model.ActivationMethod;
-import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DataType;
-import org.fclcert.model.DefuzzificationMethod;
-import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.ExpectedKeywords;
 import org.fclcert.syntax.FclLexer;
 import org.fclcert.syntax.SyntaxCode;
+import org.fclcert.syntax.dialect.DialectMethods;
 
 /**
  * Completion that knows where the cursor is. Names of the function block: its inputs after IF, AND, OR, NOT and
@@ -46,32 +41,34 @@ final class Completions {
         int prev = n > 1 ? tokens.get(n - 2).type() : -1;
         String block = outline.blockAt(Math.max(0, n - 1)).orElse("");
         if (last == FclLexer.COLON) {
+            DialectMethods standard = DialectMethods.STANDARD;
+            DialectMethods dialect = DialectMethods.of(s.dialect());
+            String in = s.dialect().displayName();
             switch (prev) {
                 case FclLexer.AND -> {
-                    return methods(Arrays.stream(AndAlgorithm.values()).filter(AndAlgorithm::standard).map(Enum::name)
-                            .toList(), "AND algorithm, " + SyntaxCode.OPERATOR_DEFINITION.clause());
+                    return methods(standard.and(), dialect.and(), "AND algorithm, "
+                            + SyntaxCode.OPERATOR_DEFINITION.clause(), in);
                 }
                 case FclLexer.OR -> {
-                    return methods(Arrays.stream(OrAlgorithm.values()).filter(OrAlgorithm::standard).map(Enum::name)
-                            .toList(), "OR algorithm, " + SyntaxCode.OPERATOR_DEFINITION.clause());
+                    return methods(standard.or(), dialect.or(), "OR algorithm, "
+                            + SyntaxCode.OPERATOR_DEFINITION.clause(), in);
                 }
                 case FclLexer.ACT -> {
-                    return methods(Arrays.stream(ActivationMethod.values()).filter(ActivationMethod::standard)
-                            .map(Enum::name).toList(), "activation method, " + SyntaxCode.ACTIVATION.clause());
+                    return methods(standard.activation(), dialect.activation(), "activation method, "
+                            + SyntaxCode.ACTIVATION.clause(), in);
                 }
                 case FclLexer.ACCU -> {
-                    return methods(Arrays.stream(AccumulationMethod.values()).filter(AccumulationMethod::standard)
-                            .map(Enum::name).toList(), "accumulation method, " + SyntaxCode.ACCUMULATION.clause());
+                    return methods(standard.accumulation(), dialect.accumulation(), "accumulation method, "
+                            + SyntaxCode.ACCUMULATION.clause(), in);
                 }
                 case FclLexer.METHOD -> {
-                    return methods(Arrays.stream(DefuzzificationMethod.values()).filter(DefuzzificationMethod::standard)
-                            .map(DefuzzificationMethod::keyword).toList(),
-                            "defuzzification method, " + SyntaxCode.METHOD.clause());
+                    return methods(standard.defuzzification(), dialect.defuzzification(), "defuzzification method, "
+                            + SyntaxCode.METHOD.clause(), in);
                 }
                 default -> {
                     if (inSection(tokens, n, FclLexer.VAR_INPUT, FclLexer.VAR_OUTPUT, FclLexer.VAR, FclLexer.END_VAR)) {
-                        return methods(Arrays.stream(DataType.values()).map(Enum::name).toList(),
-                                "data type, " + SyntaxCode.NOT_ELEMENTARY_TYPE.clause());
+                        return names(Arrays.stream(DataType.values()).map(Enum::name).toList(),
+                                CompletionItemKind.EnumMember, "data type, " + SyntaxCode.NOT_ELEMENTARY_TYPE.clause());
                     }
                 }
             }
@@ -122,8 +119,16 @@ final class Completions {
         return false;
     }
 
-    private static List<CompletionItem> methods(List<String> words, String detail) {
-        return items(words, CompletionItemKind.EnumMember, w -> detail);
+    /**
+     * The standard's words, then those only the document's dialect reads (its spellings, e.g. jFuzzyLogic's
+     * {@code NIPMIN}), each said to be the dialect's.
+     */
+    private static List<CompletionItem> methods(List<String> standard, List<String> dialect, String detail,
+            String dialectName) {
+        List<String> words = new ArrayList<>(standard);
+        words.addAll(dialect);
+        return items(words, CompletionItemKind.EnumMember, w -> standard.stream().anyMatch(w::equalsIgnoreCase)
+                ? detail : detail.substring(0, detail.indexOf(',')) + " of " + dialectName + " (not in the standard)");
     }
 
     private static List<CompletionItem> names(List<String> names, CompletionItemKind kind, String detail) {
@@ -135,10 +140,14 @@ final class Completions {
                 w -> KeywordHelp.of(w).map(h -> h.clause() + ": " + h.meaning()).orElse("keyword"));
     }
 
+    /** One item per word, the first spelling of words equal but for case. */
     private static List<CompletionItem> items(List<String> words, CompletionItemKind kind, Function<String, String> detail) {
-        Set<String> seen = new LinkedHashSet<>(words);
+        Set<String> seen = new java.util.HashSet<>();
         List<CompletionItem> out = new ArrayList<>();
-        for (String w : seen) {
+        for (String w : words) {
+            if (!seen.add(w.toUpperCase(java.util.Locale.ROOT))) {
+                continue;
+            }
             CompletionItem item = new CompletionItem(w);
             item.setKind(kind);
             item.setDetail(detail.apply(w));

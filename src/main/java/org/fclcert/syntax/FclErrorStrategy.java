@@ -72,9 +72,16 @@ final class FclErrorStrategy extends DefaultErrorStrategy {
                 || recognizer.getContext() instanceof FclParser.TypeNameContext) {
             return false;
         }
-        IntervalSet expected = recognizer.getExpectedTokens();
+        // cheap tests first: this runs at every keyword of the text (sync), and the full expected set walks the
+        // parser's whole context; the state's own next tokens are a subset of it, cached by the ATN
         int next = recognizer.getInputStream().LA(2);
-        if (expected.contains(t.getType()) || !expected.contains(FclLexer.IDENT) || !SyntaxMessages.followsName(next)) {
+        if (!SyntaxMessages.followsName(next)
+                || recognizer.getATN().nextTokens(recognizer.getATN().states.get(recognizer.getState()))
+                        .contains(t.getType())) {
+            return false;
+        }
+        IntervalSet expected = recognizer.getExpectedTokens();
+        if (expected.contains(t.getType()) || !expected.contains(FclLexer.IDENT)) {
             return false;
         }
         boolean recoveredBefore = reported;

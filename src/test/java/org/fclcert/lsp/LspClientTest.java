@@ -340,7 +340,8 @@ class LspClientTest {
 
     @Test
     void completionKnowsWhereItIs() throws Exception {
-        initialize(null);
+        // strict: under auto the cut texts below (no DEFAULT) would read as jFuzzyLogic, whose words come too
+        initialize("{\"dialect\": \"strict\"}");
         String head = VALID.substring(0, VALID.indexOf("    RULE 1"));
         assertEquals(List.of("level", "NOT"), complete(head + "    RULE 1 : IF "));
         assertEquals(List.of("level", "NOT"), complete(head + "    RULE 1 : IF level IS low AND "));
@@ -365,6 +366,46 @@ class LspClientTest {
         List<String> items = complete("FUNCTION_BLOCK f\n");
         assertTrue(items.containsAll(List.of("END_FUNCTION_BLOCK", "VAR_INPUT", "VAR_OUTPUT", "FUZZIFY", "RULEBLOCK")), items.toString());
         assertFalse(items.contains("OPTION"), "5.4's OPTION spelling is reported, not offered");
+    }
+
+    /**
+     * In a library's dialect the standard's words come first, then the dialect's own spellings. The expected words
+     * are the libraries' own: jFuzzyLogic's FclParser (its jar) has the tokens DMIN, NIPMIN, HAMACHER, DMAX,
+     * NIPMAX, EINSTEIN, PROBOR and COGF; fuzzylite's FCL importer reads the s-norms ASUM, SUM, ESUM (Einstein),
+     * HSUM (Hamacher), DSUM (drastic), NMAX (nilpotent) for ACCU and LM, RM, MM, COGSS besides the standard's.
+     */
+    @Test
+    void completionOffersTheDialectsMethodsToo() throws Exception {
+        initialize("{\"dialect\": \"jfuzzylogic\"}");
+        String block = VALID.substring(0, VALID.indexOf("    AND : MIN"));
+        assertEquals(List.of("MIN", "PROD", "BDIF", "DMIN", "NIPMIN", "HAMACHER"), complete(block + "    AND : "));
+        assertEquals(List.of("MAX", "ASUM", "BSUM", "DMAX", "NIPMAX", "EINSTEIN"), complete(block + "    OR : "));
+        assertEquals(List.of("MAX", "BSUM", "NSUM", "PROBOR", "SUM"), complete(block + "    ACCU : "));
+        String defuzzify = VALID.substring(0, VALID.indexOf("    METHOD"));
+        assertEquals(List.of("CoG", "CoGS", "CoA", "LM", "RM", "COGF", "MM"), complete(defuzzify + "    METHOD : "));
+        String uri = open("jfl.fcl", block + "    OR : ");
+        String[] lines = (block + "    OR : ").split("\n", -1);
+        List<CompletionItem> items = remote.getTextDocumentService().completion(new CompletionParams(doc(uri),
+                new Position(lines.length - 1, lines[lines.length - 1].length()))).get(30, TimeUnit.SECONDS).getLeft();
+        assertEquals("OR algorithm, Table 3", items.get(0).getDetail());
+        assertEquals("OR algorithm of jFuzzyLogic (not in the standard)", items.get(3).getDetail());
+
+        remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
+                JsonParser.parseString("{\"fclcert\": {\"dialect\": \"fuzzylite\"}}")));
+        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "SUM", "ESUM", "HSUM", "DSUM", "NMAX"),
+                complete(block + "    ACCU : "));
+        assertEquals(List.of("CoG", "CoGS", "CoA", "LM", "RM", "MM", "COGSS"), complete(defuzzify + "    METHOD : "));
+        remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
+                JsonParser.parseString("{\"fclcert\": {\"dialect\": \"ffll\"}}")));
+        assertEquals(List.of("CoG", "CoGS", "CoA", "LM", "RM", "MoM"), complete(defuzzify + "    METHOD : "));
+        assertEquals(List.of("MIN", "PROD", "BDIF"), complete(block + "    AND : "));
+
+        // detected, not set: ACCU inside DEFUZZIFY gives fuzzylite away (docs/dialects.md)
+        remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
+                JsonParser.parseString("{\"fclcert\": {\"dialect\": \"auto\"}}")));
+        String fuzzylite = VALID.replace("    METHOD : CoGS;\n", "    METHOD : CoGS;\n    ACCU : MAX;\n");
+        String accu = fuzzylite.substring(0, fuzzylite.indexOf("    ACCU : MAX;\n    RULE") + "    ACCU : ".length());
+        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "SUM", "ESUM", "HSUM", "DSUM", "NMAX"), complete(accu));
     }
 
     private List<? extends TextEdit> format(String uri) throws Exception {

@@ -21,6 +21,14 @@ public interface DialectReader extends FclReader {
     List<Giveaway> giveaways(String text);
 
     /**
+     * The words the dialect reads after {@code AND :}, {@code OR :}, {@code ACT :}, {@code ACCU :} and
+     * {@code METHOD :}; the standard's for a format without those statements (FLL, FIS).
+     */
+    default DialectMethods methods() {
+        return DialectMethods.STANDARD;
+    }
+
+    /**
      * One piece of evidence for a dialect: a construct in words, the 1-based line it is on, and how specific
      * it is (1: another library writes it too; 3: no other dialect has it).
      */

@@ -5,6 +5,7 @@ import java.util.Comparator;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Feature;
@@ -29,10 +30,21 @@ import org.fclcert.syntax.StrictReader;
  * then run on it. Thread-safe: every read has its own state.
  */
 public final class FfllReader implements DialectReader {
+    /** The METHOD words FFLL reads beyond Table 1. */
+    private static final Set<DefuzzificationMethod> OTHER_METHODS = EnumSet.of(DefuzzificationMethod.MOM);
 
     @Override
     public Dialect dialect() {
         return Dialect.FFLL;
+    }
+
+    /** The standard's, and MoM after METHOD. */
+    @Override
+    public DialectMethods methods() {
+        DialectMethods s = DialectMethods.STANDARD;
+        List<String> methods = new ArrayList<>(s.defuzzification());
+        OTHER_METHODS.forEach(m -> methods.add(m.keyword()));
+        return new DialectMethods(s.and(), s.or(), s.activation(), s.accumulation(), methods);
     }
 
     @Override
@@ -42,7 +54,7 @@ public final class FfllReader implements DialectReader {
 
     private static ReadResult read(String sourceName, String text, FfllTokens tokens) {
         String name = sourceName == null ? "<input>" : sourceName;
-        ReaderOptions options = new ReaderOptions(EnumSet.of(DefuzzificationMethod.MOM), true, true, tokens);
+        ReaderOptions options = new ReaderOptions(OTHER_METHODS, true, true, tokens);
         ReadResult strict = new StrictReader(options).read(name, text == null ? "" : text);
         List<Diagnostic> diagnostics = new ArrayList<>(strict.diagnostics());
         if (strict.program().isEmpty()) {

@@ -22,6 +22,11 @@ public final class FuzzyliteReader implements DialectReader {
     }
 
     @Override
+    public DialectMethods methods() {
+        return DialectMethods.of(DIALECT);
+    }
+
+    @Override
     public List<Giveaway> giveaways(String text) {
         return Giveaways.find(text, DIALECT);
     }

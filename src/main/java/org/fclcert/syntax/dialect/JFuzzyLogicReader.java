@@ -21,6 +21,11 @@ public final class JFuzzyLogicReader implements DialectReader {
     }
 
     @Override
+    public DialectMethods methods() {
+        return DialectMethods.of(DIALECT);
+    }
+
+    @Override
     public List<Giveaway> giveaways(String text) {
         return Giveaways.find(text, DIALECT);
     }
