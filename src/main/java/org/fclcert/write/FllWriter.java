@@ -19,7 +19,6 @@ import org.fclcert.model.OrAlgorithm;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
 import org.fclcert.model.RuleBlock;
-import org.fclcert.model.Subconclusion;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.syntax.dialect.Dialect;
@@ -190,16 +189,7 @@ public final class FllWriter implements DialectWriter {
         out.append(IN).append("implication: ").append(className(FllReader.T_NORMS, act.name())).append('\n');
         out.append(IN).append("activation: General\n");
         for (RuleLines.Line line : lines) {
-            StringBuilder r = new StringBuilder(IN).append("rule: if ").append(LibraryConditions.fuzzylite(
-                    line.condition(), cx, and, or, line.rule().name())).append(" then ");
-            for (int i = 0; i < line.group().parts().size(); i++) {
-                Subconclusion s = line.group().parts().get(i);
-                r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
-                        .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
-            }
-            line.group().weight().ifPresent(w -> r.append(" with ").append(w));
-            out.append(r).append('\n');
+            out.append(IN).append("rule: ").append(FuzzyliteWriter.rule(cx, line, and, or, act)).append('\n');
         }
     }
 

@@ -230,18 +230,26 @@ public final class FuzzyliteWriter implements DialectWriter {
         out.append(IN).append("ACT : ").append(rb.activation().map(a -> a.value().name()).orElse("MIN")).append(";\n");
         ActivationMethod act = rb.activation().map(Located::value).orElse(ActivationMethod.MIN);
         for (RuleLines.Line line : lines) {
-            String condition = LibraryConditions.fuzzylite(line.condition(), cx, and, or, line.rule().name());
-            StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : if ").append(condition)
-                    .append(" then ");
-            for (int i = 0; i < line.group().parts().size(); i++) {
-                Subconclusion s = line.group().parts().get(i);
-                r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
-                        .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
-            }
-            line.group().weight().ifPresent(w -> r.append(" with ").append(w));
-            out.append(r).append('\n');
+            out.append(IN).append("RULE ").append(line.name()).append(" : ").append(rule(cx, line, and, or, act))
+                    .append('\n');
         }
         out.append("END_RULEBLOCK\n\n");
+    }
+
+    /**
+     * A rule as fuzzylite's rule parser reads it, in its FCL and in FLL alike: {@code if CONDITION then v is t and ...
+     * [with w]}, noting a weight fuzzylite folds in before activation.
+     */
+    static String rule(BlockContext cx, RuleLines.Line line, AndAlgorithm and, OrAlgorithm or, ActivationMethod act) {
+        StringBuilder r = new StringBuilder("if ").append(LibraryConditions.fuzzylite(line.condition(), cx, and, or,
+                line.rule().name())).append(" then ");
+        for (int i = 0; i < line.group().parts().size(); i++) {
+            Subconclusion s = line.group().parts().get(i);
+            r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
+                    .append(cx.term(s.variable(), s.term().orElseThrow()));
+            RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
+        }
+        line.group().weight().ifPresent(w -> r.append(" with ").append(w));
+        return r.toString();
     }
 }
