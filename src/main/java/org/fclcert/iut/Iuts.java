@@ -98,7 +98,15 @@ public final class Iuts {
                             "FFLL reads only the first function block and loads programs from files; a crash (segmentation"
                                     + " fault) ends its process, which is restarted",
                             "see docs/iut-protocol.md, \"FFLL\""),
-                    (spec, argument, options) -> FfllIut.open(spec, options)));
+                    (spec, argument, options) -> FfllIut.open(spec, options)),
+            new Kind(PyfuzzyliteIut.SPEC, "pyfuzzylite[:PYTHON]", "pyfuzzylite 8 (PyPI) through fclcert's bridge, in a"
+                    + " Python process of its own", Argument.OPTIONAL, Optional.of(Dialect.FLL), List.of(
+                            "pyfuzzylite reads only FLL: standard FCL is refused by its FLL importer, so its semantics"
+                                    + " are reached only through the cases presented as FLL",
+                            "FLL holds one engine: only the first function block of a program is presented",
+                            "its importer names no line: the bridge gives the first line that its message quotes",
+                            "see docs/iut-protocol.md, \"pyfuzzylite\""),
+                    (spec, argument, options) -> PyfuzzyliteIut.open(spec, options)));
 
     /** The kind a spec names, if any. */
     public static Optional<Kind> kind(String spec) {

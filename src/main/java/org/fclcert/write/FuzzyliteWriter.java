@@ -112,7 +112,7 @@ public final class FuzzyliteWriter implements DialectWriter {
         }
     }
 
-    private static void name(BlockContext cx, String name, org.fclcert.model.SourceLocation at) {
+    static void name(BlockContext cx, String name, org.fclcert.model.SourceLocation at) {
         if (RULE_WORDS.contains(name)) {
             cx.findings.lost(at, WriterCode.NAME, "'" + name + "' is a keyword or hedge of fuzzylite's rules; a rule"
                     + " naming it is read otherwise");
@@ -153,9 +153,35 @@ public final class FuzzyliteWriter implements DialectWriter {
         }
         DefuzzificationMethod m = d.method().map(Located::value).orElse(DefuzzificationMethod.COG);
         out.append(IN).append("METHOD : ").append(LibraryText.method(m)).append(";\n");
+        defuzzificationNotes(cx, d, m, "100 samples of the RANGE");
+        AccumulationMethod a = accu == null ? AccumulationMethod.MAX : accu.value();
+        // fuzzylite's names: ASUM for PROBOR, the others (MAX, BSUM, NSUM, SUM, ESUM, HSUM, DSUM, NMAX) as the model's
+        out.append(IN).append("ACCU : ").append(a == AccumulationMethod.PROBOR ? "ASUM" : a.name()).append(";\n");
+        if (a == AccumulationMethod.NSUM) {
+            cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite computes ACCU NSUM of '" + name
+                    + "' as BSUM");
+        }
+        Optional<DefaultValue> def = d.defaultValue();
+        if (def.isPresent() && def.get() instanceof DefaultValue.Constant c) {
+            out.append(IN).append("DEFAULT := ").append(Double.isNaN(c.value().value()) ? "nan"
+                    : LibraryText.number(c.value())).append(";\n");
+        } else if (def.isPresent()) {
+            // fuzzylite keeps the previous value with LOCK : PREVIOUS and gives DEFAULT before the first one,
+            // which is the output's initial value in fclcert (0: fuzzylite has no initial values)
+            out.append(IN).append("DEFAULT := 0;\n").append(IN).append("LOCK : PREVIOUS;\n");
+        }
+        out.append("END_DEFUZZIFY\n\n");
+    }
+
+    /**
+     * What fuzzylite computes otherwise than the standard for output {@code d} defuzzified by {@code m}, or cannot
+     * say; {@code samples} says how the library samples (its FCL and FLL readers sample alike).
+     */
+    static void defuzzificationNotes(BlockContext cx, Defuzzification d, DefuzzificationMethod m, String samples) {
+        String name = cx.variable(d.variable());
         if (cx.pointTerms(d.variable()) && LibraryText.sampled(m)) {
             cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.SAMPLED,
-                    "fuzzylite 6 computes " + m.keyword() + " of '" + name + "' from 100 samples of the RANGE, not exactly");
+                    "fuzzylite 6 computes " + m.keyword() + " of '" + name + "' from " + samples + ", not exactly");
         }
         if (!cx.pointTerms(d.variable()) && m != DefuzzificationMethod.COGS && m != DefuzzificationMethod.COGSS) {
             cx.findings.differs(d.method().map(Located::location).orElse(d.location()), WriterCode.IGNORED_BY_LIBRARY,
@@ -185,23 +211,6 @@ public final class FuzzyliteWriter implements DialectWriter {
                 }
             }
         }
-        AccumulationMethod a = accu == null ? AccumulationMethod.MAX : accu.value();
-        // fuzzylite's names: ASUM for PROBOR, the others (MAX, BSUM, NSUM, SUM, ESUM, HSUM, DSUM, NMAX) as the model's
-        out.append(IN).append("ACCU : ").append(a == AccumulationMethod.PROBOR ? "ASUM" : a.name()).append(";\n");
-        if (a == AccumulationMethod.NSUM) {
-            cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite computes ACCU NSUM of '" + name
-                    + "' as BSUM");
-        }
-        Optional<DefaultValue> def = d.defaultValue();
-        if (def.isPresent() && def.get() instanceof DefaultValue.Constant c) {
-            out.append(IN).append("DEFAULT := ").append(Double.isNaN(c.value().value()) ? "nan"
-                    : LibraryText.number(c.value())).append(";\n");
-        } else if (def.isPresent()) {
-            // fuzzylite keeps the previous value with LOCK : PREVIOUS and gives DEFAULT before the first one,
-            // which is the output's initial value in fclcert (0: fuzzylite has no initial values)
-            out.append(IN).append("DEFAULT := 0;\n").append(IN).append("LOCK : PREVIOUS;\n");
-        }
-        out.append("END_DEFUZZIFY\n\n");
     }
 
     private static void ruleBlock(BlockContext cx, RuleBlock rb, StringBuilder out) {
@@ -221,18 +230,26 @@ public final class FuzzyliteWriter implements DialectWriter {
         out.append(IN).append("ACT : ").append(rb.activation().map(a -> a.value().name()).orElse("MIN")).append(";\n");
         ActivationMethod act = rb.activation().map(Located::value).orElse(ActivationMethod.MIN);
         for (RuleLines.Line line : lines) {
-            String condition = LibraryConditions.fuzzylite(line.condition(), cx, and, or, line.rule().name());
-            StringBuilder r = new StringBuilder(IN).append("RULE ").append(line.name()).append(" : if ").append(condition)
-                    .append(" then ");
-            for (int i = 0; i < line.group().parts().size(); i++) {
-                Subconclusion s = line.group().parts().get(i);
-                r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
-                        .append(cx.term(s.variable(), s.term().orElseThrow()));
-                RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
-            }
-            line.group().weight().ifPresent(w -> r.append(" with ").append(w));
-            out.append(r).append('\n');
+            out.append(IN).append("RULE ").append(line.name()).append(" : ").append(rule(cx, line, and, or, act))
+                    .append('\n');
         }
         out.append("END_RULEBLOCK\n\n");
+    }
+
+    /**
+     * A rule as fuzzylite's rule parser reads it, in its FCL and in FLL alike: {@code if CONDITION then v is t and ...
+     * [with w]}, noting a weight fuzzylite folds in before activation.
+     */
+    static String rule(BlockContext cx, RuleLines.Line line, AndAlgorithm and, OrAlgorithm or, ActivationMethod act) {
+        StringBuilder r = new StringBuilder("if ").append(LibraryConditions.fuzzylite(line.condition(), cx, and, or,
+                line.rule().name())).append(" then ");
+        for (int i = 0; i < line.group().parts().size(); i++) {
+            Subconclusion s = line.group().parts().get(i);
+            r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
+                    .append(cx.term(s.variable(), s.term().orElseThrow()));
+            RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
+        }
+        line.group().weight().ifPresent(w -> r.append(" with ").append(w));
+        return r.toString();
     }
 }

@@ -97,5 +97,7 @@ class CorpusRoundTripTest {
         assertTrue(TALLIES.get(Dialect.FFLL).equal().size() >= 53, "ffll");
         assertTrue(TALLIES.get(Dialect.JFUZZYLOGIC).equal().size() >= 98, "jfuzzylogic");
         assertTrue(TALLIES.get(Dialect.FUZZYLITE).equal().size() >= 100, "fuzzylite");
+        // FLL: 105 of 137 (2026-12-03); it cannot say data types, a second function block or an output without DEFUZZIFY
+        assertTrue(TALLIES.get(Dialect.FLL).equal().size() >= 105, "fll");
     }
 }

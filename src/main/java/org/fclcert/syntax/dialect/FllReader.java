@@ -16,15 +16,15 @@ import org.fclcert.syntax.ReadResult;
  */
 public final class FllReader implements DialectReader {
     /** FLL's t-norm class names and their fuzzylite FCL names. */
-    static final Map<String, String> T_NORMS = Map.of("Minimum", "MIN", "AlgebraicProduct", "PROD",
+    public static final Map<String, String> T_NORMS = Map.of("Minimum", "MIN", "AlgebraicProduct", "PROD",
             "BoundedDifference", "BDIF", "DrasticProduct", "DPROD", "EinsteinProduct", "EPROD",
             "HamacherProduct", "HPROD", "NilpotentMinimum", "NMIN");
     /** FLL's s-norm class names and their fuzzylite FCL names. */
-    static final Map<String, String> S_NORMS = Map.of("Maximum", "MAX", "AlgebraicSum", "ASUM",
+    public static final Map<String, String> S_NORMS = Map.of("Maximum", "MAX", "AlgebraicSum", "ASUM",
             "BoundedSum", "BSUM", "DrasticSum", "DSUM", "EinsteinSum", "ESUM", "HamacherSum", "HSUM",
             "NilpotentMaximum", "NMAX", "NormalizedSum", "NSUM", "UnboundedSum", "SUM");
     /** FLL's defuzzifier class names and their fuzzylite FCL METHOD. */
-    static final Map<String, String> DEFUZZIFIERS = Map.of("Centroid", "COG", "Bisector", "COA",
+    public static final Map<String, String> DEFUZZIFIERS = Map.of("Centroid", "COG", "Bisector", "COA",
             "SmallestOfMaximum", "LM", "LargestOfMaximum", "RM", "MeanOfMaximum", "MM",
             "WeightedAverage", "COGS", "WeightedSum", "COGSS");
     private static final List<String> SECTIONS = List.of("Engine", "InputVariable", "OutputVariable", "RuleBlock");
@@ -151,7 +151,8 @@ public final class FllReader implements DialectReader {
                 }
                 case "OutputVariable.lock-range" -> flag(t, l, "LOCK : RANGE;");
                 case "OutputVariable.lock-previous", "OutputVariable.lock-valid" -> flag(t, l, "LOCK : PREVIOUS;");
-                case "InputVariable.term", "OutputVariable.term" -> term(t, l);
+                case "InputVariable.term" -> term(t, l, false);
+                case "OutputVariable.term" -> term(t, l, true);
                 case "OutputVariable.aggregation", "OutputVariable.accumulation" -> {
                     if (!v.equals("none")) {
                         named(t, l, S_NORMS, "ACCU", "an s-norm");
@@ -230,8 +231,12 @@ public final class FllReader implements DialectReader {
         }
     }
 
-    /** {@code term: NAME Class parameters...}: fuzzylite FCL writes the same class and parameters. */
-    private static void term(EngineText t, Line l) {
+    /**
+     * {@code term: NAME Class parameters...}: fuzzylite FCL writes the same class and parameters, but for an output's
+     * {@code Constant}, which fuzzylite's FCL writes as the bare number ({@code TERM t := v;}, read by fuzzylite as
+     * this same Constant): so fclcert reads it as the singleton it is, evaluated exactly like one written in FCL.
+     */
+    private static void term(EngineText t, Line l, boolean output) {
         String[] w = l.value.split("\\s+", 3);
         if (w.length < 2 || w[0].isEmpty()) {
             t.error(l.index, DialectCode.SYNTAX, "expected 'term: NAME Class parameters...', found '" + l.value + "'");
@@ -240,6 +245,11 @@ public final class FllReader implements DialectReader {
         String params = w.length > 2 ? w[2] : "";
         if (!ShapeNames.FUZZYLITE.known(w[1])) {
             t.error(l.index, DialectCode.UNKNOWN_SHAPE, "'" + w[1] + "' is no term class of fuzzylite");
+            return;
+        }
+        if (output && w[1].equals("Constant") && EngineText.number(params).filter(n -> !n.equals("nan")
+                && !n.contains("inf")).isPresent()) {
+            t.put(l.index, "TERM " + w[0] + " := " + EngineText.number(params).get() + ";");
             return;
         }
         t.put(l.index, "TERM " + w[0] + " := " + w[1] + (params.isEmpty() ? "" : " " + params) + ";");
