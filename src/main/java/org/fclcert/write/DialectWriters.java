@@ -47,7 +47,8 @@ public final class DialectWriters {
             case FFLL -> new FfllWriter();
             case JFUZZYLOGIC -> new JFuzzyLogicWriter();
             case FUZZYLITE -> new FuzzyliteWriter();
-            case FLL, FIS -> null;
+            case FIS -> new FisWriter();
+            case FLL -> null;
         });
     }
 
