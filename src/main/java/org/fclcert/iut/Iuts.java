@@ -98,7 +98,16 @@ public final class Iuts {
                             "FFLL reads only the first function block and loads programs from files; a crash (segmentation"
                                     + " fault) ends its process, which is restarted",
                             "see docs/iut-protocol.md, \"FFLL\""),
-                    (spec, argument, options) -> FfllIut.open(spec, options)));
+                    (spec, argument, options) -> FfllIut.open(spec, options)),
+            new Kind(OctaveFltIut.SPEC, "octave-flt[:OCTAVE-CLI]", "the Octave fuzzy-logic-toolkit (readfis, evalfis)"
+                    + " through fclcert's bridge, one octave-cli per session", Argument.OPTIONAL, Optional.of(Dialect.FIS),
+                    List.of("it reads MATLAB's FIS only: programs are presented as FIS, so a case FIS cannot express"
+                                    + " (a DEFAULT used where no rule fires, point terms other than triangles, trapezoids"
+                                    + " and shoulders, rules other than one flat AND or OR) is not presented",
+                            "evalfis samples a Mamdani output at 101 points of its Range, and refuses an input outside"
+                                    + " an input's Range: the bridge widens that Range (it has no other effect)",
+                            "see docs/iut-protocol.md, \"Octave fuzzy-logic-toolkit\""),
+                    (spec, argument, options) -> OctaveFltIut.open(spec, options)));
 
     /** The kind a spec names, if any. */
     public static Optional<Kind> kind(String spec) {

@@ -42,14 +42,17 @@ import org.fclcert.syntax.dialect.FisReader;
  * singletons); a rule is a flat AND or a flat OR of at most one {@code input IS [NOT] term} per input, concluding
  * at most one term per output, with one weight; no DEFAULT (where no rule fires Octave and fuzzylite give NaN).
  * Point terms are written as {@code trimf}/{@code trapmf} where their degrees are 0 and 1 in a triangle, trapezoid
- * or shoulder (a shoulder reaches to ±{@link Double#MAX_VALUE}: Octave refuses infinite parameters); other points
+ * or shoulder (a shoulder reaches to ±{@link Double#MAX_VALUE}, {@link #FAR}); other points
  * have no FIS function. Only the functions MATLAB and Octave both have are written, never fuzzylite's additions.
  * Everything else is listed as not expressible (FCL-X1nn) or as what Octave computes otherwise (FCL-X2nn).
  */
 public final class FisWriter implements DialectWriter {
     /** What a message calls the format. */
     private static final String FIS = "MATLAB's FIS";
-    /** The far end of a shoulder: the whole finite line, which Octave's trapmf still computes (a vertical edge). */
+    /**
+     * A shoulder is a trapezoid reaching to ±{@code FAR}, rising over [-FAR, -FAR / 2] (Octave refuses infinite
+     * parameters and a vertical edge): exact for every input above -FAR / 2 (about -9e307), below +FAR / 2.
+     */
     private static final double FAR = Double.MAX_VALUE;
     /** MATLAB's FIS functions the Octave toolkit 0.4.6 also has; fuzzylite's additions are not written. */
     private static final Set<String> OCTAVE_SHAPES = Set.of("trimf", "trapmf", "gaussmf", "gauss2mf", "gbellmf",
@@ -302,10 +305,12 @@ public final class FisWriter implements DialectWriter {
         private String shape(Term t, MembershipFunction.NamedShape n) {
             List<Double> p = n.parameters().stream().map(Literal::value).toList();
             if (n.kind() == ShapeKind.RECTANGLE) {
+                cx.findings.differs(t.location(), WriterCode.NOT_LOADED, "rectangle '" + t.name() + "' is a trapmf with"
+                        + " vertical edges, which the Octave fuzzy-logic-toolkit 0.4.6 refuses");
                 return trapmf(p.get(0), p.get(0), p.get(1), p.get(1));
             }
             if (n.kind() == ShapeKind.RAMP) {
-                return p.get(0) <= p.get(1) ? trapmf(p.get(0), p.get(1), FAR, FAR) : trapmf(-FAR, -FAR, p.get(1), p.get(0));
+                return p.get(0) <= p.get(1) ? trapmf(p.get(0), p.get(1), FAR / 2, FAR) : trapmf(-FAR, -FAR / 2, p.get(1), p.get(0));
             }
             Optional<Map.Entry<String, int[]>> fis = FisReader.fisShape(LibraryText.fuzzyliteShape(n.kind()))
                     .filter(e -> OCTAVE_SHAPES.contains(e.getKey()));
@@ -341,15 +346,23 @@ public final class FisWriter implements DialectWriter {
             while (xy.size() > 1 && xy.get(xy.size() - 1)[1] == xy.get(xy.size() - 2)[1]) {
                 xy.remove(xy.size() - 1);
             }
+            for (int k = 1; k < xy.size(); k++) {
+                if (xy.get(k)[0] == xy.get(k - 1)[0]) {
+                    cx.findings.differs(t.location(), WriterCode.NOT_LOADED, "term '" + t.name() + "' has a vertical edge,"
+                            + " which the Octave fuzzy-logic-toolkit 0.4.6 refuses in trimf and trapmf (MATLAB and"
+                            + " fuzzylite read it)");
+                    break;
+                }
+            }
             StringBuilder degrees = new StringBuilder();
             xy.forEach(q -> degrees.append(q[1] == 0 ? '0' : q[1] == 1 ? '1' : '?'));
             double[] x = xy.stream().mapToDouble(q -> q[0]).toArray();
             return switch (degrees.toString()) {
                 case "010" -> x[0] < x[2] ? "'trimf'," + list(x) : trapmf(x[0], x[1], x[1], x[2]);
                 case "0110" -> trapmf(x[0], x[1], x[2], x[3]);
-                case "10" -> trapmf(-FAR, -FAR, x[0], x[1]);
-                case "01" -> trapmf(x[0], x[1], FAR, FAR);
-                case "1" -> trapmf(-FAR, -FAR, FAR, FAR);
+                case "10" -> trapmf(-FAR, -FAR / 2, x[0], x[1]);
+                case "01" -> trapmf(x[0], x[1], FAR / 2, FAR);
+                case "1" -> trapmf(-FAR, -FAR / 2, FAR / 2, FAR);
                 default -> {
                     cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no function of the points of term '"
                             + t.name() + "' (only triangles, trapezoids and shoulders of degrees 0 and 1); written as"
