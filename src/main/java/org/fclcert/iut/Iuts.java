@@ -106,7 +106,16 @@ public final class Iuts {
                             "FLL holds one engine: only the first function block of a program is presented",
                             "its importer names no line: the bridge gives the first line that its message quotes",
                             "see docs/iut-protocol.md, \"pyfuzzylite\""),
-                    (spec, argument, options) -> PyfuzzyliteIut.open(spec, options)));
+                    (spec, argument, options) -> PyfuzzyliteIut.open(spec, options)),
+            new Kind(OctaveFltIut.SPEC, "octave-flt[:OCTAVE-CLI]", "the Octave fuzzy-logic-toolkit (readfis, evalfis)"
+                    + " through fclcert's bridge, one octave-cli per session", Argument.OPTIONAL, Optional.of(Dialect.FIS),
+                    List.of("it reads MATLAB's FIS only: programs are presented as FIS, so a case FIS cannot express"
+                                    + " (a DEFAULT used where no rule fires, point terms other than triangles, trapezoids"
+                                    + " and shoulders, rules other than one flat AND or OR) is not presented",
+                            "evalfis samples a Mamdani output at 101 points of its Range, and refuses an input outside"
+                                    + " an input's Range: the bridge widens that Range (it has no other effect)",
+                            "see docs/iut-protocol.md, \"Octave fuzzy-logic-toolkit\""),
+                    (spec, argument, options) -> OctaveFltIut.open(spec, options)));
 
     /** The kind a spec names, if any. */
     public static Optional<Kind> kind(String spec) {

@@ -48,7 +48,7 @@ public final class DialectWriters {
             case JFUZZYLOGIC -> new JFuzzyLogicWriter();
             case FUZZYLITE -> new FuzzyliteWriter();
             case FLL -> new FllWriter();
-            case FIS -> null;
+            case FIS -> new FisWriter();
         });
     }
 

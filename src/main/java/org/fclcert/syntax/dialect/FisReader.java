@@ -66,6 +66,34 @@ public final class FisReader implements DialectReader {
     private static final Map<Integer, String> HEDGES = Map.of(5, "somewhat", 20, "very", 30, "extremely",
             40, "very very", 99, "any");
 
+    /** The FIS name of a t-norm fuzzylite's FCL calls {@code fcl} ({@code PROD}: {@code prod}), as this reader maps it. */
+    public static Optional<String> fisTNorm(String fcl) {
+        return inverse(T_NORMS, fcl);
+    }
+
+    /** The FIS name of an s-norm fuzzylite's FCL calls {@code fcl} ({@code ASUM}: {@code probor}). */
+    public static Optional<String> fisSNorm(String fcl) {
+        return inverse(S_NORMS, fcl);
+    }
+
+    /** The FIS name of a defuzzifier fuzzylite's FCL calls {@code fcl} ({@code MM}: {@code mom}). */
+    public static Optional<String> fisDefuzzifier(String fcl) {
+        return inverse(DEFUZZIFIERS, fcl);
+    }
+
+    /**
+     * The FIS membership function of fuzzylite's shape class {@code fuzzylite} ({@code Gaussian}: {@code gaussmf})
+     * and the position each of the class's parameters is written at, as this reader reads them back.
+     */
+    public static Optional<Map.Entry<String, int[]>> fisShape(String fuzzylite) {
+        return SHAPES.entrySet().stream().filter(e -> e.getValue().fuzzylite().equals(fuzzylite)
+                && e.getValue().order() != null).findFirst().map(e -> Map.entry(e.getKey(), e.getValue().order().clone()));
+    }
+
+    private static Optional<String> inverse(Map<String, String> names, String fcl) {
+        return names.entrySet().stream().filter(e -> e.getValue().equals(fcl)).map(Map.Entry::getKey).findFirst();
+    }
+
     @Override
     public Dialect dialect() {
         return Dialect.FIS;
