@@ -22,7 +22,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code certify --iut pyfuzzylite --case ...} on four cases: the standard text is refused by pyfuzzylite's FLL importer
- * (a negative case "passes" as that refusal), and on the semantic axis ({@code --present-as auto}, FLL) B-COGS-001
+ * (a negative case fails: its accepted twin, the defect repaired, is refused as well), and on the semantic axis ({@code --present-as auto}, FLL) B-COGS-001
  * passes while E-ACCU-NSUM-002 fails with pyfuzzylite's pairwise NormalizedSum: 49.719 where the case's hand-derived
  * value is 49.130, and E-COG-002 with its sampled CoG missing a term 0.001 wide (the DEFAULT 7 for 40.0004).
  */
@@ -47,6 +47,9 @@ class PyfuzzyliteCertificationTest {
         CaseResult.Presented cog = byId.get("E-COG-002").presentedResult().orElseThrow();
         assertEquals(PresentedStatus.FAILED, cog.status());
         assertTrue(cog.message().contains("y = 7.0 where 40.0004"), cog.message());
-        assertEquals(CaseStatus.PASSED, byId.get("N-C001-001").status());
+        // its refusal is of FCL itself, not of the planted error: the case's accepted twin is refused as well
+        CaseResult negative = byId.get("N-C001-001");
+        assertEquals(CaseStatus.FAILED, negative.status(), negative.message());
+        assertTrue(negative.message().contains("rejected the case's accepted twin"), negative.message());
     }
 }

@@ -501,7 +501,7 @@ class LspClientTest {
         assertTrue(refusal.getMessage().contains("jfl-commented.fcl is read as jFuzzyLogic; not formatted: it has"
                 + " 1 comment, which fclcert's jFuzzyLogic writer does not keep"), refusal.getMessage());
 
-        // a format fclcert reads but cannot write
+        // fuzzylite's FLL: its writer's layout, a fixed point as well
         remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
                 JsonParser.parseString("{\"fclcert\": {\"dialect\": \"fll\"}}")));
         String fll = open("dimmer.fll", """
@@ -520,10 +520,14 @@ class LspClientTest {
                   rule: if x is low then y is dim
                 """);
         diagnosticsOf(fll);
-        assertEquals(List.of(), format(fll));
-        MessageParams none = shownWarning();
-        assertTrue(none.getMessage().contains("dimmer.fll is read as fuzzylite's FLL, and fclcert has no writer of"
-                + " fuzzylite's FLL; not formatted"), none.getMessage());
+        List<TextEdit> fllEdits = format(fll);
+        assertEquals(1, fllEdits.size());
+        String fllText = fllEdits.get(0).getNewText();
+        assertTrue(fllText.startsWith("Engine: dimmer\n") && fllText.contains("  rule: if x is low then y is dim\n"),
+                fllText);
+        String fllAgain = open("dimmer-again.fll", fllText);
+        diagnosticsOf(fllAgain);
+        assertEquals(List.of(), format(fllAgain));
     }
 
     @Test
