@@ -177,6 +177,7 @@ final class CertifyCommand implements Callable<Integer> {
         RunControl control = new RunControl();
         onSignal = new Thread(() -> interrupted(control, printed, hooks, err), "fclcert-interrupted");
         Runtime.getRuntime().addShutdownHook(onSignal);
+        EarlySignals.handledByCommand();
         Set<ConformanceLevel> levelSet = levels.isEmpty() ? Set.of() : EnumSet.copyOf(levels);
         CaseSelection selection = new CaseSelection(levelSet, parseFeatures(), cases);
         if (probeCap < 1) {

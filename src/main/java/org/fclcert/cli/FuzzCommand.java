@@ -18,6 +18,7 @@ import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.orchestration.OutputDirectory;
 import org.fclcert.orchestration.PresentAs;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -118,6 +119,16 @@ final class FuzzCommand implements Callable<Integer> {
             }
             focus.add(f);
         }
+        // a second fuzz run into the same --out refuses at once, naming the first (as certify does)
+        try (OutputDirectory.Lock held = OutputDirectory.lock(out)) {
+            return fuzz(stdout, err, iut, total, lvl, focus);
+        } catch (OutputDirectory.InUse e) {
+            return usage(err, TerminalText.visibleLines(e.getMessage()));
+        }
+    }
+
+    private int fuzz(PrintWriter stdout, PrintWriter err, String iut, Duration total, ConformanceLevel lvl,
+            Set<Feature> focus) {
         IutOptions options = iutOptions.options();
         Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs)
                 .withMaxFindings(Math.max(0, maxFindings)).withLayout(presentAs.resolve(iut));

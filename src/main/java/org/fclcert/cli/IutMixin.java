@@ -27,6 +27,11 @@ final class IutMixin {
             description = "Per-request timeout for the implementation, e.g. 5s, 500ms (default: ${DEFAULT-VALUE})")
     Duration timeout;
 
+    @Option(names = "--in-process",
+            description = "Call a java:CLASS implementation inside fclcert's own JVM (faster; not isolated, the reports"
+                    + " say so) instead of in a child JVM in the sandbox")
+    boolean inProcess;
+
     @Option(names = "--no-sandbox",
             description = "Run the implementation as a plain process of yours, without the bubblewrap sandbox"
                     + " (the reports say so)")
@@ -82,7 +87,7 @@ final class IutMixin {
 
     /** The options for opening the implementation: the timeout, the --classpath and the sandbox. */
     IutOptions options() {
-        return IutArguments.options(timeout, classpath).withSandbox(sandbox());
+        return IutArguments.options(timeout, classpath).withSandbox(sandbox()).withInProcess(inProcess);
     }
 
     /** The sandbox settings the options ask for (defaults where an option is not given). */

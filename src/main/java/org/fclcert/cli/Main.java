@@ -37,7 +37,11 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     CommandLine.Model.CommandSpec spec;
 
     public static void main(String[] args) {
-        System.exit(run(args));
+        // first of all: a signal from here on ends fclcert with a message, never silently (issue 27)
+        EarlySignals.install(System.err);
+        int exit = run(args);
+        EarlySignals.finished();
+        System.exit(exit);
     }
 
     /** Runs the command line on the process's stdout and stderr and returns its exit code. */
@@ -65,6 +69,10 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         cli.registerConverter(PresentAs.class, PresentAsNames::convert);
         cli.setOut(out);
         cli.setErr(err);
+        cli.setExecutionStrategy(parsed -> {
+            EarlySignals.commandStarted();
+            return new CommandLine.RunLast().execute(parsed);
+        });
         cli.setParameterExceptionHandler((e, args) -> {
             // one line saying what is wrong, and where the whole help is: the help itself buries the line
             err.println(e.getMessage());

@@ -20,6 +20,7 @@ import org.fclcert.iut.Iuts;
 import org.fclcert.iut.StopSignal;
 import org.fclcert.probe.DataCheckEntry;
 import org.fclcert.orchestration.Defaults;
+import org.fclcert.orchestration.OutputDirectory;
 import org.fclcert.probe.Prober;
 import org.fclcert.probe.Table11;
 import picocli.CommandLine.Command;
@@ -68,6 +69,23 @@ final class ProbeCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE;
         }
+        // a second probe into the same --out refuses at once, naming the first (as certify does)
+        OutputDirectory.Lock lock = null;
+        if (out != null) {
+            try {
+                lock = OutputDirectory.lock(out);
+            } catch (OutputDirectory.InUse e) {
+                err.println("fclcert probe: " + TerminalText.visibleLines(e.getMessage()));
+                err.flush();
+                return ExitCodes.USAGE;
+            }
+        }
+        try (OutputDirectory.Lock held = lock) {
+            return probe(stdout, err);
+        }
+    }
+
+    private int probe(PrintWriter stdout, PrintWriter err) {
         IutOptions options = iut.options();
         StopSignal stop = new StopSignal();
         List<DataCheckEntry> measured = Collections.synchronizedList(new ArrayList<>());
@@ -75,6 +93,7 @@ final class ProbeCommand implements Callable<Integer> {
         CountDownLatch done = new CountDownLatch(1);
         Thread onSignal = new Thread(() -> interrupted(stop, done, measured, shown, stdout, err), "fclcert-interrupted");
         Runtime.getRuntime().addShutdownHook(onSignal);
+        EarlySignals.handledByCommand();
         try {
             List<DataCheckEntry> entries;
             try {

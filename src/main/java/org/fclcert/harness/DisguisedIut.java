@@ -4,9 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import org.fclcert.iut.ForwardingIut;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
-import org.fclcert.iut.IutInfo;
 import org.fclcert.iut.LoadOutcome;
 
 /**
@@ -15,13 +15,12 @@ import org.fclcert.iut.LoadOutcome;
  * request and reply is kept as it crossed the wire ({@link Exchange}), the case's evidence. {@code close} does
  * not close the implementation (the run owns it).
  */
-final class DisguisedIut implements ImplementationUnderTest {
-    private final ImplementationUnderTest inner;
+final class DisguisedIut extends ForwardingIut {
     private final Disguise disguise;
     private final List<Exchange> exchanges = new ArrayList<>();
 
     DisguisedIut(ImplementationUnderTest inner, Disguise disguise) {
-        this.inner = inner;
+        super(inner);
         this.disguise = disguise;
     }
 
@@ -31,14 +30,9 @@ final class DisguisedIut implements ImplementationUnderTest {
     }
 
     @Override
-    public IutInfo hello() throws IutException {
-        return inner.hello();
-    }
-
-    @Override
     public LoadOutcome load(String fcl) throws IutException {
         try {
-            LoadOutcome outcome = inner.load(fcl);
+            LoadOutcome outcome = delegate().load(fcl);
             exchanges.add(Exchange.load(outcome));
             return outcome;
         } catch (IutException e) {
@@ -71,7 +65,7 @@ final class DisguisedIut implements ImplementationUnderTest {
         String sentBlock = disguise.sent(block);
         Map<String, Double> sent = disguise.sent(inputs);
         try {
-            Map<String, Double> got = inner.eval(sentBlock, sent);
+            Map<String, Double> got = delegate().eval(sentBlock, sent);
             exchanges.add(Exchange.eval(sentBlock, sent, got == null ? Map.of() : got));
             return disguise.received(got);
         } catch (IutException e) {
@@ -86,7 +80,7 @@ final class DisguisedIut implements ImplementationUnderTest {
     @Override
     public void reset() throws IutException {
         try {
-            inner.reset();
+            delegate().reset();
             exchanges.add(Exchange.plain("reset"));
         } catch (IutException e) {
             exchanges.add(Exchange.failed("reset", null, null, e));
@@ -97,7 +91,7 @@ final class DisguisedIut implements ImplementationUnderTest {
     @Override
     public Optional<String> export() throws IutException {
         try {
-            Optional<String> text = inner.export();
+            Optional<String> text = delegate().export();
             exchanges.add(Exchange.export(text.orElse(null)));
             return text.map(disguise::undisguised);
         } catch (IutException e) {
@@ -109,25 +103,10 @@ final class DisguisedIut implements ImplementationUnderTest {
         }
     }
 
+    /** A written text is loaded as any other, with its exchange kept (as before the forwarding base). */
     @Override
-    public java.util.OptionalLong peakMemoryBytes() {
-        return inner.peakMemoryBytes();
-    }
-
-    @Override
-    public java.util.OptionalDouble lastEvalMillis() {
-        return inner.lastEvalMillis();
-    }
-
-    /** The breakdowns of the implementation behind the disguise: the harness counts a case's crashes from them. */
-    @Override
-    public org.fclcert.iut.IutHealth health() {
-        return inner.health();
-    }
-
-    @Override
-    public org.fclcert.sandbox.Isolation isolation() {
-        return inner.isolation();
+    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+        return load(text);
     }
 
     @Override

@@ -55,13 +55,8 @@ final class FfllIut {
                         + " library as --iut ffll:PATH-TO/libffll.so, or set " + ENVIRONMENT + " (looked for "
                         + SHARED + " in the working directory and its parents)"));
         Path bridge = bridge(library);
-        // the sandbox binds the files a command names; the library the bridge links by rpath is not named, so its
-        // directory (with the bridge's own) is bound read-only too
-        List<Path> readable = new java.util.ArrayList<>(options.sandbox().readOnly());
-        readable.add(library.toAbsolutePath().getParent());
-        readable.add(bridge.toAbsolutePath().getParent());
-        IutOptions sandboxed = options.withSandbox(options.sandbox().withReadOnly(readable));
-        return new ProcessIut(spec, List.of(bridge.toString(), version(library)), sandboxed);
+        // the sandbox binds the bridge's directory and the library it links by rpath (ldd), read-only
+        return new ProcessIut(spec, List.of(bridge.toString(), version(library)), options);
     }
 
     /** The FFLL found without a spec: environment, system property, then {@code shared/peers/ffll} up the tree. */

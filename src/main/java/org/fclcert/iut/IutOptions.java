@@ -19,9 +19,11 @@ import org.fclcert.sandbox.SandboxSettings;
  * @param classpath      jars or class directories searched for a {@code java:CLASS} IUT (empty = the
  *                       classpath fclcert runs on)
  * @param sandbox        how implementation processes are launched (the sandbox is on by default)
+ * @param inProcess      {@code --in-process}: a {@code java:CLASS} implementation is called inside fclcert's own JVM
+ *                       (faster, unisolated) instead of in a child JVM in the sandbox
  */
 public record IutOptions(Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes,
-        List<Path> classpath, SandboxSettings sandbox) {
+        List<Path> classpath, SandboxSettings sandbox, boolean inProcess) {
 
     /** The per-request timeout unless the user sets one (the front ends show it through orchestration.Defaults). */
     public static final int DEFAULT_TIMEOUT_SECONDS = 5;
@@ -42,6 +44,12 @@ public record IutOptions(Duration timeout, int restartBudget, int maxReplyBytes,
         Objects.requireNonNull(sandbox, "sandbox");
     }
 
+    /** Options with {@code java:} in a child JVM. */
+    public IutOptions(Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath,
+            SandboxSettings sandbox) {
+        this(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, sandbox, false);
+    }
+
     /** Options with the default sandbox. */
     public IutOptions(Duration timeout, int restartBudget, int maxReplyBytes, int stderrTailBytes, List<Path> classpath) {
         this(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, SandboxSettings.defaults());
@@ -53,26 +61,31 @@ public record IutOptions(Duration timeout, int restartBudget, int maxReplyBytes,
     }
 
     public IutOptions withTimeout(Duration newTimeout) {
-        return new IutOptions(newTimeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, sandbox);
+        return new IutOptions(newTimeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, sandbox, inProcess);
     }
 
     public IutOptions withRestartBudget(int budget) {
-        return new IutOptions(timeout, budget, maxReplyBytes, stderrTailBytes, classpath, sandbox);
+        return new IutOptions(timeout, budget, maxReplyBytes, stderrTailBytes, classpath, sandbox, inProcess);
     }
 
     public IutOptions withMaxReplyBytes(int bytes) {
-        return new IutOptions(timeout, restartBudget, bytes, stderrTailBytes, classpath, sandbox);
+        return new IutOptions(timeout, restartBudget, bytes, stderrTailBytes, classpath, sandbox, inProcess);
     }
 
     public IutOptions withStderrTailBytes(int bytes) {
-        return new IutOptions(timeout, restartBudget, maxReplyBytes, bytes, classpath, sandbox);
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, bytes, classpath, sandbox, inProcess);
     }
 
     public IutOptions withClasspath(List<Path> entries) {
-        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, entries, sandbox);
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, entries, sandbox, inProcess);
     }
 
     public IutOptions withSandbox(SandboxSettings settings) {
-        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, settings);
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, settings, inProcess);
+    }
+
+    /** {@code --in-process}: {@code java:CLASS} called inside fclcert's JVM (true) or in a child JVM (false). */
+    public IutOptions withInProcess(boolean value) {
+        return new IutOptions(timeout, restartBudget, maxReplyBytes, stderrTailBytes, classpath, sandbox, value);
     }
 }

@@ -61,9 +61,10 @@ public final class Iuts {
     public static final List<Kind> KINDS = List.of(
             new Kind("reference", "reference", "fclcert's own reference evaluator", Argument.NONE, Optional.empty(),
                     List.of(), (spec, argument, options) -> new ReferenceIut()),
-            new Kind("java", "java:CLASS", "a class implementing the vendor SPI (org.fclcert.iut.spi), on --classpath",
-                    Argument.REQUIRED, Optional.empty(), List.of(),
-                    (spec, argument, options) -> JavaIut.open(spec, argument.strip(), options)),
+            new Kind("java", "java:CLASS", "a class implementing the vendor SPI (org.fclcert.iut.spi), on --classpath,"
+                    + " in a child JVM (--in-process: in fclcert's JVM)", Argument.REQUIRED, Optional.empty(), List.of(),
+                    (spec, argument, options) -> options.inProcess() ? JavaIut.open(spec, argument.strip(), options)
+                            : JavaProcessIut.open(spec, argument.strip(), options)),
             new Kind("process", "process:COMMAND", "a program speaking the JSON-lines protocol (docs/iut-protocol.md)",
                     Argument.REQUIRED, Optional.empty(), List.of(),
                     (spec, argument, options) -> new ProcessIut(spec, CommandLineSplitter.split(argument), options)),
@@ -74,7 +75,7 @@ public final class Iuts {
                             "it builds only the first function block of a program",
                             "see docs/iut-protocol.md, \"fuzzylite\""),
                     (spec, argument, options) -> FuzzyliteIut.open(spec, options)),
-            new Kind(JfuzzyliteImplementation.SPEC, "jfuzzylite[:JAR]", "jfuzzylite 6.0.1 in a JVM of its own",
+            new Kind(JfuzzyliteImplementation.SPEC, "jfuzzylite[:JAR]", "jfuzzylite 6.0.1 in fclcert's JVM, in a class loader of its own",
                     Argument.OPTIONAL, Optional.of(Dialect.FUZZYLITE), List.of(
                             "jfuzzylite builds only the first function block of a program",
                             NAN_INPUTS,

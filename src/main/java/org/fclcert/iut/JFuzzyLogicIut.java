@@ -2,10 +2,8 @@ package org.fclcert.iut;
 
 import java.io.File;
 import java.io.IOException;
-import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.CodeSource;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -74,7 +72,7 @@ final class JFuzzyLogicIut {
                             + " fetch it with mvn dependency:get -Dartifact=org.antlr:antlr-runtime:3.1.3"));
             classpath.add(antlr.toString());
         }
-        List<String> command = List.of(javaExecutable(), "-Xmx512m", "-Djava.awt.headless=true",
+        List<String> command = List.of(ChildJvm.javaExecutable(), "-Xmx512m", "-Djava.awt.headless=true",
                 "-cp", String.join(File.pathSeparator, classpath), JFuzzyLogicBridge.class.getName());
         return new ProcessIut(spec, command, options);
     }
@@ -84,7 +82,7 @@ final class JFuzzyLogicIut {
         List<String> entries = new ArrayList<>();
         for (Class<?> c : List.of(JFuzzyLogicBridge.class, com.fasterxml.jackson.databind.ObjectMapper.class,
                 com.fasterxml.jackson.core.JsonFactory.class, com.fasterxml.jackson.annotation.JsonInclude.class)) {
-            String location = location(c).orElseThrow(() -> new IutException(Kind.INFRA,
+            String location = ChildJvm.location(c).orElseThrow(() -> new IutException(Kind.INFRA,
                     "cannot tell where " + c.getName() + " was loaded from, to start jFuzzyLogic's JVM"));
             if (!entries.contains(location)) {
                 entries.add(location);
@@ -93,23 +91,11 @@ final class JFuzzyLogicIut {
         return entries;
     }
 
-    static Optional<String> location(Class<?> c) {
-        CodeSource source = c.getProtectionDomain().getCodeSource();
-        if (source == null || source.getLocation() == null) {
-            return Optional.empty();
-        }
-        try {
-            return Optional.of(Path.of(source.getLocation().toURI()).toString());
-        } catch (URISyntaxException | IllegalArgumentException e) {
-            return Optional.empty();
-        }
-    }
-
     /** antlr-runtime 3 from fclcert's class path (as in its tests), else from the local Maven repository. */
     static Optional<Path> antlrRuntime() {
         try {
             Class<?> c = Class.forName("org.antlr.runtime.RecognitionException", false, JFuzzyLogicIut.class.getClassLoader());
-            Optional<String> here = location(c);
+            Optional<String> here = ChildJvm.location(c);
             if (here.isPresent()) {
                 return Optional.of(Path.of(here.get()));
             }
@@ -132,10 +118,5 @@ final class JFuzzyLogicIut {
         } catch (IOException e) {
             return false;
         }
-    }
-
-    private static String javaExecutable() {
-        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
-        return Files.isExecutable(java) ? java.toString() : "java";
     }
 }

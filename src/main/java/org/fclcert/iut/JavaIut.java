@@ -40,6 +40,7 @@ final class JavaIut implements ImplementationUnderTest {
     private ExecutorService worker = newWorker();
     private int abandoned;
     private String lastFailure = "";
+    private String unisolated = "a built-in adapter called inside fclcert's own JVM, with fclcert's rights";
 
     private String programText;
     private FclProgram program;
@@ -62,6 +63,8 @@ final class JavaIut implements ImplementationUnderTest {
         try {
             Class<? extends FclImplementation> type = implementationClass(className, loader);
             iut.vendor = iut.call("the constructor of " + className, () -> construct(type), Kind.INFRA);
+            iut.unisolated = "--in-process: the java: implementation was called inside fclcert's own JVM, with"
+                    + " fclcert's rights (not in the sandbox)";
             return iut;
         } catch (IutException e) {
             iut.close();
@@ -93,7 +96,7 @@ final class JavaIut implements ImplementationUnderTest {
         return new URLClassLoader("fclcert-iut", urls, JavaIut.class.getClassLoader());
     }
 
-    private static Class<? extends FclImplementation> implementationClass(String name, URLClassLoader loader)
+    static Class<? extends FclImplementation> implementationClass(String name, URLClassLoader loader)
             throws IutException {
         Class<?> type;
         try {
@@ -106,6 +109,18 @@ final class JavaIut implements ImplementationUnderTest {
             throw new IutException(Kind.INFRA, "class " + name + " does not implement " + FclImplementation.class.getName());
         }
         return type.asSubclass(FclImplementation.class);
+    }
+
+    /** Whether {@code type} can be constructed as fclcert constructs it, found without running any of its code. */
+    static void checkConstructible(Class<? extends FclImplementation> type) throws IutException {
+        if (java.lang.reflect.Modifier.isAbstract(type.getModifiers())) {
+            throw new IutException(Kind.INFRA, "class " + type.getName() + " cannot be instantiated (abstract?)");
+        }
+        try {
+            type.getConstructor();
+        } catch (NoSuchMethodException e) {
+            throw new IutException(Kind.INFRA, "class " + type.getName() + " needs a public constructor without arguments");
+        }
     }
 
     private static FclImplementation construct(Class<? extends FclImplementation> type) throws IutException {
@@ -219,8 +234,7 @@ final class JavaIut implements ImplementationUnderTest {
 
     @Override
     public org.fclcert.sandbox.Isolation isolation() {
-        return org.fclcert.sandbox.Isolation.inProcess("a java: implementation is called inside fclcert's own JVM,"
-                + " with fclcert's rights (it does not run in the sandbox)");
+        return org.fclcert.sandbox.Isolation.inProcess(unisolated);
     }
 
     @Override

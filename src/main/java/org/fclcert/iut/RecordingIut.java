@@ -7,8 +7,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.OptionalDouble;
-import java.util.OptionalLong;
 
 /**
  * An implementation that writes down, as the JSON-lines protocol's requests, every call made to the one it
@@ -16,13 +14,12 @@ import java.util.OptionalLong;
  * into a process IUT by hand to replay exactly what the harness asked ({@code docs/iut-protocol.md}), whatever
  * kind of implementation was certified.
  */
-public final class RecordingIut implements ImplementationUnderTest {
-    private final ImplementationUnderTest inner;
+public final class RecordingIut extends ForwardingIut {
     private final ObjectMapper mapper = Protocol.mapper();
     private final List<ObjectNode> requests = new ArrayList<>();
 
     public RecordingIut(ImplementationUnderTest inner) {
-        this.inner = inner;
+        super(inner);
     }
 
     /** Forgets what was recorded (a new case starts). */
@@ -58,20 +55,15 @@ public final class RecordingIut implements ImplementationUnderTest {
     }
 
     @Override
-    public IutInfo hello() throws IutException {
-        return inner.hello();
-    }
-
-    @Override
     public LoadOutcome load(String fcl) throws IutException {
         requests.add(Protocol.load(fcl));
-        return inner.load(fcl);
+        return delegate().load(fcl);
     }
 
     @Override
     public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
         requests.add(Protocol.load(text));
-        return inner.loadWritten(text, layout);   // the reference reads a written text in its layout
+        return delegate().loadWritten(text, layout);   // the reference reads a written text in its layout
     }
 
     @Override
@@ -81,43 +73,18 @@ public final class RecordingIut implements ImplementationUnderTest {
         } catch (IutException e) {
             // an input that is no JSON number is not sent over the protocol either; the inner IUT decides
         }
-        return inner.eval(block, inputs);
+        return delegate().eval(block, inputs);
     }
 
     @Override
     public void reset() throws IutException {
         requests.add(Protocol.request("reset"));
-        inner.reset();
+        delegate().reset();
     }
 
     @Override
     public Optional<String> export() throws IutException {
         requests.add(Protocol.request("export"));
-        return inner.export();
-    }
-
-    @Override
-    public IutHealth health() {
-        return inner.health();
-    }
-
-    @Override
-    public OptionalLong peakMemoryBytes() {
-        return inner.peakMemoryBytes();
-    }
-
-    @Override
-    public org.fclcert.sandbox.Isolation isolation() {
-        return inner.isolation();
-    }
-
-    @Override
-    public OptionalDouble lastEvalMillis() {
-        return inner.lastEvalMillis();
-    }
-
-    @Override
-    public void close() {
-        inner.close();
+        return delegate().export();
     }
 }

@@ -5,8 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.OptionalDouble;
-import java.util.OptionalLong;
 import java.util.Timer;
 import java.util.TimerTask;
 import org.fclcert.syntax.dialect.Dialect;
@@ -162,11 +160,9 @@ public final class StopSignal {
     }
 
     /** The implementation with each call entered and left on the signal. */
-    private final class Guarded implements ImplementationUnderTest {
-        private final ImplementationUnderTest delegate;
-
+    private final class Guarded extends ForwardingIut {
         Guarded(ImplementationUnderTest delegate) {
-            this.delegate = delegate;
+            super(delegate);
         }
 
         private <T> T call(String op, Call<T> call) throws IutException {
@@ -188,61 +184,41 @@ public final class StopSignal {
 
         @Override
         public IutInfo hello() throws IutException {
-            return call("hello", delegate::hello);
+            return call("hello", delegate()::hello);
         }
 
         @Override
         public LoadOutcome load(String fcl) throws IutException {
-            return call("load", () -> delegate.load(fcl));
+            return call("load", () -> delegate().load(fcl));
         }
 
         @Override
         public LoadOutcome loadWritten(String text, Dialect layout) throws IutException {
-            return call("load", () -> delegate.loadWritten(text, layout));
+            return call("load", () -> delegate().loadWritten(text, layout));
         }
 
         @Override
         public Map<String, Double> eval(String block, Map<String, Double> inputs) throws IutException {
-            return call("eval", () -> delegate.eval(block, inputs));
+            return call("eval", () -> delegate().eval(block, inputs));
         }
 
         @Override
         public void reset() throws IutException {
             call("reset", () -> {
-                delegate.reset();
+                delegate().reset();
                 return null;
             });
         }
 
         @Override
         public Optional<String> export() throws IutException {
-            return call("export", delegate::export);
-        }
-
-        @Override
-        public IutHealth health() {
-            return delegate.health();
-        }
-
-        @Override
-        public OptionalLong peakMemoryBytes() {
-            return delegate.peakMemoryBytes();
-        }
-
-        @Override
-        public org.fclcert.sandbox.Isolation isolation() {
-            return delegate.isolation();
-        }
-
-        @Override
-        public OptionalDouble lastEvalMillis() {
-            return delegate.lastEvalMillis();
+            return call("export", delegate()::export);
         }
 
         @Override
         public void close() {
-            closed(delegate);
-            delegate.close();
+            closed(delegate());
+            delegate().close();
         }
     }
 }

@@ -86,6 +86,13 @@ public class CertifyMojo extends AbstractMojo {
     private boolean noSandbox;
 
     /**
+     * Call a {@code java:} implementation inside the build's JVM instead of in a child JVM in the sandbox (faster,
+     * not isolated; the reports say so), as {@code certify --in-process}.
+     */
+    @Parameter(property = "fclcert.inProcess", defaultValue = "false")
+    private boolean inProcess;
+
+    /**
      * Time the whole run may take, cases and probes, in seconds; the cases not run by then are reported as skipped
      * with the reason, and the goal fails.
      */
@@ -148,7 +155,7 @@ public class CertifyMojo extends AbstractMojo {
         Corpus corpus = corpus();
         IutOptions options = IutOptions.defaults().withTimeout(Duration.ofMillis(timeoutMillis))
                 .withSandbox(noSandbox ? org.fclcert.sandbox.SandboxSettings.none()
-                        : org.fclcert.sandbox.SandboxSettings.defaults());
+                        : org.fclcert.sandbox.SandboxSettings.defaults()).withInProcess(inProcess);
         List<Path> classpath = iut.startsWith("java:") ? testClasspath() : List.of();
         if (!classpath.isEmpty()) {
             options = options.withClasspath(classpath);

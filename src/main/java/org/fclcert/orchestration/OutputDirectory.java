@@ -31,7 +31,7 @@ import org.fclcert.orchestration.Certification.CannotCertify;
  * it cannot hold its own lock); it is an OS file lock, released by the kernel when the process ends, so a killed
  * run never leaves a stale lock. The file stays, holding the last holder's pid.
  */
-final class OutputDirectory implements AutoCloseable {
+public final class OutputDirectory implements AutoCloseable {
     private final Path dir;
     private final Path staging;
     private final FileChannel lockFile;
@@ -46,12 +46,37 @@ final class OutputDirectory implements AutoCloseable {
 
     /** Locks {@code dir} for this run and makes the private sibling it writes into. */
     static OutputDirectory claim(Path dir) throws CannotCertify {
+        Lock lock;
+        try {
+            lock = lock(dir);
+        } catch (InUse e) {
+            throw new CannotCertify(e.getMessage());
+        }
+        Path target = dir.toAbsolutePath().normalize();
+        try {
+            Path staging = target.getParent().resolve("." + target.getFileName() + ".partial-"
+                    + ProcessHandle.current().pid() + "-" + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1));
+            Files.createDirectory(staging);   // fails on anything already there, a planted link included
+            return new OutputDirectory(dir, staging, lock.channel, lock.lock);   // named as given, e.g. in "Reports: …"
+        } catch (IOException e) {
+            lock.close();
+            throw new CannotCertify("cannot lock the output directory " + target + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * Locks {@code dir} for one run of a command that writes into it ({@code certify}, {@code probe --out},
+     * {@code fuzz --out}): {@code .<name>.lock} beside it, held until {@link Lock#close()} or the process ends.
+     *
+     * @throws InUse when another run holds it (the message names that run's pid and start), or it cannot be made
+     */
+    public static Lock lock(Path dir) throws InUse {
         Path target = dir.toAbsolutePath().normalize();
         Path parent = target.getParent();
-        String name = target.getFileName() == null ? "root" : target.getFileName().toString();
-        if (parent == null) {
-            throw new CannotCertify("the output directory cannot be the file system's root");
+        if (parent == null || target.getFileName() == null) {
+            throw new InUse("the output directory cannot be the file system's root");
         }
+        String name = target.getFileName().toString();
         FileChannel channel = null;
         try {
             Files.createDirectories(parent);
@@ -67,20 +92,42 @@ final class OutputDirectory implements AutoCloseable {
             if (lock == null) {
                 String holder = holder(channel);
                 channel.close();
-                throw new CannotCertify("the output directory " + target + " is in use by another fclcert run ("
+                throw new InUse("the output directory " + target + " is in use by another fclcert run ("
                         + holder + "); wait for it to end or give another --out");
             }
             String me = "pid " + ProcessHandle.current().pid() + ", started " + Instant.now();
             channel.truncate(0);
             channel.write(ByteBuffer.wrap((me + "\n").getBytes(StandardCharsets.UTF_8)), 0);
             channel.force(false);
-            Path staging = parent.resolve("." + name + ".partial-" + ProcessHandle.current().pid() + "-"
-                    + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 1));
-            Files.createDirectory(staging);   // fails on anything already there, a planted link included
-            return new OutputDirectory(dir, staging, channel, lock);   // named as given, e.g. in "Reports: …"
+            return new Lock(channel, lock);
         } catch (IOException e) {
             close(channel);
-            throw new CannotCertify("cannot lock the output directory " + target + ": " + e.getMessage());
+            throw new InUse("cannot lock the output directory " + target + ": " + e.getMessage());
+        }
+    }
+
+    /** A run's hold on an output directory; released by {@link #close()} (or by the kernel when the process ends). */
+    public static final class Lock implements AutoCloseable {
+        private final FileChannel channel;
+        private final FileLock lock;
+
+        private Lock(FileChannel channel, FileLock lock) {
+            this.channel = channel;
+            this.lock = lock;
+        }
+
+        @Override
+        public void close() {
+            release(lock, channel);
+        }
+    }
+
+    /** The output directory is held by another run, or its lock cannot be made; the message says which. */
+    public static final class InUse extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        InUse(String message) {
+            super(message);
         }
     }
 
@@ -138,12 +185,16 @@ final class OutputDirectory implements AutoCloseable {
     /** Releases the lock (the private sibling of a run that never published stays, with its partial results). */
     @Override
     public void close() {
+        release(lock, lockFile);
+    }
+
+    private static void release(FileLock lock, FileChannel channel) {
         try {
             lock.release();
         } catch (IOException e) {
             // closing the channel releases it as well
         }
-        close(lockFile);
+        close(channel);
     }
 
     private static void close(FileChannel channel) {

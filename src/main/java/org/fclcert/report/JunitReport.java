@@ -106,6 +106,7 @@ public final class JunitReport {
         property(x, "iut.name", r.iut().name());
         property(x, "iut.version", r.iut().version());
         property(x, "iut.spec", r.iut().spec());
+        property(x, "iut.isolation", Texts.isolation(r));
         property(x, "toolkit.version", r.toolkit().version());
         property(x, "corpus.sha256", r.corpus().sha256());
         property(x, "basicLevel.conformant", String.valueOf(r.basicLevel().conformant()));

@@ -25,6 +25,8 @@ import java.util.TreeSet;
  *       directory (a script's modules lie next to it); one that names a directory: that directory.</li>
  *   <li>Never a protected directory — the root, the home directory, the working directory, an ancestor of any of
  *       them or of a hidden path: there only the named file itself is bound.</li>
+ *   <li>The shared libraries a native program links against outside the system (an rpath into a build directory),
+ *       as {@code ldd} lists them: their directory (only the file where the directory is protected).</li>
  *   <li>Files the user binds with {@code --sandbox-bind}.</li>
  * </ul>
  *
@@ -89,6 +91,13 @@ record Binds(List<List<String>> system, Path workingDirectory, List<Path> readOn
                 });
             }
         }
+        for (Path library : sharedLibraries(real(program))) {
+            // a library outside the system (an rpath into a build directory): its directory, or the file alone
+            if (systemRoots.stream().noneMatch(library::startsWith)) {
+                Path dir = library.getParent();
+                binds.add(dir == null || protectedDirs.contains(dir) ? library : dir);
+            }
+        }
         for (Path extra : settings.readOnly()) {
             Path p = extra.toAbsolutePath().normalize();
             if (Files.exists(p)) {
@@ -115,6 +124,55 @@ record Binds(List<List<String>> system, Path workingDirectory, List<Path> readOn
                 && readOnly.stream().noneMatch(cwd::startsWith);
         Path workingDirectory = coverable ? cwd : Path.of("/tmp/work");
         return new Binds(List.copyOf(system), workingDirectory, List.copyOf(readOnly), List.copyOf(masked));
+    }
+
+    private static final java.util.regex.Pattern LIBRARY = java.util.regex.Pattern.compile(
+            "^\\s*(?:\\S+\\s+=>\\s+)?(/\\S+)\\s+\\(0x[0-9a-f]+\\)\\s*$");
+
+    /**
+     * The shared libraries a native program links against, as {@code ldd} resolves them (their real paths); empty
+     * for a script or where {@code ldd} is missing or fails. glibc's {@code ldd} lists them through the system's
+     * dynamic loader in its tracing mode, which maps the libraries without running the program or their code.
+     */
+    static List<Path> sharedLibraries(Path program) {
+        if (!isElf(program)) {
+            return List.of();
+        }
+        Optional<Path> ldd = program("ldd", Path.of("/"), System.getenv("PATH"));
+        if (ldd.isEmpty()) {
+            return List.of();
+        }
+        List<Path> libraries = new ArrayList<>();
+        try {
+            Process p = new ProcessBuilder(ldd.get().toString(), program.toString()).redirectErrorStream(true).start();
+            p.getOutputStream().close();
+            String out = new String(p.getInputStream().readNBytes(1 << 20), java.nio.charset.StandardCharsets.UTF_8);
+            if (!p.waitFor(10, java.util.concurrent.TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                return List.of();
+            }
+            for (String line : out.split("\n")) {
+                java.util.regex.Matcher m = LIBRARY.matcher(line);
+                if (m.matches()) {
+                    libraries.add(real(Path.of(m.group(1)).normalize()));
+                }
+            }
+        } catch (IOException | InvalidPathException e) {
+            return List.of();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return List.of();
+        }
+        return libraries;
+    }
+
+    private static boolean isElf(Path file) {
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            byte[] magic = in.readNBytes(4);
+            return magic.length == 4 && magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F';
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
     }
 
     /** The program's absolute path: as given when it has a slash, else the first match on {@code PATH}. */

@@ -17,8 +17,15 @@ class FuzzCommandTest {
     private final StringWriter out = new StringWriter();
     private final StringWriter err = new StringWriter();
 
+    /**
+     * Runs fclcert; a fuzz run of a java: fake calls it in process (--in-process): these tests are about the fuzzer,
+     * whose every program and shrink trial would otherwise wait for a child JVM (that path: JavaChildJvmTest).
+     */
     private int run(String... args) {
-        return Main.run(new PrintWriter(out), new PrintWriter(err), args);
+        boolean javaFake = args[0].equals("fuzz") && java.util.Arrays.stream(args).anyMatch(a -> a.startsWith("java:"));
+        String[] all = javaFake ? java.util.stream.Stream.concat(java.util.Arrays.stream(args), java.util.stream.Stream.of(
+                "--in-process")).toArray(String[]::new) : args;
+        return Main.run(new PrintWriter(out), new PrintWriter(err), all);
     }
 
     private static JsonNode json(Path dir) throws Exception {

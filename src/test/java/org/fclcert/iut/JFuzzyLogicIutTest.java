@@ -140,7 +140,7 @@ class JFuzzyLogicIutTest {
 
     @Test
     void aJarThatIsNotJFuzzyLogicIsAnInfraError() throws Exception {
-        Path jar = Path.of(JFuzzyLogicIut.location(org.fclcert.model.Names.class).orElseThrow());
+        Path jar = Path.of(ChildJvm.location(org.fclcert.model.Names.class).orElseThrow());
         IutException e = assertThrows(IutException.class, () -> Iuts.open("jfuzzylogic:" + jar, IutOptions.defaults()));
         assertEquals(Kind.INFRA, e.kind());
         IutException missing = assertThrows(IutException.class, () -> Iuts.open("jfuzzylogic", IutOptions.defaults()));

@@ -105,7 +105,9 @@ class JavaIutTest {
 
     @Test
     void hungCallsBeyondTheRestartBudgetGiveUp() throws IutException {
-        IutOptions quick = IutOptions.defaults().withTimeout(Duration.ofMillis(300)).withRestartBudget(1);
+        // in process, a hung call is abandoned on its thread (in a child JVM the JVM is killed: JavaChildJvmTest)
+        IutOptions quick = IutOptions.defaults().withTimeout(Duration.ofMillis(300)).withRestartBudget(1)
+                .withInProcess(true);
         try (ImplementationUnderTest iut = open(quick)) {
             iut.load(PROGRAM);
             assertEquals(Kind.TIMEOUT, assertThrows(IutException.class, () -> iut.eval(null, Map.of("hang", 1.0))).kind());

@@ -55,7 +55,7 @@ class JfuzzyliteIutTest {
 
     /** The jar the test class path took jfuzzylite from (the local Maven repository's copy). */
     private static Path jar() throws ClassNotFoundException {
-        return Path.of(JFuzzyLogicIut.location(Class.forName("com.fuzzylite.Engine")).orElseThrow());
+        return Path.of(ChildJvm.location(Class.forName("com.fuzzylite.Engine")).orElseThrow());
     }
 
     @Test

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.Test;
  */
 class JfuzzyliteLoggingTest {
     private static URLClassLoader fresh() throws Exception {
-        URL jar = Path.of(JFuzzyLogicIut.location(Class.forName("com.fuzzylite.Engine")).orElseThrow()).toUri().toURL();
+        URL jar = Path.of(ChildJvm.location(Class.forName("com.fuzzylite.Engine")).orElseThrow()).toUri().toURL();
         return new URLClassLoader(new URL[] {jar}, null);   // a class of its own, so its static initialiser runs again
     }
 

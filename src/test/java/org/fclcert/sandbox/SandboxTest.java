@@ -113,4 +113,41 @@ class SandboxTest {
         assertEquals(List.of(nested.getParent(), script), b.readOnly());
         assertEquals(checkout, b.workingDirectory());
     }
+
+    /**
+     * A native program linked by rpath against a library in a directory of its own (as FFLL's bridge is): the
+     * sandbox binds that directory itself (ldd), so the program starts without the adapter binding it by hand.
+     */
+    @Test
+    void aProgramsSharedLibraryOutsideTheSystemIsBoundFromLdd(@TempDir Path host) throws Exception {
+        Bubblewrap.assumeWorking();
+        // JUnit's temporary directory is private to its owner; the sandboxed program runs as another uid when root
+        Files.setPosixFilePermissions(host, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-xr-x"));
+        Path lib = Files.createDirectories(host.resolve("lib"));
+        Path bin = Files.createDirectories(host.resolve("prog"));   // not "bin": its parent would be bound whole
+        Files.writeString(lib.resolve("answer.c"), "int answer(void) { return 42; }\n");
+        Files.writeString(bin.resolve("main.c"), "#include <stdio.h>\nint answer(void);\n"
+                + "int main(void) { printf(\"answer %d\\n\", answer()); return 0; }\n");
+        compile("gcc", "-shared", "-fPIC", "-o", lib.resolve("libanswer.so").toString(), lib.resolve("answer.c").toString());
+        compile("gcc", "-o", bin.resolve("main").toString(), bin.resolve("main.c").toString(), "-L" + lib, "-lanswer",
+                "-Wl,-rpath," + lib);
+        Path program = bin.resolve("main");
+        Path realHost = host.toRealPath();
+        assertEquals(List.of(lib.resolve("libanswer.so").toRealPath()), Binds.sharedLibraries(program).stream()
+                .filter(l -> l.startsWith(realHost)).toList());
+        Process p = Sandbox.of(SandboxSettings.defaults()).processBuilder(List.of(program.toString()))
+                .redirectErrorStream(true).start();
+        p.getOutputStream().close();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals("answer 42\n", out);
+        assertEquals(0, p.exitValue());
+        assertEquals(List.of(), Binds.sharedLibraries(lib.resolve("answer.c")), "a text file links nothing");
+    }
+
+    private static void compile(String... command) throws Exception {
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        org.junit.jupiter.api.Assumptions.assumeTrue(p.waitFor() == 0, "cannot compile with gcc here: " + out);
+    }
 }
