@@ -19,7 +19,8 @@ import org.junit.jupiter.api.Test;
  * prints into README.md.
  */
 class CommittedReportsTest {
-    static final List<String> DIRS = List.of("reference", "fuzzylite-6.0", "jfuzzylite-6.0.1", "jfuzzylogic-3.3", "ffll-2.2.1");
+    static final List<String> DIRS = List.of("reference", "fuzzylite-6.0", "jfuzzylite-6.0.1", "jfuzzylogic-3.3", "ffll-2.2.1",
+            "pyfuzzylite-8.0.6", "octave-flt-0.4.6");
 
     private static List<ComparisonPage.Entry> entries(String prefix) throws Exception {
         List<ComparisonPage.Entry> entries = new ArrayList<>();
