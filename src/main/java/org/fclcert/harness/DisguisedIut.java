@@ -8,6 +8,7 @@ import org.fclcert.iut.ForwardingIut;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.LoadOutcome;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * The implementation as one case sees it under its {@link Disguise}: eval requests go out in the disguise's
@@ -31,24 +32,22 @@ final class DisguisedIut extends ForwardingIut {
 
     @Override
     public LoadOutcome load(String fcl) throws IutException {
-        try {
-            LoadOutcome outcome = delegate().load(fcl);
-            exchanges.add(Exchange.load(outcome));
-            return outcome;
-        } catch (IutException e) {
-            exchanges.add(Exchange.failed("load", null, null, e));
-            throw e;
-        } catch (RuntimeException | StackOverflowError e) {
-            exchanges.add(Exchange.broke("load", null, null, e));
-            throw e;
-        }
+        return recordedLoad(() -> delegate().load(fcl));
     }
 
     /** A program written in a library's layout (the semantic axis), forwarded as such and kept as a load. */
     @Override
-    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
+    public LoadOutcome loadWritten(String text, Dialect layout) throws IutException {
+        return recordedLoad(() -> delegate().loadWritten(text, layout));
+    }
+
+    private interface LoadCall {
+        LoadOutcome call() throws IutException;
+    }
+
+    private LoadOutcome recordedLoad(LoadCall call) throws IutException {
         try {
-            LoadOutcome outcome = inner.loadWritten(text, layout);
+            LoadOutcome outcome = call.call();
             exchanges.add(Exchange.load(outcome));
             return outcome;
         } catch (IutException e) {
@@ -101,12 +100,6 @@ final class DisguisedIut extends ForwardingIut {
             exchanges.add(Exchange.broke("export", null, null, e));
             throw e;
         }
-    }
-
-    /** A written text is loaded as any other, with its exchange kept (as before the forwarding base). */
-    @Override
-    public LoadOutcome loadWritten(String text, org.fclcert.syntax.dialect.Dialect layout) throws IutException {
-        return load(text);
     }
 
     @Override

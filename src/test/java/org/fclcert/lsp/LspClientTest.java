@@ -520,7 +520,7 @@ class LspClientTest {
                   rule: if x is low then y is dim
                 """);
         diagnosticsOf(fll);
-        List<TextEdit> fllEdits = format(fll);
+        List<? extends TextEdit> fllEdits = format(fll);
         assertEquals(1, fllEdits.size());
         String fllText = fllEdits.get(0).getNewText();
         assertTrue(fllText.startsWith("Engine: dimmer\n") && fllText.contains("  rule: if x is low then y is dim\n"),
