@@ -123,9 +123,11 @@ public final class Rejudge {
             return CaseResult.skipped(recorded.plan(), NO_EVIDENCE);
         }
         judged = p.noted(judged, seed);
+        // the run's statistics (its time, breakdowns and restarts) are carried as recorded: no verdict reads them
         judged = new CaseResult(judged.plan(), judged.verdict(), judged.evidence(), judged.export(),
                 new CaseResult.Setup(judged.setup().block(), judged.setup().tolerance(), judged.setup().program(),
-                        recorded.setup().durationMs()), judged.presented(), recorded.replies());
+                        recorded.setup().durationMs(), recorded.setup().crashes(), recorded.setup().restarts()),
+                judged.presented(), recorded.replies());
         if (replay.mismatch() != null) {
             problems.add("case " + c.id() + ": the evidence does not answer the requests of this case under the run's"
                     + " seed: " + replay.mismatch());

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
@@ -12,6 +13,7 @@ import org.fclcert.harness.ResultsFile;
 import org.fclcert.harness.RunListener;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.report.Report;
+import org.fclcert.report.ReportVerifier;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -61,5 +63,7 @@ class CrashSurvivalTest {
 
         Report again = Certification.rebuildReports(ResultsFile.read(dir.resolve("results.jsonl")), dir.resolve("again"));
         assertEquals(report.summary(), again.summary(), "results.jsonl keeps every case's crashes and restarts");
+        // judged again from its evidence, a line with crashes is consistent (they are the run's statistics)
+        assertEquals(List.of(), ReportVerifier.verify(dir, Path.of("conformance")));
     }
 }
