@@ -5,7 +5,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
-import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
@@ -21,7 +20,6 @@ import java.util.regex.Pattern;
 final class FfllSignals {
     private static final Pattern RANGE_COMMENT = Pattern.compile("\\(\\*\\s*RANGE", Pattern.CASE_INSENSITIVE);
     private static final Pattern SPACED_ASSIGN = Pattern.compile(":\\s+=");
-    private static final Pattern WORD = Pattern.compile("[A-Za-z_][A-Za-z0-9_]*|[0-9][0-9.eE+-]*|:=|\\S");
     private static final Set<String> RULE_WORDS = Set.of("IF", "THEN", "AND", "OR", "NOT", "IS", "WITH");
 
     private FfllSignals() {
@@ -36,11 +34,7 @@ final class FfllSignals {
         if (SPACED_ASSIGN.matcher(code).find()) {
             return true;
         }
-        List<String> w = new ArrayList<>();
-        Matcher m = WORD.matcher(code);
-        while (m.find()) {
-            w.add(m.group().toUpperCase(Locale.ROOT));
-        }
+        List<String> w = words(code);
         Set<String> outputs = new HashSet<>();
         boolean inDefuzzify = false;
         for (int i = 0; i < w.size(); i++) {
@@ -142,6 +136,37 @@ final class FfllSignals {
             }
         }
         return -1;
+    }
+
+    /** The words and signs of a text without comments, upper-cased; a number is one word. */
+    private static List<String> words(String code) {
+        List<String> w = new ArrayList<>(code.length() / 4);
+        int n = code.length();
+        int i = 0;
+        while (i < n) {
+            char c = code.charAt(i);
+            if (Character.isWhitespace(c)) {
+                i++;
+            } else if (Character.isLetter(c) || c == '_') {
+                int start = i;
+                while (i < n && (Character.isLetterOrDigit(code.charAt(i)) || code.charAt(i) == '_')) {
+                    i++;
+                }
+                w.add(code.substring(start, i).toUpperCase(Locale.ROOT));
+            } else if (Character.isDigit(c)) {
+                while (i < n && (Character.isLetterOrDigit(code.charAt(i)) || code.charAt(i) == '.')) {
+                    i++;
+                }
+                w.add("0");
+            } else if (c == ':' && i + 1 < n && code.charAt(i + 1) == '=') {
+                w.add(":=");
+                i += 2;
+            } else {
+                w.add(String.valueOf(c));
+                i++;
+            }
+        }
+        return w;
     }
 
     /** The text with its {@code (* *)} comments blanked out, lines kept. */
