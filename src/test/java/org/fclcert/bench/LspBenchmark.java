@@ -58,6 +58,10 @@ public class LspBenchmark {
     @Param({"valid", "syntaxError"})
     public String text;
 
+    /** The server's dialect setting: {@code strict}, or {@code auto}, the default, which detects it on every edit. */
+    @Param({"strict", "auto"})
+    public String dialect;
+
     private final RecordingClient client = new RecordingClient();
     private PipedOutputStream toServer;
     private LanguageServer server;
@@ -87,7 +91,7 @@ public class LspBenchmark {
         InitializeParams init = new InitializeParams();
         init.setCapabilities(new ClientCapabilities());
         init.setInitializationOptions(JsonParser.parseString(
-                "{\"dialect\": \"strict\", \"debounceMillis\": " + debounce + "}"));
+                "{\"dialect\": \"" + dialect + "\", \"debounceMillis\": " + debounce + "}"));
         server.initialize(init).get(60, TimeUnit.SECONDS);
         server.getTextDocumentService().didOpen(new DidOpenTextDocumentParams(
                 new TextDocumentItem(uri, "fcl", version, program)));

@@ -22,6 +22,7 @@ public final class LspEditHarness {
         LspBenchmark bench = new LspBenchmark();
         bench.text = text;
         bench.debounce = args.length > 2 ? Integer.parseInt(args[2]) : 0;
+        bench.dialect = args.length > 3 ? args[3] : "strict";
         bench.start();
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         double[] wall = new double[edits];
@@ -45,7 +46,8 @@ public final class LspEditHarness {
         // the first 100 edits warm the JIT up; the figures are of the rest
         double[] w = Arrays.copyOfRange(wall, Math.min(100, edits / 2), edits);
         double[] c = Arrays.copyOfRange(cpu, Math.min(100, edits / 2), edits);
-        System.out.printf("text=%s debounce=%d edits=%d (figures over edits %d..%d)%n", text, bench.debounce, edits,
+        System.out.printf("text=%s dialect=%s debounce=%d edits=%d (figures over edits %d..%d)%n", text,
+                bench.dialect, bench.debounce, edits,
                 edits - w.length + 1, edits);
         System.out.printf("wall ms per edit: median %.1f, p10 %.1f, p90 %.1f, max %.1f%n", pct(w, 50), pct(w, 10),
                 pct(w, 90), pct(w, 100));

@@ -87,6 +87,14 @@ public final class FfllReader implements DialectReader {
      */
     @Override
     public List<Giveaway> giveaways(String text) {
+        if (!FfllSignals.possible(text == null ? "" : text)) {
+            return List.of();   // no word that could give FFLL away: the full read would find none
+        }
+        return readGiveaways(text);
+    }
+
+    /** The giveaways as the full read finds them, without {@link FfllSignals}'s first look. */
+    static List<Giveaway> readGiveaways(String text) {
         FfllTokens tokens = new FfllTokens();
         ReadResult result;
         try {
