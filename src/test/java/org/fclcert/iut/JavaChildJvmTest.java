@@ -80,6 +80,19 @@ class JavaChildJvmTest {
     }
 
     @Test
+    void aMissingClassPathEntryIsPassedOverAsTheJvmDoes(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        // a build's class path names target/test-classes whether or not it exists (the Maven plugin's ITs do)
+        Path missing = dir.resolve("target/test-classes");
+        try (ImplementationUnderTest iut = spy(OPTIONS.withClasspath(List.of(missing)))) {
+            iut.load(program());
+            assertEquals(3.0, iut.eval(null, Map.of("a", 1.0, "b", 2.0)).get("sum"));
+        }
+        IutException refused = org.junit.jupiter.api.Assertions.assertThrows(IutException.class,
+                () -> Iuts.open("java:com.example.NoSuchFcl", OPTIONS.withClasspath(List.of(missing))));
+        assertTrue(refused.getMessage().contains("com.example.NoSuchFcl"), refused.getMessage());
+    }
+
+    @Test
     void inProcessItDoesBothAndTheIsolationSaysSo() throws Exception {
         try (ImplementationUnderTest iut = spy(OPTIONS.withInProcess(true))) {
             iut.load(program());
