@@ -3,10 +3,8 @@ package org.fclcert.iut;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
@@ -115,14 +113,14 @@ final class FfllIut {
      * moved into place when complete).
      */
     static Path bridge(Path library) throws IutException {
-        byte[] source = source();
+        byte[] source = BridgeFiles.resource(FfllIut.class, SOURCE, "the FFLL bridge's source");
         Path include = library.resolveSibling("include");
         if (!Files.isRegularFile(include.resolve("FFLLAPI.h"))) {
             throw new IutException(Kind.INFRA, "FFLL's headers were not found in " + include
                     + " (the bridge is compiled against them; they come with the library)");
         }
         String key = hash(source, library);
-        Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fclcert-ffll-bridge", key);
+        Path dir = BridgeFiles.directory("ffll-bridge", key);
         Path binary = dir.resolve("ffll-bridge");
         if (Files.isExecutable(binary)) {
             return binary;
@@ -153,11 +151,7 @@ final class FfllIut {
                 throw new IutException(Kind.INFRA, "g++ could not compile the FFLL bridge against " + library + ":\n"
                         + IutText.kept(output.strip()));
             }
-            try {
-                Files.move(partial, binary, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(partial, binary, StandardCopyOption.REPLACE_EXISTING);
-            }
+            BridgeFiles.moveIntoPlace(partial, binary);
             return binary;
         } catch (IOException e) {
             throw new IutException(Kind.INFRA, "could not build the FFLL bridge (is g++ installed?): " + e.getMessage());
@@ -167,16 +161,7 @@ final class FfllIut {
         }
     }
 
-    private static byte[] source() throws IutException {
-        try (InputStream in = FfllIut.class.getResourceAsStream(SOURCE)) {
-            if (in == null) {
-                throw new IutException(Kind.INFRA, "the FFLL bridge's source " + SOURCE + " is missing from fclcert");
-            }
-            return in.readAllBytes();
-        } catch (IOException e) {
-            throw new IutException(Kind.INFRA, "could not read the FFLL bridge's source: " + e.getMessage());
-        }
-    }
+
 
     private static String hash(byte[] source, Path library) throws IutException {
         try {

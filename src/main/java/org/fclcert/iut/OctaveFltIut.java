@@ -1,15 +1,8 @@
 package org.fclcert.iut;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
@@ -56,37 +49,9 @@ final class OctaveFltIut {
                 .filter(d -> !d.isBlank()).map(d -> Path.of(d, command)).filter(Files::isExecutable).findFirst();
     }
 
-    /** The bridge script, written once per content (by its hash) into fclcert's cache under the temporary directory. */
+    /** The bridge script, in fclcert's cache under the temporary directory ({@link BridgeFiles}). */
     static Path bridge() throws IutException {
-        byte[] source;
-        try (InputStream in = OctaveFltIut.class.getResourceAsStream(SOURCE)) {
-            if (in == null) {
-                throw new IutException(Kind.INFRA, "the Octave bridge " + SOURCE + " is missing from fclcert");
-            }
-            source = in.readAllBytes();
-        } catch (IOException e) {
-            throw new IutException(Kind.INFRA, "could not read the Octave bridge: " + e.getMessage());
-        }
-        try {
-            String key = HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(source), 0, 12);
-            Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fclcert-octave-bridge", key);
-            Path script = dir.resolve(SOURCE);
-            if (Files.isRegularFile(script) && Files.size(script) == source.length) {
-                return script;
-            }
-            Files.createDirectories(dir);
-            Path partial = Files.createTempFile(dir, "bridge", ".partial");
-            Files.write(partial, source);
-            // a temporary file is private to its owner; the sandbox may run octave-cli as another user
-            Files.setPosixFilePermissions(partial, java.nio.file.attribute.PosixFilePermissions.fromString("rw-r--r--"));
-            try {
-                Files.move(partial, script, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(partial, script, StandardCopyOption.REPLACE_EXISTING);
-            }
-            return script;
-        } catch (IOException | NoSuchAlgorithmException e) {
-            throw new IutException(Kind.INFRA, "could not write the Octave bridge: " + e.getMessage());
-        }
+        return BridgeFiles.script("octave-bridge", SOURCE,
+                BridgeFiles.resource(OctaveFltIut.class, SOURCE, "the Octave bridge"), "the Octave bridge");
     }
 }

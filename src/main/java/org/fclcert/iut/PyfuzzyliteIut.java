@@ -1,15 +1,8 @@
 package org.fclcert.iut;
 
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.Optional;
 import org.fclcert.iut.IutException.Kind;
@@ -81,51 +74,9 @@ final class PyfuzzyliteIut {
         return Files.isExecutable(p) ? Optional.of(p) : Optional.empty();
     }
 
-    /**
-     * The bridge script, written once per content (by its hash) into fclcert's cache under the temporary directory;
-     * a half-written file is never seen (it is moved into place when complete).
-     */
+    /** The bridge script, in fclcert's cache under the temporary directory ({@link BridgeFiles}). */
     static Path bridge() throws IutException {
-        byte[] source;
-        try (InputStream in = PyfuzzyliteIut.class.getResourceAsStream(SOURCE)) {
-            if (in == null) {
-                throw new IutException(Kind.INFRA, "the pyfuzzylite bridge " + SOURCE + " is missing from fclcert");
-            }
-            source = in.readAllBytes();
-        } catch (IOException e) {
-            throw new IutException(Kind.INFRA, "could not read the pyfuzzylite bridge: " + e.getMessage());
-        }
-        String key;
-        try {
-            key = HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(source), 0, 12);
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("the JDK has no SHA-256", e);
-        }
-        Path dir = Path.of(System.getProperty("java.io.tmpdir"), "fclcert-pyfuzzylite-bridge", key);
-        Path script = dir.resolve(SOURCE);
-        if (Files.isRegularFile(script)) {
-            return script;
-        }
-        try {
-            Files.createDirectories(dir);
-            Path partial = Files.createTempFile(dir, "bridge", ".partial");
-            Files.write(partial, source);
-            try {
-                // a temporary file is the owner's alone; the sandboxed interpreter may run as another user
-                Files.setPosixFilePermissions(partial, java.nio.file.attribute.PosixFilePermissions.fromString(
-                        "rw-r--r--"));
-            } catch (UnsupportedOperationException e) {
-                // not a POSIX file system: its defaults apply
-            }
-            try {
-                Files.move(partial, script, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(partial, script, StandardCopyOption.REPLACE_EXISTING);
-            }
-            return script;
-        } catch (IOException e) {
-            throw new IutException(Kind.INFRA, "could not write the pyfuzzylite bridge to " + dir + ": "
-                    + e.getMessage());
-        }
+        return BridgeFiles.script("pyfuzzylite-bridge", SOURCE,
+                BridgeFiles.resource(PyfuzzyliteIut.class, SOURCE, "the pyfuzzylite bridge"), "the pyfuzzylite bridge");
     }
 }
