@@ -1,17 +1,11 @@
 package org.fclcert.iut;
 
-import com.fasterxml.jackson.core.JsonFactory;
-import com.fasterxml.jackson.core.json.JsonReadFeature;
-import com.fasterxml.jackson.core.json.JsonWriteFeature;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.BufferedReader;
 import java.io.ByteArrayOutputStream;
 import java.io.FileDescriptor;
 import java.io.FileOutputStream;
 import java.io.IOException;
-import java.io.InputStreamReader;
 import java.io.OutputStream;
 import java.io.PrintStream;
 import java.lang.reflect.InvocationTargetException;
@@ -48,7 +42,7 @@ public final class JFuzzyLogicBridge {
     private static final Pattern BLOCK = Pattern.compile("(?i)\\bFUNCTION_BLOCK\\s+([A-Za-z_][A-Za-z0-9_]*)");
     private static final Pattern COMMENT = Pattern.compile("\\(\\*.*?(\\*\\)|\\z)", Pattern.DOTALL);
 
-    private final ObjectMapper json;
+    private final BridgeLoop loop;
     private final Capture capture;
     private final Method createFromString;
     private final String version;
@@ -57,8 +51,8 @@ public final class JFuzzyLogicBridge {
     private Object fis;
     private List<String> blocks = List.of();
 
-    private JFuzzyLogicBridge(ObjectMapper json, Capture capture) throws ReflectiveOperationException {
-        this.json = json;
+    private JFuzzyLogicBridge(BridgeLoop loop, Capture capture) throws ReflectiveOperationException {
+        this.loop = loop;
         this.capture = capture;
         Class<?> fisType = Class.forName("net.sourceforge.jFuzzyLogic.FIS");
         this.createFromString = fisType.getMethod("createFromString", String.class, boolean.class);
@@ -68,49 +62,22 @@ public final class JFuzzyLogicBridge {
 
     /** Reads requests from standard input until {@code bye} or its end; one reply line per request. */
     public static void main(String[] args) throws IOException {
-        PrintStream protocol = new PrintStream(new FileOutputStream(FileDescriptor.out), false, StandardCharsets.UTF_8);
+        BridgeLoop loop = new BridgeLoop();
         PrintStream stderr = new PrintStream(new FileOutputStream(FileDescriptor.err), true, StandardCharsets.UTF_8);
         Capture capture = new Capture(stderr);
         PrintStream captured = new PrintStream(capture, true, StandardCharsets.UTF_8);
         System.setOut(captured);
         System.setErr(captured);
-        JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
-                .disable(JsonWriteFeature.WRITE_NAN_AS_STRINGS).build();
-        ObjectMapper json = new ObjectMapper(factory);
         JFuzzyLogicBridge bridge;
         try {
-            bridge = new JFuzzyLogicBridge(json, capture);
+            bridge = new JFuzzyLogicBridge(loop, capture);
         } catch (ReflectiveOperationException | LinkageError e) {
             stderr.println("fclcert jfuzzylogic bridge: jFuzzyLogic is not on the class path: " + e);
             stderr.flush();
             Runtime.getRuntime().halt(2);
             return;
         }
-        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
-        for (String line = in.readLine(); line != null; line = in.readLine()) {
-            if (line.isBlank()) {
-                continue;
-            }
-            ObjectNode reply;
-            String op = "";
-            JsonNode request = null;
-            try {
-                request = json.readTree(line);
-                op = request.path("op").asText();
-                reply = bridge.answer(op, request);
-            } catch (IOException e) {
-                reply = error("error", "the request is not JSON: " + e.getMessage(), json);
-            }
-            if (request != null && request.has("id")) {
-                reply.set("id", request.get("id"));
-            }
-            protocol.println(json.writeValueAsString(reply));
-            protocol.flush();
-            if (op.equals("bye")) {
-                break;
-            }
-        }
-        protocol.flush();
+        loop.serve(bridge::answer);
     }
 
     private ObjectNode answer(String op, JsonNode request) {
@@ -123,14 +90,14 @@ public final class JFuzzyLogicBridge {
                 case "reset" -> reset();
                 case "export" -> export();
                 case "bye" -> ok();
-                default -> error("error", "unknown op '" + op + "'", json);
+                default -> error("error", "unknown op '" + op + "'");
             };
         } catch (Refusal r) {
             // a refusal while building what it read is a rejection of the program; elsewhere an evaluation error
-            return op.equals("load") ? rejected(r.getMessage(), OptionalInt.empty()) : error("error", r.getMessage(), json);
+            return op.equals("load") ? rejected(r.getMessage(), OptionalInt.empty()) : error("error", r.getMessage());
         } catch (Throwable t) {
             // anything else is jFuzzyLogic failing inside (or the JVM running out of stack or memory)
-            return error("crash", describe(t) + where(t), json);
+            return error("crash", describe(t) + where(t));
         }
     }
 
@@ -366,19 +333,15 @@ public final class JFuzzyLogicBridge {
     }
 
     private ObjectNode ok() {
-        return json.createObjectNode().put("ok", true);
+        return loop.ok();
     }
 
     private ObjectNode rejected(String message, OptionalInt line) {
-        ObjectNode reply = error("rejected", message, json);
-        line.ifPresent(n -> ((ObjectNode) reply.get("error")).put("line", n));
-        return reply;
+        return loop.rejected(message, line);
     }
 
-    private static ObjectNode error(String kind, String message, ObjectMapper json) {
-        ObjectNode reply = json.createObjectNode().put("ok", false);
-        reply.putObject("error").put("kind", kind).put("message", message);
-        return reply;
+    private ObjectNode error(String kind, String message) {
+        return loop.error(kind, message);
     }
 
     private static String describe(Throwable t) {

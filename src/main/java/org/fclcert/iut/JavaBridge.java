@@ -1,16 +1,10 @@
 package org.fclcert.iut;
 
-import com.fasterxml.jackson.core.JsonFactory;
-import com.fasterxml.jackson.core.json.JsonReadFeature;
-import com.fasterxml.jackson.core.json.JsonWriteFeature;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.BufferedReader;
 import java.io.FileDescriptor;
 import java.io.FileOutputStream;
 import java.io.IOException;
-import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
@@ -32,21 +26,20 @@ public final class JavaBridge {
     /** Inside the child, no call is abandoned: the parent's timeout kills the whole JVM instead. */
     private static final Duration NO_TIMEOUT = Duration.ofDays(365);
 
-    private final ObjectMapper json;
+    private final BridgeLoop loop;
     private final ImplementationUnderTest vendor;
+    private final String openFailure;
 
-    private JavaBridge(ObjectMapper json, ImplementationUnderTest vendor) {
-        this.json = json;
+    private JavaBridge(BridgeLoop loop, ImplementationUnderTest vendor, String openFailure) {
+        this.loop = loop;
         this.vendor = vendor;
+        this.openFailure = openFailure;
     }
 
     /** Reads requests from standard input until {@code bye} or its end; one reply line per request. */
     public static void main(String[] args) throws IOException {
-        PrintStream protocol = new PrintStream(new FileOutputStream(FileDescriptor.out), false, StandardCharsets.UTF_8);
+        BridgeLoop loop = new BridgeLoop();
         System.setOut(new PrintStream(new FileOutputStream(FileDescriptor.err), true, StandardCharsets.UTF_8));
-        JsonFactory factory = JsonFactory.builder().enable(JsonReadFeature.ALLOW_NON_NUMERIC_NUMBERS)
-                .disable(JsonWriteFeature.WRITE_NAN_AS_STRINGS).build();
-        ObjectMapper json = new ObjectMapper(factory);
         String className = args.length == 1 ? args[0] : "";
         ImplementationUnderTest vendor = null;
         String openFailure = null;
@@ -56,33 +49,7 @@ public final class JavaBridge {
         } catch (IutException e) {
             openFailure = e.getMessage();
         }
-        JavaBridge bridge = new JavaBridge(json, vendor);
-        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
-        for (String line = in.readLine(); line != null; line = in.readLine()) {
-            if (line.isBlank()) {
-                continue;
-            }
-            ObjectNode reply;
-            String op = "";
-            JsonNode request = null;
-            try {
-                request = json.readTree(line);
-                op = request.path("op").asText();
-                reply = openFailure != null && !op.equals("bye") ? bridge.error("crash", openFailure)
-                        : bridge.answer(op, request);
-            } catch (IOException e) {
-                reply = bridge.error("error", "the request is not JSON: " + e.getMessage());
-            }
-            if (request != null && request.has("id")) {
-                reply.set("id", request.get("id"));
-            }
-            protocol.println(json.writeValueAsString(reply));
-            protocol.flush();
-            if (op.equals("bye")) {
-                break;
-            }
-        }
-        protocol.flush();
+        loop.serve(new JavaBridge(loop, vendor, openFailure)::answer);
         if (vendor != null) {
             vendor.close();
         }
@@ -91,6 +58,9 @@ public final class JavaBridge {
     }
 
     private ObjectNode answer(String op, JsonNode request) {
+        if (openFailure != null && !op.equals("bye")) {
+            return error("crash", openFailure);
+        }
         try {
             return switch (op) {
                 case "hello" -> hello(vendor.hello());
@@ -126,9 +96,7 @@ public final class JavaBridge {
 
     private ObjectNode load(LoadOutcome outcome) {
         if (outcome instanceof LoadOutcome.Rejected rejected) {
-            ObjectNode reply = error("rejected", rejected.message());
-            rejected.line().ifPresent(n -> ((ObjectNode) reply.get("error")).put("line", n));
-            return reply;
+            return loop.rejected(rejected.message(), rejected.line());
         }
         ObjectNode reply = ok();
         ((LoadOutcome.Loaded) outcome).blocks().forEach(reply.putArray("blocks")::add);
@@ -160,12 +128,10 @@ public final class JavaBridge {
     }
 
     private ObjectNode ok() {
-        return json.createObjectNode().put("ok", true);
+        return loop.ok();
     }
 
     private ObjectNode error(String kind, String message) {
-        ObjectNode reply = json.createObjectNode().put("ok", false);
-        reply.putObject("error").put("kind", kind).put("message", message);
-        return reply;
+        return loop.error(kind, message);
     }
 }
