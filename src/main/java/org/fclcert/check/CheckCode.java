@@ -42,4 +42,9 @@ public record CheckCode(String code, Severity severity, String clause, String me
     public static CheckCode warning(String code, String clause, String meaning) {
         return new CheckCode(code, Severity.WARNING, clause, meaning);
     }
+
+    @Override
+    public Entry entry() {
+        return new Entry(code, severity, clause, meaning);
+    }
 }

@@ -27,34 +27,15 @@ public enum EvaluationCode implements DiagnosticCode {
             "an output without RANGE whose fired term, its points given by variables, is non-zero at an outer point"
                     + " (the set is unbounded)");
 
-    private final String code;
-    private final String clause;
-    private final String meaning;
-
-    EvaluationCode(String code, String clause, String meaning) {
-        this.code = code;
-        this.clause = clause;
-        this.meaning = meaning;
-    }
-
-    @Override
-    public String code() {
-        return code;
-    }
+    private final Entry entry;
 
     /** Always an error: no number comes out. */
-    @Override
-    public Severity severity() {
-        return Severity.ERROR;
+    EvaluationCode(String code, String clause, String meaning) {
+        this.entry = new Entry(code, Severity.ERROR, clause, meaning);
     }
 
     @Override
-    public String clause() {
-        return clause;
-    }
-
-    @Override
-    public String meaning() {
-        return meaning;
+    public Entry entry() {
+        return entry;
     }
 }

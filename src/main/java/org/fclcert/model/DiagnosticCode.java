@@ -13,14 +13,29 @@ package org.fclcert.model;
  */
 public interface DiagnosticCode {
     /** The stable code, e.g. {@code FCL-C002}. */
-    String code();
+    default String code() {
+        return entry().code();
+    }
 
     /** The severity the code is reported with. */
-    Severity severity();
+    default Severity severity() {
+        return entry().severity();
+    }
 
     /** The clause or table the code cites, e.g. {@code 5.2.4} or {@code Table 3}; {@code —} when none. */
-    String clause();
+    default String clause() {
+        return entry().clause();
+    }
 
     /** One line saying what the code means. */
-    String meaning();
+    default String meaning() {
+        return entry().meaning();
+    }
+
+    /** The four facts of the entry; an enum of codes holds one per constant, so it need not repeat the accessors. */
+    Entry entry();
+
+    /** The facts of one catalogue entry, as {@link DiagnosticCode} gives them. */
+    record Entry(String code, Severity severity, String clause, String meaning) {
+    }
 }

@@ -98,40 +98,19 @@ public enum SyntaxCode implements DiagnosticCode {
     NESTED_COMMENT_OPENER("FCL-W106", "IEC 61131-3 B.1.5.1",
             "'(*' inside a comment; comments do not nest, the first '*)' ends it");
 
-    private final String code;
-    private final String clause;
-    private final String meaning;
-
-    SyntaxCode(String code, String clause, String meaning) {
-        this.code = code;
-        this.clause = clause;
-        this.meaning = meaning;
-    }
-
-    /** The stable code, e.g. {@code FCL-S014}. */
-    @Override
-    public String code() {
-        return code;
-    }
+    private final Entry entry;
 
     /** Warnings for {@code FCL-W1nn}, errors otherwise. */
-    @Override
-    public Severity severity() {
-        return isWarning() ? Severity.WARNING : Severity.ERROR;
+    SyntaxCode(String code, String clause, String meaning) {
+        this.entry = new Entry(code, code.startsWith("FCL-W") ? Severity.WARNING : Severity.ERROR, clause, meaning);
     }
 
     @Override
-    public String clause() {
-        return clause;
-    }
-
-    /** One line saying what the code means. */
-    @Override
-    public String meaning() {
-        return meaning;
+    public Entry entry() {
+        return entry;
     }
 
     public boolean isWarning() {
-        return code.startsWith("FCL-W");
+        return severity() == Severity.WARNING;
     }
 }

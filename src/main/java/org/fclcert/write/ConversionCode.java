@@ -14,36 +14,14 @@ public enum ConversionCode implements DiagnosticCode {
     APPROXIMATED("FCL-X002", Severity.WARNING, "Table 10",
             "a construct converted approximately; the message gives the largest membership error");
 
-    private final String code;
-    private final Severity severity;
-    private final String clause;
-    private final String meaning;
+    private final Entry entry;
 
     ConversionCode(String code, Severity severity, String clause, String meaning) {
-        this.code = code;
-        this.severity = severity;
-        this.clause = clause;
-        this.meaning = meaning;
+        this.entry = new Entry(code, severity, clause, meaning);
     }
 
     @Override
-    public String code() {
-        return code;
-    }
-
-    @Override
-    public Severity severity() {
-        return severity;
-    }
-
-    /** Both concern Open Level constructs (Table 10) of a library's dialect. */
-    @Override
-    public String clause() {
-        return clause;
-    }
-
-    @Override
-    public String meaning() {
-        return meaning;
+    public Entry entry() {
+        return entry;
     }
 }

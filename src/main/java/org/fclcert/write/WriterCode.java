@@ -37,39 +37,23 @@ public enum WriterCode implements DiagnosticCode {
     TSUKAMOTO_INVERSE("FCL-X210", "the library inverts a term otherwise in Tsukamoto's method (fuzzylite 6.0: SShape,"
             + " ZShape, Concave)");
 
-    private final String code;
-    private final String meaning;
+    private final Entry entry;
 
+    /**
+     * A loss (X1nn) is an error (a warning with --allow-lossy), a library's deviation (X2nn) a warning; the
+     * libraries' constructs are Open Level features (Table 10), as for the conversion codes.
+     */
     WriterCode(String code, String meaning) {
-        this.code = code;
-        this.meaning = meaning;
+        this.entry = new Entry(code, code.startsWith("FCL-X1") ? Severity.ERROR : Severity.WARNING, "Table 10", meaning);
     }
 
     @Override
-    public String code() {
-        return code;
-    }
-
-    /** What the code is about, in a few words (the catalogue's line). */
-    @Override
-    public String meaning() {
-        return meaning;
-    }
-
-    /** A loss is an error (a warning with --allow-lossy); a library's deviation a warning. */
-    @Override
-    public Severity severity() {
-        return lossOfMeaning() ? Severity.ERROR : Severity.WARNING;
-    }
-
-    /** The libraries' constructs are Open Level features (Table 10), as for the conversion codes. */
-    @Override
-    public String clause() {
-        return "Table 10";
+    public Entry entry() {
+        return entry;
     }
 
     /** X1nn codes are losses of meaning; X2nn codes are the library's own deviations. */
     public boolean lossOfMeaning() {
-        return code.startsWith("FCL-X1");
+        return severity() == Severity.ERROR;
     }
 }

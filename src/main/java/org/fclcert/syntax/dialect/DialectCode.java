@@ -107,36 +107,14 @@ public enum DialectCode implements DiagnosticCode {
             "a hedge in a FIS rule that Octave evaluates otherwise than fuzzylite (read as fuzzylite): 'extremely' (.3)"
                     + " Octave cubes; a hedge in a consequent Octave applies to the output's term, not the rule's degree");
 
-    private final String code;
-    private final Severity severity;
-    private final String clause;
-    private final String meaning;
+    private final Entry entry;
 
     DialectCode(String code, Severity severity, String clause, String meaning) {
-        this.code = code;
-        this.severity = severity;
-        this.clause = clause;
-        this.meaning = meaning;
+        this.entry = new Entry(code, severity, clause, meaning);
     }
 
     @Override
-    public String code() {
-        return code;
-    }
-
-    @Override
-    public Severity severity() {
-        return severity;
-    }
-
-    /** The clause or table of the standard the dialect's construct differs from or stands for. */
-    @Override
-    public String clause() {
-        return clause;
-    }
-
-    @Override
-    public String meaning() {
-        return meaning;
+    public Entry entry() {
+        return entry;
     }
 }
