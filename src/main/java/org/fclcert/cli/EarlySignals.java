@@ -4,7 +4,7 @@ import java.io.PrintStream;
 
 /**
  * SIGINT, SIGTERM and SIGHUP in the moments before a command has its own handling (the run's shutdown hook of
- * {@code certify} and {@code probe}): without a hook of the JVM's, such a signal ended fclcert silently with exit
+ * {@code certify}, {@code probe} and {@code fuzz}): without a hook of the JVM's, such a signal ended fclcert silently with exit
  * code 143 and nothing written (issue 27). {@link #install} is the first thing {@link Main#main} does; from then on
  * a signal ends fclcert with a message saying how far it had come. A command that registers its own hook calls
  * {@link #handledByCommand()}, after which this one stays silent. (The JVM's own start, before {@code main}, has no
@@ -48,8 +48,8 @@ final class EarlySignals {
         }
         err.println();
         err.println("fclcert: " + org.fclcert.iut.StopSignal.INTERRUPTED + (commandStarted
-                ? " before the command finished; it wrote no outputs of a run (certify and probe runs handle a signal"
-                        + " themselves once started)"
+                ? " before the command finished; it wrote no outputs of a run (certify, probe and fuzz runs handle a"
+                        + " signal themselves once started)"
                 : " before the run started; nothing was written"));
         err.flush();
     }

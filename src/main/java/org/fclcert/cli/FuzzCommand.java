@@ -10,14 +10,18 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.fclcert.fuzz.FuzzReport;
 import org.fclcert.fuzz.FuzzSettings;
 import org.fclcert.fuzz.Fuzzer;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutOptions;
 import org.fclcert.iut.Iuts;
+import org.fclcert.iut.StopSignal;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.orchestration.Defaults;
 import org.fclcert.orchestration.OutputDirectory;
 import org.fclcert.orchestration.PresentAs;
 import picocli.CommandLine.Command;
@@ -129,13 +133,58 @@ final class FuzzCommand implements Callable<Integer> {
 
     private int fuzz(PrintWriter stdout, PrintWriter err, String iut, Duration total, ConformanceLevel lvl,
             Set<Feature> focus) {
-        IutOptions options = iutOptions.options();
         Fuzzer.Options run = Fuzzer.Options.of(seed, total, new FuzzSettings(lvl, focus), jobs).withMaxPrograms(programs)
                 .withMaxFindings(Math.max(0, maxFindings)).withLayout(presentAs.resolve(iut));
         boolean terminal = System.console() != null;
+        Fuzzer fuzzer = new Fuzzer();
+        CountDownLatch printed = new CountDownLatch(1);
+        Thread onSignal = new Thread(() -> interrupted(fuzzer, printed, err), "fclcert-interrupted");
+        Runtime.getRuntime().addShutdownHook(onSignal);
+        EarlySignals.handledByCommand();
+        try {
+            return fuzz(stdout, err, iut, fuzzer, run, terminal);
+        } finally {
+            printed.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(onSignal);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running: it waits for 'printed'
+            }
+        }
+    }
+
+    /**
+     * Ctrl-C or a kill during the run (a shutdown hook; the JVM ends when it returns): the fuzzer is stopped, and its
+     * findings so far are written and the summary printed on the command's thread, which this waits for. An
+     * implementation that does not answer within {@link Defaults#STOP_GRACE} has its sessions closed.
+     */
+    private static void interrupted(Fuzzer fuzzer, CountDownLatch printed, PrintWriter err) {
+        fuzzer.stop(StopSignal.INTERRUPTED);
+        try {
+            if (printed.await(Defaults.STOP_GRACE.toMillis(), TimeUnit.MILLISECONDS)) {
+                return;
+            }
+            fuzzer.abandon();
+            if (printed.await(PRINT_GRACE.toMillis(), TimeUnit.MILLISECONDS)) {
+                return;
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        err.println("fclcert fuzz: " + StopSignal.INTERRUPTED + "; the run did not end in time, and its outputs were"
+                + " not written");
+        err.flush();
+    }
+
+    /** How long the shutdown hook waits, once the sessions are closed, for the outputs and the summary. */
+    private static final Duration PRINT_GRACE = Duration.ofSeconds(10);
+
+    private int fuzz(PrintWriter stdout, PrintWriter err, String iut, Fuzzer fuzzer, Fuzzer.Options run,
+            boolean terminal) {
+        IutOptions options = iutOptions.options();
         Fuzzer.Result result;
         try {
-            result = new Fuzzer().run(() -> Iuts.open(iut, options), run, Duration.ofMillis(terminal ? 500 : 5000),
+            result = fuzzer.run(() -> Iuts.open(iut, options), run, Duration.ofMillis(terminal ? 500 : 5000),
                     p -> progress(err, p, terminal));
         } catch (IutException e) {
             return usage(err, "cannot run " + iut + ": " + e.getMessage() + IutArguments.stderrTail(e));
@@ -167,6 +216,8 @@ final class FuzzCommand implements Callable<Integer> {
                     + w.programLines() + " lines: " + w.finding().deviation().message());
         }
         stdout.println("Summary: " + out.resolve(FuzzReport.MARKDOWN) + ", " + FuzzReport.JSON);
+        result.stopped().ifPresent(why -> err.println("fclcert fuzz: the run was stopped (" + why + ") after "
+                + p.programs() + " programs; the findings up to then are written"));
         if (!result.generatorBugs().isEmpty()) {
             err.println("fclcert fuzz: internal error: " + result.generatorBugs().size() + " generated program(s) were not valid; first: "
                     + result.generatorBugs().get(0));

@@ -92,6 +92,7 @@ public final class FuzzReport {
         run.put("started", r.started().toString());
         Fuzzer.Progress p = r.progress();
         run.put("elapsedSeconds", p.elapsedMillis() / 1000.0);
+        r.stopped().ifPresent(why -> run.put("stopped", why));
         ObjectNode counts = root.putObject("counts");
         counts.put("programs", p.programs());
         counts.put("vectors", p.vectors());
@@ -156,6 +157,8 @@ public final class FuzzReport {
                         .map(Feature::id).sorted().toList(),
                 r.options().jobs(), p.elapsedMillis() / 1000.0, p.programs(), p.vectors(), p.programsPerSecond(),
                 p.vectorsPerSecond(), p.disagreements(), written.size()));
+        r.stopped().ifPresent(why -> md.append("**The run was stopped** (").append(why).append(") before its budget"
+                + " ran out: these are the findings up to then; a finding being shrunk then is as small as it had got.\n\n"));
         md.append(String.format(Locale.ROOT, "Time of the jobs (summed): %.1f s on the reference side (generating, "
                 + "checking, judging and evaluating steps), %.1f s waiting for the implementation, %.1f s on "
                 + "disagreements (deduplicating, shrinking).%n%n", p.referenceMillis() / 1000.0,

@@ -96,10 +96,11 @@ public final class Fuzzer {
      *                           Presentation}), how many generated programs were not sent because the layout of
      *                           {@code --present-as} could not say them
      * @param presentationFaults the first programs a writer and fclcert's reader of its dialect disagreed on
+     * @param stopped            why the run was stopped before its budget or program count ran out ({@link #stop})
      */
     public record Result(IutInfo iut, Options options, Instant started, Progress progress, List<Finding> findings,
             long unexplained, List<String> generatorBugs, List<String> infrastructureErrors,
-            Map<String, Long> notPresentable, List<String> presentationFaults) {
+            Map<String, Long> notPresentable, List<String> presentationFaults, Optional<String> stopped) {
     }
 
     private final CanonicalWriter writer = new CanonicalWriter();
@@ -124,6 +125,8 @@ public final class Fuzzer {
     private final Map<String, Finding> findings = new LinkedHashMap<>();
     private final List<IutSession> sessions = new ArrayList<>();
     private volatile Instant start;
+    /** Why the run was stopped from outside ({@link #stop}), or null while it runs. */
+    private volatile String stopped;
 
     public Fuzzer() {
         this(new ScreenedFairness());
@@ -131,6 +134,32 @@ public final class Fuzzer {
 
     public Fuzzer(FairnessJudge fairness) {
         this.fairness = fairness;
+    }
+
+    /**
+     * Stops the run from another thread (the command line's answer to a signal): no program is started after this,
+     * a shrink under way ends with the smallest case found so far, and what a program under way does from now on
+     * (an implementation that dies of the same Ctrl-C) is not held against the implementation. {@link #run} then
+     * returns with everything found so far and {@link Result#stopped()} saying why. Only the first stop counts.
+     */
+    public synchronized void stop(String why) {
+        if (stopped == null) {
+            stopped = why;
+        }
+    }
+
+    /**
+     * After {@link #stop}, for an implementation that does not answer: closes every session (ending its process), so
+     * that the jobs waiting on it return at once instead of at the request's timeout.
+     */
+    public void abandon() {
+        synchronized (sessions) {
+            sessions.forEach(IutSession::close);
+        }
+    }
+
+    private boolean stopRequested() {
+        return stopped != null;
     }
 
     /** Program {@code index} of the run with this seed. */
@@ -190,7 +219,7 @@ public final class Fuzzer {
         synchronized (generatorBugs) {
             return new Result(info, options, start, progress(), List.copyOf(list), unexplained.get(),
                     List.copyOf(generatorBugs), List.copyOf(infrastructure), java.util.Collections.unmodifiableMap(new TreeMap<>(notPresentableBy)),
-                    List.copyOf(presentationFaults));
+                    List.copyOf(presentationFaults), Optional.ofNullable(stopped));
         }
     }
 
@@ -220,7 +249,7 @@ public final class Fuzzer {
                 }
             }
             VectorGenerator vectorGenerator = new VectorGenerator(counting());
-            while (Instant.now().isBefore(end)) {
+            while (Instant.now().isBefore(end) && !stopRequested()) {
                 long index = nextProgram.getAndIncrement();
                 if (options.maxPrograms() > 0 && index >= options.maxPrograms() || enoughFindings(options)) {
                     break;
@@ -228,6 +257,9 @@ public final class Fuzzer {
                 one(session, options, generator, vectorGenerator, index);
             }
         } catch (IutException e) {
+            if (stopRequested()) {
+                return;     // the session was closed by abandon(), or the implementation died of the same signal
+            }
             synchronized (generatorBugs) {
                 infrastructure.add("job " + Thread.currentThread().getName() + ": " + e.getMessage());
             }
@@ -269,6 +301,9 @@ public final class Fuzzer {
             return;
         }
         Optional<Deviation> d = Trial.run(session, p.ref(), p.sent(), p.expected());
+        if (stopRequested()) {
+            return;     // what the implementation did while the run was being stopped is not counted
+        }
         long t2 = System.nanoTime();
         implementationNanos.addAndGet(t2 - t1);
         programs.incrementAndGet();
@@ -335,7 +370,7 @@ public final class Fuzzer {
         }
         long foundAfter = Duration.between(start, Instant.now()).toMillis();
         Instant deadline = Instant.now().plus(options.shrinkTime());
-        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline).shrink(raw, deviation);
+        Shrinker.Result shrunk = new Shrinker(session, fairness, presentation, 4000, deadline, this::stopRequested).shrink(raw, deviation);
         Feature feature = Isolation.feature(shrunk.minimal(), shrunk.deviation(), presentation);
         Finding f = new Finding(feature, deviation.kind(), shrunk.minimal(), shrunk.deviation(), deviation, index, p.seed(),
                 (int) p.text().lines().count(), shrunk.tried(), 0, foundAfter,
@@ -398,7 +433,7 @@ public final class Fuzzer {
             }
         }
         java.util.Set<Feature> used = new FeatureDetector().detect(raw.program()).features();
-        Shrinker probe = new Shrinker(session, fairness, presentation, Integer.MAX_VALUE, Instant.MAX);
+        Shrinker probe = new Shrinker(session, fairness, presentation, Integer.MAX_VALUE, Instant.MAX, this::stopRequested);
         for (Finding f : same) {
             if (!used.contains(f.feature())) {
                 continue;

@@ -78,14 +78,18 @@ final class Shrinker {
     private final Presentation presentation;
     private final int maxTrials;
     private final Instant deadline;
+    /** True once the run is stopped from outside: the shrink ends with the smallest case found so far. */
+    private final java.util.function.BooleanSupplier stopped;
     private int tried;
 
-    Shrinker(IutSession session, FairnessJudge fairness, Presentation presentation, int maxTrials, Instant deadline) {
+    Shrinker(IutSession session, FairnessJudge fairness, Presentation presentation, int maxTrials, Instant deadline,
+            java.util.function.BooleanSupplier stopped) {
         this.session = session;
         this.fairness = fairness;
         this.presentation = presentation;
         this.maxTrials = maxTrials;
         this.deadline = deadline;
+        this.stopped = stopped;
     }
 
     Result shrink(Case start, Deviation deviation) throws IutException {
@@ -122,7 +126,7 @@ final class Shrinker {
     }
 
     private boolean exhausted() {
-        return tried >= maxTrials || Instant.now().isAfter(deadline);
+        return tried >= maxTrials || Instant.now().isAfter(deadline) || stopped.getAsBoolean();
     }
 
     /** Steps after the failing one do not matter. */

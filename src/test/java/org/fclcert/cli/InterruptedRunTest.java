@@ -268,4 +268,34 @@ class InterruptedRunTest {
         }
         noSurvivors();
     }
+
+    /**
+     * A fuzz run stopped by a signal writes what it found so far (the same "never lost results" as certify): the
+     * fake answers every output with the sum of the inputs, so the first programs disagree and a shrink is under way
+     * when the signal comes; it ends there, and the finding is written, with the run marked as stopped. Every process
+     * of the implementation ends.
+     */
+    @Test
+    void anInterruptedFuzzRunWritesTheFindingsSoFar() throws Exception {
+        Path out = dir.resolve("fuzz");
+        Process p = start("fuzz", "--iut", slow(0.01), "--no-sandbox", "--budget", "10m", "--seed", "5", "--out",
+                out.toString());
+        awaitLines(dir.resolve("pids"), 2);
+        Thread.sleep(4000);   // a few programs, the first disagreement being shrunk
+        signal("TERM", String.valueOf(p.pid()));
+        assertEquals(143, awaitExit(p), () -> "stderr: " + safeText("stderr"));
+        String err = text("stderr");
+        assertTrue(err.contains("fclcert fuzz: the run was stopped (interrupted (SIGINT, SIGTERM or SIGHUP)) after "), err);
+        assertFalse(err.contains("Exception") || err.contains("internal error"), err);
+        var json = new com.fasterxml.jackson.databind.ObjectMapper().readTree(out.resolve("fuzz.json").toFile());
+        assertEquals("interrupted (SIGINT, SIGTERM or SIGHUP)", json.path("run").path("stopped").asText());
+        assertTrue(json.path("counts").path("findings").asInt() >= 1, json.toString());
+        assertEquals(json.path("counts").path("findings").asInt(), json.path("findings").size());
+        for (var f : json.path("findings")) {
+            assertTrue(Files.exists(out.resolve(f.path("file").asText())), f.toString());
+        }
+        assertTrue(Files.readString(out.resolve("fuzz.md")).contains("**The run was stopped** (interrupted"));
+        assertTrue(text("stdout").contains("finding(s)"), text("stdout"));
+        noSurvivors();
+    }
 }
