@@ -118,6 +118,8 @@ final class ConvertCommand implements Callable<Integer> {
                         + " add --allow-lossy to write the nearest standard program anyway");
                 return ExitCodes.ERRORS;
             }
+            commentsLeftOut(err, source.program().get().comments().size() - result.program().comments().size(),
+                    "a program whose constructs were converted");
             if (outFile != null) {
                 SourceFiles.write(outFile, standard);
                 err.println("fclcert: wrote " + outFile);
@@ -158,6 +160,7 @@ final class ConvertCommand implements Callable<Integer> {
                     + " says; add --allow-lossy to write the nearest " + target.displayName() + " program anyway");
             return ExitCodes.ERRORS;
         }
+        commentsLeftOut(err, source.program().get().comments().size(), target.displayName() + "'s text");
         if (outFile != null) {
             SourceFiles.write(outFile, written.text());
             err.println("fclcert: wrote " + outFile);
@@ -166,6 +169,14 @@ final class ConvertCommand implements Callable<Integer> {
             out.flush();
         }
         return ExitCodes.OK;
+    }
+
+    /** Says how many comments the written text leaves out, so that none is lost unsaid (the writers write none). */
+    private void commentsLeftOut(PrintWriter err, int lost, String where) {
+        if (lost > 0) {
+            err.println("fclcert: note: " + DiagnosticPrinter.count(lost, "comment") + " of " + SourceFiles.name(file)
+                    + " not written: fclcert writes no comments into " + where);
+        }
     }
 
     /** One located line per finding: exact ones as notes, the others as diagnostics (FCL-X001, FCL-X002). */

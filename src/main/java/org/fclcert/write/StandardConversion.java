@@ -157,7 +157,10 @@ public final class StandardConversion {
             p = c.apply(p, options, findings);
         }
         findings.sort(Comparator.comparing(Finding::location));
-        return new Result(new Program(p.sourceName(), p.functionBlocks()), findings);
+        // with nothing converted the blocks are the ones read, and the comments still stand where they were found;
+        // a converted program's comments would name elements the conversion replaced, so they are left out (said)
+        return new Result(new Program(p.sourceName(), p.functionBlocks())
+                .withComments(findings.isEmpty() ? program.comments() : List.of()), findings);
     }
 
     // ---------------------------------------------------------------- the conversions

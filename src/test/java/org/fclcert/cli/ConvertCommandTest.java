@@ -1,6 +1,7 @@
 package org.fclcert.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -115,5 +116,24 @@ class ConvertCommandTest {
         assertTrue(j.out().matches("(?s).*\\n  O-METHOD-COGF +jFuzzyLogic's 'COGF', read as CoG +at 31:14\\n.*"),
                 j.out());
         assertTrue(j.out().matches("(?s).*\\n  O-INPUT-RANGE .* at 15:5\\n.*"), j.out());
+    }
+
+    /**
+     * No comment is lost unsaid: a standard program converted to standard FCL keeps its comments where they stood;
+     * a library's text carries none, and the command says how many it left out.
+     */
+    @Test
+    void commentsAreKeptOrTheirLossIsSaid() {
+        Cli standard = Cli.run("convert", "--to", "strict", "examples/valve.fcl");
+        assertEquals(0, standard.exitCode(), standard.err());
+        assertTrue(standard.out().startsWith("(* The fuzzy function block of IEC 61131-7, 5.3 (Figure 7): a valve"),
+                standard.out());
+        assertFalse(standard.err().contains("comment"), standard.err());
+
+        Cli library = Cli.run("convert", "--to", "fuzzylite", "examples/valve.fcl");
+        assertEquals(0, library.exitCode(), library.err());
+        assertFalse(library.out().contains("(*"), library.out());
+        assertTrue(library.errLines().contains("fclcert: note: 1 comment of examples/valve.fcl not written: fclcert"
+                + " writes no comments into fuzzylite's text"), library.err());
     }
 }
