@@ -863,11 +863,12 @@ public final class FunctionBlockInstance {
     private double methodBound;
     /** The unit roundoff of a double. */
     private static final double U = 0x1.0p-53;
+    private static final int[] NONE = {};
 
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
     private void defuzzify(int index, OutputPlan o, double previousValue, SmoothSet smooth, Trace trace,
             boolean compiled) throws EvaluationException {
-        for (int s : o.termShapes()) {
+        for (int s : compiled ? NONE : o.termShapes()) {     // the kernel's outputs have no computed terms
             if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
                 plan.shapes[s].resolve(values, curX[s], curY[s]);
                 representations(s);
@@ -896,7 +897,7 @@ public final class FunctionBlockInstance {
             throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
         }
-        if (plan.types[o.slot()].isInteger() && nearHalf(result, methodBound)) {
+        if (integerSlot[o.slot()] && nearHalf(result, methodBound)) {
             undecided("INT rounding at .5");            // half away from zero, within the bound
         }
         bounds[index] = methodBound;
