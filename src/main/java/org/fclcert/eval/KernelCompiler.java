@@ -17,21 +17,21 @@ import org.objectweb.asm.Label;
 import org.objectweb.asm.MethodVisitor;
 
 /**
- * Generates a block's {@link CompiledKernel} with ASM: the interpreter's fuzzification, flat rule conditions and
+ * Generates a block's {@link CompiledKernel} with ASM: the interpreter's fuzzification, rule blocks and
  * singleton CoGS written out for one plan, its points, weights and operators as constants, its loops unrolled
  * (docs/semantics.md, "The compiled kernel"). Every double the generated code computes is computed by the same
  * operations in the same order as in {@link FunctionBlockInstance} ({@code degree}, {@code aggregateTerms},
- * {@code runRuleBlock}, {@code degreesPerTerm}, {@code centreOfGravityForSingletons}), and every bound by the same
+ * {@code aggregate}, {@code runRuleBlock}, {@code degreesPerTerm}, {@code centreOfGravityForSingletons}), and every bound by the same
  * {@link Norms} method; constants the interpreter derives from the plan (a segment's width, a singleton set's
  * largest |value|) are derived here by the same Java expressions. {@code KernelAgreementTest} holds the two to
  * each other bit for bit.
  *
  * <p>It covers the plans of the usual Mamdani block: input terms given by constant points (piece-wise linear or
- * singleton), conditions that are one term or one AND or OR of terms (negated or not, any Table 3 pair), IS
- * subconclusions with constant weights; singleton outputs with MAX accumulation and CoG/CoGS are compiled whole,
- * other outputs are accumulated and defuzzified by the interpreter from the kernel's degrees. A plan with anything
- * else (variable points, named shapes, hedges, NOT of a subexpression, variables as subconditions or weights, bare
- * conclusions, the dialects' chained terms) gets no kernel and is interpreted.
+ * singleton), conditions of terms, IS NOT, NOT, parentheses and variables with any Table 3 pair, IS
+ * subconclusions with constant or variable weights; singleton outputs with MAX accumulation and CoG/CoGS are
+ * compiled whole, other outputs are accumulated and defuzzified by the interpreter from the kernel's degrees. A plan with anything
+ * else (variable points, named shapes, hedges, 'any', bare conclusions, the dialects' chained terms) gets no
+ * kernel and is interpreted.
  *
  * <p>Its size (about 1 000 lines, above the project's 700) is earned: each emitter sits beside the interpreter
  * expression it writes out, operation by operation, so that the two can be read side by side; splitting it would
@@ -128,7 +128,8 @@ final class KernelCompiler {
             }
             for (int r = 0; r < rb.conditions().length; r++) {
                 for (int op : rb.conditions()[r].ops) {
-                    if (op < ConditionCode.TERM || op > ConditionCode.ONE) {
+                    // the dialects' hedges and 'any' are emitted below but no agreement test reaches them yet
+                    if (op < ConditionCode.TERM || op > ConditionCode.OR) {
                         return false;
                     }
                 }
