@@ -29,7 +29,8 @@ import org.junit.jupiter.api.Test;
  * {@link FastExactAgreementTest.Gen} (coarse grids: clip levels at vertices, tied maxima, degrees exactly 0, ½ or
  * 1, CoGS on .5) and the fuzzer's {@link ProgramGenerator} with {@link VectorGenerator}'s candidate steps
  * unjudged. Every step, from the same state: the interpreter and the compiled kernel give the same error code or
- * the same outputs, bounds, term degrees, contributions and fallbacks <em>bit for bit</em>; the exact path the same
+ * the same outputs, bounds, term degrees, contributions and fallbacks <em>bit for bit</em>, and the
+ * same first undecided decision; the exact path the same
  * error code and every output within the bound plus the exact value's rounding (so the same DEFAULT, the same INT
  * values). No exemption. The counts (programs and steps the kernel ran, outputs it computed whole, steps that fell
  * back to exact arithmetic) are printed and asserted, so that the test cannot pass by compiling nothing.
@@ -164,7 +165,8 @@ class KernelAgreementTest {
         if (!Objects.equals(interpreterError, compiledError)) {
             return "interpreter error " + interpreterError + ", compiled error " + compiledError;
         }
-        if (interpreter.fallbacks() != compiled.fallbacks()) {
+        if (interpreter.fallbacks() != compiled.fallbacks()
+                || !Objects.equals(interpreter.lastUndecided(), compiled.lastUndecided())) {
             return "interpreter fell back " + interpreter.fallbacks() + " times, compiled " + compiled.fallbacks()
                     + " (" + interpreter.lastUndecided() + " / " + compiled.lastUndecided() + ")";
         }
