@@ -102,6 +102,19 @@ final class BlockPlan {
         maxBareTargets = bare;
     }
 
+    /** The compiled kernel, generated when an instance first asks for it (KernelCompiler); see {@link #kernel}. */
+    private KernelCompiler.Compiled kernel;
+    private boolean kernelTried;
+
+    /** The block's compiled kernel, generated once and shared by its instances; null when the plan is not covered. */
+    synchronized KernelCompiler.Compiled kernel() {
+        if (!kernelTried) {
+            kernelTried = true;
+            kernel = KernelCompiler.compile(this);
+        }
+        return kernel;
+    }
+
     /** Mutable holder the compiler fills. */
     static final class Builder {
         String name;

@@ -29,7 +29,11 @@ import org.fclcert.model.OrAlgorithm;
  * is the exact one and a REAL output is within {@link #bound(String)} of it. {@link #fallbacks()} counts the
  * evaluations redone. {@link #evaluate()} does no name lookup and allocates nothing when it does not fall back.
  *
- * <p>Its size (about 1 200 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
+ * <p>From its {@link #KERNEL_AFTER}th evaluation an instance of a block the compiled kernel covers runs
+ * fuzzification, the rule blocks and singleton outputs as generated code ({@link KernelCompiler}) that computes
+ * the same doubles and bounds as the code here, bit for bit; the decisions stay here.
+ *
+ * <p>Its size (about 1 400 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
  * here with its error bound and the decision points that read it, so that a bound and the decision it settles
  * cannot drift apart; the operators' formulas themselves are in {@link Norms}, the exact arithmetic in
  * {@link ExactInstance}.
@@ -108,6 +112,24 @@ public final class FunctionBlockInstance {
 
     /** Shapes with points from variables, re-read at each evaluation. */
     private final int[] variableShapes;
+
+    /**
+     * The compiled kernel once it is in use (null before, and for a plan it does not cover): fuzzification and the
+     * rule blocks, and the outputs marked in {@link #kernelOutputs}, as generated code computing the same doubles
+     * and bounds (docs/semantics.md, "The compiled kernel"). Taken at the {@link #KERNEL_AFTER}th evaluation.
+     */
+    private CompiledKernel kernel;
+    private boolean[] kernelOutputs;
+    private final double[] kernelScratch = new double[2];
+    /** Whether this instance still waits to take the kernel ({@link #KERNEL_AFTER}); false once decided either way. */
+    private boolean kernelPending = true;
+    private long compiledEvaluations;
+    /**
+     * The evaluation at which an instance takes its block's kernel: a step or a program evaluated only a few times
+     * (certify's vectors, the fuzzer) stays with the interpreter and never pays for generating the class. The results
+     * do not depend on it: the kernel's are the interpreter's bit for bit.
+     */
+    static final int KERNEL_AFTER = 64;
 
     FunctionBlockInstance(BlockPlan plan) {
         this(plan, true);
@@ -357,6 +379,9 @@ public final class FunctionBlockInstance {
      */
     public void evaluate(Trace trace) throws EvaluationException {
         evaluations++;
+        if (kernelPending && evaluations > KERNEL_AFTER && filtered) {
+            useKernel();
+        }
         if (!filtered) {
             evaluateInDoubles(trace);
             return;
@@ -390,6 +415,43 @@ public final class FunctionBlockInstance {
                 trace.decidedExactly(judge.results());
             }
         }
+    }
+
+    /** Takes the block's compiled kernel, if its plan is covered; returns whether it did (also for the tests). */
+    boolean useKernel() {
+        kernelPending = false;
+        KernelCompiler.Compiled compiled = plan.kernel();
+        if (compiled != null) {
+            kernel = compiled.kernel();
+            kernelOutputs = compiled.outputs();
+        }
+        return kernel != null;
+    }
+
+    /** Never takes the kernel: the interpreter alone (for the agreement tests). */
+    void interpretOnly() {
+        kernelPending = false;
+        kernel = null;
+        kernelOutputs = null;
+    }
+
+    /**
+     * Evaluations whose fuzzification and rule blocks ran as the compiled kernel (the same doubles as the
+     * interpreter's; see {@link #KERNEL_AFTER}).
+     */
+    public long compiledEvaluations() {
+        return compiledEvaluations;
+    }
+
+    /** Whether the kernel computes output {@code index} whole (accumulation and defuzzification too). */
+    boolean kernelComputesOutput(int index) {
+        return kernelOutputs != null && kernelOutputs[index];
+    }
+
+    /** The term degrees and the contributions with their bounds, as the last evaluation left them (for the tests). */
+    double[][] internals() {
+        return new double[][] {termDegrees.clone(), termErrors.clone(), contributionDegree.clone(),
+            contributionWeight.clone(), contributionError.clone(), contributionDegreeError.clone(), bounds.clone()};
     }
 
     /** A copy of every variable's current value, by slot (for the agreement tests: the state a step starts from). */
@@ -431,19 +493,27 @@ public final class FunctionBlockInstance {
             previous[i] = values[plan.outputs[i].slot()];
         }
         resolveVariableShapes();
-        fuzzify(trace);
-        for (int t = plan.termShape.length; t < termDegrees.length; t++) {
-            termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
-            termErrors[t] = 0.0;
-        }
-        if (plan.valueTermShape != null) {
-            valueConditions();
-        }
-        for (RuleBlockPlan rb : plan.ruleBlocks) {
-            runRuleBlock(rb, trace);
+        boolean compiled = kernel != null && trace == null;
+        if (compiled) {
+            // the kernel's plans have no chained terms, output-value conditions nor bare conclusions
+            kernel.front(values, valueRep, termDegrees, termErrors, contributionDegree, contributionWeight,
+                    contributionError, contributionDegreeError);
+            compiledEvaluations++;
+        } else {
+            fuzzify(trace);
+            for (int t = plan.termShape.length; t < termDegrees.length; t++) {
+                termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
+                termErrors[t] = 0.0;
+            }
+            if (plan.valueTermShape != null) {
+                valueConditions();
+            }
+            for (RuleBlockPlan rb : plan.ruleBlocks) {
+                runRuleBlock(rb, trace);
+            }
         }
         for (int i = 0; i < plan.outputs.length; i++) {
-            defuzzify(i, plan.outputs[i], previous[i], smoothSets[i], trace);
+            defuzzify(i, plan.outputs[i], previous[i], smoothSets[i], trace, compiled && kernelOutputs[i]);
         }
     }
 
@@ -793,18 +863,20 @@ public final class FunctionBlockInstance {
     private double methodBound;
     /** The unit roundoff of a double. */
     private static final double U = 0x1.0p-53;
+    private static final int[] NONE = {};
 
     /** Accumulation and defuzzification of one output, or DEFAULT / NC when nothing fired. */
-    private void defuzzify(int index, OutputPlan o, double previousValue, SmoothSet smooth, Trace trace)
-            throws EvaluationException {
-        for (int s : o.termShapes()) {
+    private void defuzzify(int index, OutputPlan o, double previousValue, SmoothSet smooth, Trace trace,
+            boolean compiled) throws EvaluationException {
+        for (int s : compiled ? NONE : o.termShapes()) {     // the kernel's outputs have no computed terms
             if (plan.shapes[s].computed != null) {      // Takagi–Sugeno: the value now, after the outputs before it
                 plan.shapes[s].resolve(values, curX[s], curY[s]);
                 representations(s);
             }
         }
         methodBound = 0;
-        double result = o.singletons() ? singletons(o, trace)
+        double result = compiled ? compiledOutput(index)
+                : o.singletons() ? singletons(o, trace)
                 : o.method() == DefuzzificationMethod.TSUKAMOTO ? tsukamoto(o, trace)
                 : smooth != null ? smoothSet(o, smooth, trace) : pointSet(o, trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
@@ -825,7 +897,7 @@ public final class FunctionBlockInstance {
             throw new EvaluationException(EvaluationCode.NO_RESULT,
                     "defuzzification of '" + o.variable() + "' overflowed (result " + result + ")");
         }
-        if (plan.types[o.slot()].isInteger() && nearHalf(result, methodBound)) {
+        if (integerSlot[o.slot()] && nearHalf(result, methodBound)) {
             undecided("INT rounding at .5");            // half away from zero, within the bound
         }
         bounds[index] = methodBound;
@@ -834,6 +906,22 @@ public final class FunctionBlockInstance {
         if (trace != null) {
             trace.add(new Trace.Result(o.variable(), stored, outcome, result));
         }
+    }
+
+    /**
+     * The kernel's {@link #singletons} for an output it compiled: the same degrees, bounds, value and first
+     * undecided decision.
+     */
+    private double compiledOutput(int index) {
+        double result = kernel.output(index, contributionDegree, contributionWeight, contributionError,
+                singletonDegree, singletonError, kernelScratch);
+        methodBound = kernelScratch[0];
+        if (kernelScratch[1] == 1) {
+            undecided("whether any rule fired");
+        } else if (kernelScratch[1] == 2) {
+            undecided("CoGS bound");
+        }
+        return result;
     }
 
     /**

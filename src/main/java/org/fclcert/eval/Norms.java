@@ -129,8 +129,7 @@ final class Norms {
     static double andError(AndAlgorithm a, double x, double ex, double y, double ey, double r) {
         return switch (a) {
             // an exact 0 operand gives an exact 0 (the other operand is a degree, so not below 0)
-            case MIN -> x == 0 && ex == 0 || y == 0 && ey == 0 ? 0
-                    : x + ex <= y - ey ? ex : y + ey <= x - ex ? ey : Math.max(ex, ey);
+            case MIN -> minError(x, ex, y, ey);
             case PROD -> productError(x, ex, y, ey, r);
             case BDIF -> clampAtZero(x + y - 1.0, ex + ey + R);
             // Lipschitz constant at most 1 in each operand on [0, 1]^2
@@ -202,6 +201,12 @@ final class Norms {
         }
         double propagated = a > 0 ? Math.min(Math.sqrt(e), e / Math.sqrt(a)) : Math.sqrt(e);
         return propagated + 1e-58 + R;      // the exact path's square root carries 60 digits
+    }
+
+    /** The bound of min(x, y) of two degrees: 0 with an exact 0 operand, else the smaller operand's when certain. */
+    static double minError(double x, double ex, double y, double ey) {
+        return x == 0 && ex == 0 || y == 0 && ey == 0 ? 0
+                : x + ex <= y - ey ? ex : y + ey <= x - ex ? ey : Math.max(ex, ey);
     }
 
     /** The bound of max(x, y): the larger operand's when it is certainly the larger, else the larger bound. */

@@ -129,7 +129,7 @@ class FastExactAgreementTest {
     }
 
     /** A random program on a coarse decimal grid. */
-    private static final class Gen {
+    static final class Gen {
         private static final double[] DEGREES = {0, 0, 1, 1, 0.5, 0.25, 0.75, 0.2, 0.4, 0.6, 0.8, 0.3, 0.7};
         private final Random rnd;
         private final boolean singletonInput;
