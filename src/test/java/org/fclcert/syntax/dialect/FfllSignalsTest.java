@@ -48,6 +48,26 @@ class FfllSignalsTest {
     }
 
     @Test
+    void aRuleRunningIntoTheNextRulesOutTheTermOnlyConstructs() {
+        // one ';' forgotten: the full read has a syntax error, so no program and no term-only giveaway; the
+        // first look passes over it (it once read every such text, 200 ms for 10 000 rules)
+        String runsOn = STANDARD.replace("WITH 0.5;", "WITH 0.5");
+        assertFalse(FfllSignals.possible(runsOn));
+        assertEquals(List.of(), FfllReader.readGiveaways(runsOn));
+        // even with a term-only subcondition, in the same rule or another
+        for (String text : List.of(runsOn.replace("IF level IS low AND", "IF low AND"),
+                runsOn.replace("THEN valve IS shut", "THEN shut"),
+                STANDARD.replace("THEN valve IS shut;", "THEN valve IS shut").replace("IF level IS low AND", "IF low AND"))) {
+            assertFalse(FfllSignals.possible(text), text);
+            assertEquals(List.of(), FfllReader.readGiveaways(text), text);
+        }
+        // but what the token filter finds alone still counts: ACCUM is looked at and found
+        String accum = runsOn.replace("ACCU : MAX", "ACCUM : MAX");
+        assertTrue(FfllSignals.possible(accum));
+        assertFalse(FfllReader.readGiveaways(accum).isEmpty());
+    }
+
+    @Test
     void eachFfllConstructIsLookedAtAndFound() {
         List<String> ffll = List.of(
                 STANDARD.replace("ACCU : MAX", "ACCUM : MAX"),
