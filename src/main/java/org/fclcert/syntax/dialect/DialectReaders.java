@@ -191,8 +191,9 @@ public final class DialectReaders {
 
     /**
      * True when the statement holding {@code at} is surely no TERM: back to the ';' before it there is no word
-     * TERM and no comment mark (a ';' in a comment would end the search early), and the ';' itself stands after
-     * no comment mark on its line.
+     * TERM, and that ';' is no comment's (no comment mark before it on its line, and no comment closes between it
+     * and {@code at} that did not open there too; a comment still open at {@code at} holds the edit, which is then
+     * no token's).
      */
     private static boolean outsideTerm(String text, int at) {
         int i = at - 1;
@@ -203,14 +204,32 @@ public final class DialectReaders {
             return false;
         }
         String statement = text.substring(i + 1, at);
-        int lineStart = text.lastIndexOf('\n', i) + 1;
-        String beforeSemicolon = text.substring(lineStart, i);
-        return !commentMark(statement) && !statement.contains("*)") && !statement.contains("*/")
-                && !commentMark(beforeSemicolon) && !TERM.matcher(statement).find();
+        String beforeSemicolon = text.substring(text.lastIndexOf('\n', i) + 1, i);
+        return !beforeSemicolon.contains("(*") && !beforeSemicolon.contains("/*") && !beforeSemicolon.contains("//")
+                && !beforeSemicolon.contains("#") && commentsOpenBeforeTheyClose(statement)
+                && !TERM.matcher(statement).find();
     }
 
-    private static boolean commentMark(String s) {
-        return s.contains("(*") || s.contains("/*") || s.contains("//") || s.contains("#");
+    /** False when a {@code *)} or {@code *\/} in {@code s} closes a comment that did not open in {@code s}. */
+    private static boolean commentsOpenBeforeTheyClose(String s) {
+        int k = 0;
+        while (k < s.length()) {
+            if (s.startsWith("*)", k) || s.startsWith("*/", k)) {
+                return false;
+            }
+            String close = s.startsWith("(*", k) ? "*)" : s.startsWith("/*", k) ? "*/"
+                    : s.startsWith("//", k) || s.charAt(k) == '#' ? "\n" : null;
+            if (close == null) {
+                k++;
+                continue;
+            }
+            int end = s.indexOf(close, k + (close.equals("\n") ? 1 : 2));
+            if (end < 0) {
+                return true;     // still open at the edit
+            }
+            k = end + close.length();
+        }
+        return true;
     }
 
     private static boolean digits(String s) {

@@ -111,6 +111,17 @@ class DetectionKeptTest {
         int weight = JFL.indexOf("0.5") + 2;
         assertTrue(DialectReaders.kept(before, JFL, weight, weight + 1, "7"));
         assertEquals(shown(before.choice()), shown(DialectReaders.auto(edit(JFL, weight, weight + 1, "7"))));
+        // a comment between the statement before and the edit, as the 10 000-rule benchmark writes one: kept
+        String commented = JFL.replace("AND : MIN;", "AND : MIN; (* the rules: *)");
+        int w = commented.indexOf("0.5") + 2;
+        assertTrue(DialectReaders.kept(DialectReaders.detect(commented), commented, w, w + 1, "7"));
+        // but a ';' in a comment is no statement's end: the TERM before it is seen through the comment
+        String hidden = JFL.replace("TERM open := (0, 0) (50, 1) (100, 1);", "TERM open := (0, 0) (* ; *) (50, 1) (100, 1);");
+        int d = hidden.indexOf("(100, 1)") + 6;
+        assertFalse(DialectReaders.kept(DialectReaders.detect(hidden), hidden, d, d + 1, "0"));
+        String hiddenByLine = JFL.replace("TERM open := (0, 0) (50, 1) (100, 1);", "TERM open := (0, 0) // ;\n (50, 1) (100, 1);");
+        int e = hiddenByLine.indexOf("(100, 1)") + 6;
+        assertFalse(DialectReaders.kept(DialectReaders.detect(hiddenByLine), hiddenByLine, e, e + 1, "0"));
         // not a digit, or in a name, or beside a letter (an exponent): refused
         assertFalse(DialectReaders.kept(before, JFL, weight, weight + 1, "x"));
         assertFalse(DialectReaders.kept(before, JFL, weight - 2, weight + 1, "1"));   // '0.5' holds a '.'
