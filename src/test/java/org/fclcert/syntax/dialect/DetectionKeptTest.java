@@ -12,7 +12,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -34,17 +33,7 @@ class DetectionKeptTest {
 
     @Test
     void aKeptChoiceIsTheChoiceOfTheEditedText() throws IOException {
-        List<Path> roots = List.of(Path.of("conformance"), Path.of("src/test/resources"), Path.of("/work/shared/peers"),
-                Path.of("/usr/share/doc/fuzzylite/examples"));
-        List<Path> files = new ArrayList<>();
-        for (Path root : roots) {
-            if (Files.isDirectory(root)) {
-                try (Stream<Path> s = Files.walk(root)) {
-                    s.filter(p -> (p.toString().endsWith(".fcl") || p.toString().endsWith(".fll")
-                            || p.toString().endsWith(".fis")) && Files.isRegularFile(p)).forEach(files::add);
-                }
-            }
-        }
+        List<Path> files = TextsAtHand.files(".fcl", ".fll", ".fis");
         assertTrue(files.size() > 100, "texts found: " + files.size());
         Random random = new Random(31);
         int kept = 0;

@@ -8,9 +8,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -88,16 +86,7 @@ class FfllSignalsTest {
 
     @Test
     void noTextAtHandIsPassedOverWithAGiveaway() throws IOException {
-        List<Path> roots = List.of(Path.of("conformance"), Path.of("src/test/resources"), Path.of("/work/shared/peers"),
-                Path.of("/usr/share/doc/fuzzylite/examples"));
-        List<Path> files = new ArrayList<>();
-        for (Path root : roots) {
-            if (Files.isDirectory(root)) {
-                try (Stream<Path> s = Files.walk(root)) {
-                    s.filter(p -> p.toString().endsWith(".fcl") && Files.isRegularFile(p)).forEach(files::add);
-                }
-            }
-        }
+        List<Path> files = TextsAtHand.files(".fcl");
         assertTrue(files.size() > 100, "FCL texts found: " + files.size());
         int passedOver = 0;
         int found = 0;
