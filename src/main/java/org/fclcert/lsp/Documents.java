@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.concurrent.ScheduledFuture;
 import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.DialectReaders;
 
 /**
  * The open documents: for each its current text and version, the {@link Snapshot} of that version once made, and
@@ -20,6 +21,8 @@ final class Documents {
         String text;
         int version;
         Snapshot snapshot;
+        /** auto's choice, while it is known to hold for {@link #text} (edits that cannot change it keep it). */
+        Optional<DialectReaders.Detection> detection = Optional.empty();
         ScheduledFuture<?> pending;
         String shownNote;
 
@@ -44,18 +47,23 @@ final class Documents {
             return false;
         }
         String text = d.text;
+        Optional<DialectReaders.Detection> detection = d.detection;
         for (TextDocumentContentChangeEvent c : changes) {
             String inserted = c.getText() == null ? "" : c.getText();
             if (c.getRange() == null) {
                 text = inserted;
+                detection = Optional.empty();
             } else {
                 SourceText src = new SourceText(text);
                 int from = src.offset(c.getRange().getStart());
                 int to = Math.max(from, src.offset(c.getRange().getEnd()));
+                String before = text;
+                detection = detection.filter(k -> DialectReaders.kept(k, before, from, to, inserted));
                 text = text.substring(0, from) + inserted + text.substring(to);
             }
         }
         d.text = text;
+        d.detection = detection;
         d.version = version;
         d.snapshot = null;
         return true;
@@ -71,6 +79,7 @@ final class Documents {
         String text;
         int version;
         Optional<Dialect> in;
+        Optional<DialectReaders.Detection> known;
         synchronized (this) {
             d = open.get(uri);
             if (d == null) {
@@ -82,12 +91,14 @@ final class Documents {
             text = d.text;
             version = d.version;
             in = dialect;
+            known = d.detection;
         }
         // read outside the lock: edits keep arriving while a large text is checked
-        Snapshot s = Snapshot.read(uri, version, text, in);
+        Snapshot s = Snapshot.read(uri, version, text, in, known);
         synchronized (this) {
             if (open.get(uri) == d && d.version == version && d.text == text && dialect.equals(in)) {
                 d.snapshot = s;
+                d.detection = s.detection();
             }
         }
         return Optional.of(s);
@@ -122,7 +133,10 @@ final class Documents {
 
     synchronized void dialect(Optional<Dialect> dialect) {
         this.dialect = dialect;
-        open.values().forEach(d -> d.snapshot = null);
+        open.values().forEach(d -> {
+            d.snapshot = null;
+            d.detection = Optional.empty();
+        });
     }
 
     synchronized Optional<Dialect> dialect() {

@@ -25,10 +25,11 @@ final class Snapshot {
     private final String dialectNote;
     private final Analysis analysis;
     private final Optional<Program> program;
+    private final Optional<DialectReaders.Detection> detection;
     private volatile Outline outline;
 
     private Snapshot(String uri, int version, String text, String sourceName, Dialect dialect, String dialectNote,
-            Analysis analysis, Optional<Program> program) {
+            Analysis analysis, Optional<Program> program, Optional<DialectReaders.Detection> detection) {
         this.uri = uri;
         this.version = version;
         this.source = new SourceText(text);
@@ -37,20 +38,27 @@ final class Snapshot {
         this.dialectNote = dialectNote;
         this.analysis = analysis;
         this.program = program;
+        this.detection = detection;
     }
 
-    /** Reads and checks a text: in {@code dialect}, or, when empty, in the dialect {@code --dialect auto} picks. */
-    static Snapshot read(String uri, int version, String text, Optional<Dialect> dialect) {
+    /**
+     * Reads and checks a text: in {@code dialect}, or, when empty, in the dialect {@code --dialect auto} picks; that
+     * choice is {@code known} when it is known to hold for this text ({@link DialectReaders#kept}), else detected.
+     */
+    static Snapshot read(String uri, int version, String text, Optional<Dialect> dialect,
+            Optional<DialectReaders.Detection> known) {
         String name = sourceName(uri);
         FclReader reader;
         Dialect read;
         String note;
+        DialectReaders.Detection detection = null;
         if (dialect.isPresent()) {
             read = dialect.get();
             reader = DialectReaders.reader(read);
             note = "read as " + read.displayName() + " (setting fclcert.dialect)";
         } else {
-            DialectReaders.Choice choice = DialectReaders.auto(text);
+            detection = known.orElseGet(() -> DialectReaders.detect(text));
+            DialectReaders.Choice choice = detection.choice();
             read = choice.dialect();
             reader = choice.reader();
             note = choice.explanation() + " (dialect auto)";
@@ -58,7 +66,12 @@ final class Snapshot {
         ReadResult result = reader.read(name, text);
         Analysis analysis = Analysis.of(result);
         return new Snapshot(uri, version, text, name, read, note, analysis,
-                result.program().or(result::repaired));
+                result.program().or(result::repaired), Optional.ofNullable(detection));
+    }
+
+    /** How {@code auto} chose the dialect of this text; empty when the dialect was set. */
+    Optional<DialectReaders.Detection> detection() {
+        return detection;
     }
 
     /** The name check would print for the document: its file path, or the URI when it is no file. */

@@ -6,6 +6,7 @@ import java.util.Optional;
 import java.util.function.BiFunction;
 import java.util.function.Supplier;
 import org.antlr.v4.runtime.Token;
+import org.antlr.v4.runtime.TokenSource;
 import org.antlr.v4.runtime.misc.Interval;
 import org.fclcert.model.AccumulationMethod;
 import org.fclcert.model.ActivationMethod;
@@ -60,7 +61,7 @@ final class DirectParser {
         }
     }
 
-    private final FclTokenSource lexer;
+    private final TokenSource lexer;
     private final String sourceName;
     private final ReaderOptions options;
     private final ReaderDiagnostics diagnostics;
@@ -71,8 +72,8 @@ final class DirectParser {
     private int depth;
     private boolean inOptions;
 
-    private DirectParser(String body, String sourceName, ReaderOptions options, ReaderDiagnostics diagnostics) {
-        this.lexer = new FclTokenSource(body, sourceName);
+    private DirectParser(TokenSource lexer, String sourceName, ReaderOptions options, ReaderDiagnostics diagnostics) {
+        this.lexer = lexer;
         this.sourceName = sourceName;
         this.options = options;
         this.diagnostics = diagnostics;
@@ -85,8 +86,17 @@ final class DirectParser {
      */
     static Optional<Program> program(String sourceName, String body, ReaderOptions options,
             ReaderDiagnostics diagnostics) {
+        return program(sourceName, new FclTokenSource(body, sourceName), options, diagnostics);
+    }
+
+    /**
+     * The same from tokens already made, as Fcl.g4's lexer makes them (comments included, white space not), ending
+     * with EOF: the one-token repair's repaired tokens ({@link SyntaxRepair}), read without a parse tree.
+     */
+    static Optional<Program> program(String sourceName, TokenSource tokens, ReaderOptions options,
+            ReaderDiagnostics diagnostics) {
         try {
-            return Optional.of(new DirectParser(body, sourceName, options, diagnostics).program());
+            return Optional.of(new DirectParser(tokens, sourceName, options, diagnostics).program());
         } catch (RuntimeException declinedOrUnforeseen) {
             // Decline, or something this shortcut did not foresee: either way the full pipeline decides
             return Optional.empty();

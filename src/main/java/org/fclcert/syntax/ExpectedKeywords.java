@@ -11,6 +11,7 @@ import org.antlr.v4.runtime.Recognizer;
 import org.antlr.v4.runtime.Token;
 import org.antlr.v4.runtime.atn.PredictionMode;
 import org.antlr.v4.runtime.misc.IntervalSet;
+import org.antlr.v4.runtime.misc.ParseCancellationException;
 
 /**
  * The keywords the grammar allows next after a text, for an editor's completion: Fcl.g4 is asked, not a list
@@ -38,10 +39,17 @@ public final class ExpectedKeywords {
                 if (atEnd[0] == null && offending instanceof Token t && t.getType() == Token.EOF) {
                     atEnd[0] = e != null && e.getExpectedTokens() != null ? e.getExpectedTokens()
                             : ((Parser) recognizer).getExpectedTokens();
+                    // that is the answer: stop here rather than let the recovery unwind every open rule, which
+                    // walks the whole rule stack at each level (quadratic in the nesting: 5 000 '(' took seconds)
+                    throw new ParseCancellationException("the expected tokens at the end are known");
                 }
             }
         });
-        parser.program();
+        try {
+            parser.program();
+        } catch (ParseCancellationException stop) {
+            // thrown above, once the answer is known
+        }
         if (atEnd[0] == null) {
             // the text is a whole program: what may follow is another function block
             return List.of(Keywords.spelling(FclLexer.FUNCTION_BLOCK));

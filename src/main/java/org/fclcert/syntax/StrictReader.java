@@ -34,7 +34,10 @@ public final class StrictReader implements FclReader {
     private static final int SMALL_TEXT = 1 << 16;
 
     private final ReaderOptions options;
-    /** Whether a text is first tried by the {@link DirectParser} (off only to compare the two paths in tests). */
+    /**
+     * Whether a text, and after a syntax error its repaired tokens, are first tried by the {@link DirectParser}
+     * (off only to compare the two paths in tests).
+     */
     private final boolean directPath;
 
     /** The reader of the standard exactly. */
@@ -119,13 +122,13 @@ public final class StrictReader implements FclReader {
             return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
         if (scan.maxDepth() <= SHALLOW_NESTING) {
-            return parseAndBuild(sourceName, scan, diagnostics, options);
+            return parseAndBuild(sourceName, scan, diagnostics, options, directPath);
         }
-        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options));
+        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options, directPath));
     }
 
     private static Outcome parseAndBuild(String sourceName, TokenPreScan.Result scan,
-            ReaderDiagnostics diagnostics, ReaderOptions options) {
+            ReaderDiagnostics diagnostics, ReaderOptions options, boolean directPath) {
         ReservedNames reservedNames = new ReservedNames();
         ModelBuilder builder = new ModelBuilder(sourceName, diagnostics, options);
         Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder);
@@ -137,7 +140,7 @@ public final class StrictReader implements FclReader {
             // the builder needs a tree without gaps: the semantic checks get the repaired text's, if any
             // its warnings (W1nn) stay reported alongside the errors: they hold of the text the reader recovered
             return new Outcome(Optional.empty(), SyntaxRepair.program(sourceName, parsed.tokens(), options,
-                    diagnostics));
+                    diagnostics, directPath));
         }
         // lexical mistakes were repaired in the tokens, so the tree is whole: build to find the rest
         Program program = builder.program(parsed.tree());

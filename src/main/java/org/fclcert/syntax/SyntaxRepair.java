@@ -32,12 +32,23 @@ final class SyntaxRepair {
 
     /** The program the repaired tokens give, or empty when the errors cannot be repaired token by token. */
     static Optional<Program> program(String sourceName, List<Token> tokens, ReaderOptions options,
-            ReaderDiagnostics warningsTo) {
+            ReaderDiagnostics warningsTo, boolean directPath) {
         // the tokens themselves, not copies: after the parse that reported the errors nothing else reads them,
         // and a large program's tokens are most of what the error path holds
         List<Token> current = new ArrayList<>(tokens);
         int lowestNext = 0;
         for (int attempt = 0; attempt <= MAX_REPAIRS; attempt++) {
+            if (attempt > 0 && directPath && options.tokenFilter() == ReaderOptions.TokenFilter.NONE) {
+                // once repaired, the tokens usually read without error: the direct parser takes them in a fraction
+                // of a parse with a tree; where it declines, the attempt below decides as before
+                ReaderDiagnostics scratch = new ReaderDiagnostics(sourceName);
+                Optional<Program> direct = DirectParser.program(sourceName, new ListTokenSource(current), options,
+                        scratch);
+                if (direct.isPresent() && !scratch.hasErrors()) {
+                    scratch.warnings().forEach(warningsTo::keepWarning);
+                    return direct;
+                }
+            }
             CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(current));
             FclParser parser = new FclParser(stream);
             parser.removeErrorListeners();

@@ -602,6 +602,62 @@ class LspClientTest {
         assertTrue(unknown.getMessage().contains("unknown dialect 'klingon'"), unknown.getMessage());
     }
 
+    /**
+     * Under auto the server keeps a document's dialect choice across edits that cannot change it (digits typed over
+     * in a number outside a TERM, {@code DialectReaders.kept}) and detects it again after any other: either way
+     * every edit's diagnostics are check's for the edited file, in each dialect auto can choose, on texts with
+     * errors (a syntax error and undefined names: the reader's repair path).
+     */
+    @Test
+    void afterDigitEditsTheDiagnosticsAreChecksInEveryDialectAutoChooses() throws Exception {
+        initialize(null);
+        String strict = MISTAKES.replace("    METHOD : CoG;\n", "    METHOD : CoG;\n    DEFAULT := 0;\n")
+                .replace("THEN tip IS generous;", "THEN tip IS generous WITH 0.5;");
+        Map<String, String> texts = new java.util.LinkedHashMap<>();
+        texts.put("standard FCL", strict);
+        texts.put("Free Fuzzy Logic Library (FFLL)", strict.replace("ACCU : MAX;", "ACCUM : MAX;"));
+        texts.put("jFuzzyLogic", strict.replace("DEFAULT := 0;", "/* jFuzzyLogic's comment */"));
+        texts.put("fuzzylite", strict.replace("    ACCU : MAX;\n", "").replace("DEFAULT := 0;", "DEFAULT := 0;\n    ACCU : MAX;"));
+        texts.put("fuzzylite's FLL", "Engine: e\nInputVariable: x\n  range: 0 10\n  term: low Triangle 0 5 10 20\n"
+                + "OutputVariable: y\n  range: 0 1\n  aggregation: Maximum\n  term: on Ramp 0 1\nRuleBlock: r\n  rule: if x is lw then y is on\n");
+        texts.put("MATLAB FIS", "[System]\nName='s'\nNumInputs=1\nNumOutputs=1\nNumRules=1\n[Input1]\nName='x'\nRange=[0 10]\n"
+                + "MF1='low':'trimf',[0 5 10 15]\n[Output1]\nName='y'\nRange=[0 1]\nMF1='on':'trimf',[0 1 2]\n"
+                + "[Rules]\n1, 2 (1) : 1\n");
+        int n = 0;
+        for (var e : texts.entrySet()) {
+            String name = "digits" + n++ + (e.getKey().endsWith("FLL") ? ".fll" : e.getKey().endsWith("FIS") ? ".fis" : ".fcl");
+            String text = e.getValue();
+            String uri = open(name, text);
+            assertEquals(check(dir.resolve(name), "auto"), shown(diagnosticsOf(uri)), e.getKey());
+            MessageParams note = e.getKey().equals("standard FCL") ? client.logged.poll(30, TimeUnit.SECONDS)
+                    : client.shown.poll(30, TimeUnit.SECONDS);
+            assertTrue(note.getMessage().contains("read as " + e.getKey()), e.getKey() + ": " + note.getMessage());
+            assertFalse(check(dir.resolve(name), "auto").isEmpty(), e.getKey() + " has errors");
+            // every fifth digit typed over: rule numbers and weights (kept) and points (detected again)
+            List<Integer> digits = new ArrayList<>();
+            for (int i = 0; i < text.length(); i++) {
+                if (Character.isDigit(text.charAt(i))) {
+                    digits.add(i);
+                }
+            }
+            for (int k = 0; k < digits.size(); k += 5) {
+                int at = digits.get(k);
+                String typed = String.valueOf((char) ('0' + (text.charAt(at) - '0' + 3) % 10));
+                int line = (int) text.substring(0, at).chars().filter(c -> c == '\n').count();
+                int column = at - text.lastIndexOf('\n', at - 1) - 1;
+                text = text.substring(0, at) + typed + text.substring(at + 1);
+                Files.writeString(dir.resolve(name), text);
+                change(uri, new Range(new Position(line, column), new Position(line, column + 1)), typed);
+                PublishDiagnosticsParams p = diagnosticsOf(uri);
+                while (p.getVersion() != version) {
+                    p = diagnosticsOf(uri);
+                }
+                assertEquals(check(dir.resolve(name), "auto"), shown(p), e.getKey() + " after '" + typed + "' at "
+                        + (line + 1) + ":" + (column + 1) + "\n" + text);
+            }
+        }
+    }
+
     @Test
     void badInputNeverStopsTheServer() throws Exception {
         // requests before initialize and on documents never opened: empty answers

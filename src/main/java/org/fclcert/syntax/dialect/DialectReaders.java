@@ -15,6 +15,8 @@ import org.fclcert.syntax.ReadResult;
 public final class DialectReaders {
     /** A dialect wins only with at least this many times the weight of the runner-up; closer is a close call. */
     static final double CLEAR_LEAD = 2.0;
+    private static final java.util.regex.Pattern TERM = java.util.regex.Pattern.compile(
+            "(?i)(^|[^A-Za-z0-9_])TERM($|[^A-Za-z0-9_])");
 
     private DialectReaders() {
     }
@@ -117,11 +119,134 @@ public final class DialectReaders {
 
     /** Every dialect's evidence in the text, in the order of {@link Dialect}. */
     public static List<Evidence> evidence(String text) {
+        return evidence(text, new boolean[1]);
+    }
+
+    /** The same, noting in {@code ffllRead[0]} whether FFLL's first look sent the text through its full read. */
+    private static List<Evidence> evidence(String text, boolean[] ffllRead) {
+        String t = text == null ? "" : text;
         List<Evidence> out = new ArrayList<>();
         for (DialectReader r : dialectReaders()) {
-            out.add(new Evidence(r.dialect(), r.giveaways(text == null ? "" : text)));
+            if (r instanceof FfllReader) {
+                // FfllReader.giveaways, with its first look's answer kept for {@link #kept}
+                ffllRead[0] = FfllSignals.possible(t);
+                out.add(new Evidence(r.dialect(), ffllRead[0] ? FfllReader.readGiveaways(t) : List.of()));
+            } else {
+                out.add(new Evidence(r.dialect(), r.giveaways(t)));
+            }
         }
         return out;
+    }
+
+    /**
+     * {@link #auto}'s choice for a text, with what {@link #kept} needs to know of how it was made: whether FFLL's
+     * first look sent the text through FFLL's full read (whose outcome, unlike every other giveaway scan, may
+     * depend on a number's value).
+     */
+    public record Detection(Choice choice, boolean ffllRead) {
+    }
+
+    /** {@link #auto}, as a {@link Detection}. */
+    public static Detection detect(String text) {
+        boolean[] ffllRead = new boolean[1];
+        List<Evidence> all;
+        try {
+            all = evidence(text, ffllRead);
+        } catch (RuntimeException | StackOverflowError e) {
+            return new Detection(detectionFailed(e), true);
+        }
+        return new Detection(choose(all), ffllRead[0]);
+    }
+
+    /**
+     * Whether a detection made of {@code text} surely holds for the text after one edit (the characters
+     * {@code from} to {@code to} replaced by {@code inserted}), without detecting again: what an editor sends
+     * while a number is typed over. True only when ASCII digits are replaced by ASCII digits inside a number (a
+     * run of digits and dots with no letter, digit, '_' or '#' around it), outside any TERM statement, and FFLL's
+     * full read was not needed. Then no giveaway scan can see a difference: they look at words, signs, comments
+     * and lines, which such an edit leaves as they were (the digits of a number are one word to FFLL's first
+     * look, one number token to the dialect lexer, whatever they are), except two that read values, neither
+     * reached: jFuzzyLogic's test of a DEFUZZIFY term's degrees ({@link JFuzzyLogicHabits}, inside TERM) and
+     * FFLL's full read (which may succeed or fail on a value). FIS's and FLL's line patterns take any digits.
+     */
+    public static boolean kept(Detection before, String text, int from, int to, String inserted) {
+        if (before.ffllRead() || before.choice().unsure() && before.choice().problem().get().diagnosticCode()
+                != DialectCode.DIALECT_UNCLEAR || from < 0 || to > text.length() || from >= to
+                || inserted.isEmpty() || !digits(inserted) || !digits(text.substring(from, to))) {
+            return false;
+        }
+        int start = from;
+        while (start > 0 && numberChar(text.charAt(start - 1))) {
+            start--;
+        }
+        int end = to;
+        while (end < text.length() && numberChar(text.charAt(end))) {
+            end++;
+        }
+        if (start > 0 && wordChar(text.charAt(start - 1)) || end < text.length() && wordChar(text.charAt(end))) {
+            return false;    // part of a name, a based number or an exponent: a token of another kind
+        }
+        return outsideTerm(text, start);
+    }
+
+    /**
+     * True when the statement holding {@code at} is surely no TERM: back to the ';' before it there is no word
+     * TERM, and that ';' is no comment's (no comment mark before it on its line, and no comment closes between it
+     * and {@code at} that did not open there too; a comment still open at {@code at} holds the edit, which is then
+     * no token's).
+     */
+    private static boolean outsideTerm(String text, int at) {
+        int i = at - 1;
+        while (i >= 0 && text.charAt(i) != ';') {
+            i--;
+        }
+        if (i < 0) {
+            return false;
+        }
+        String statement = text.substring(i + 1, at);
+        String beforeSemicolon = text.substring(text.lastIndexOf('\n', i) + 1, i);
+        return !beforeSemicolon.contains("(*") && !beforeSemicolon.contains("/*") && !beforeSemicolon.contains("//")
+                && !beforeSemicolon.contains("#") && commentsOpenBeforeTheyClose(statement)
+                && !TERM.matcher(statement).find();
+    }
+
+    /** False when a {@code *)} or {@code *\/} in {@code s} closes a comment that did not open in {@code s}. */
+    private static boolean commentsOpenBeforeTheyClose(String s) {
+        int k = 0;
+        while (k < s.length()) {
+            if (s.startsWith("*)", k) || s.startsWith("*/", k)) {
+                return false;
+            }
+            String close = s.startsWith("(*", k) ? "*)" : s.startsWith("/*", k) ? "*/"
+                    : s.startsWith("//", k) || s.charAt(k) == '#' ? "\n" : null;
+            if (close == null) {
+                k++;
+                continue;
+            }
+            int end = s.indexOf(close, k + (close.equals("\n") ? 1 : 2));
+            if (end < 0) {
+                return true;     // still open at the edit
+            }
+            k = end + close.length();
+        }
+        return true;
+    }
+
+    private static boolean digits(String s) {
+        for (int k = 0; k < s.length(); k++) {
+            if (s.charAt(k) < '0' || s.charAt(k) > '9') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean numberChar(char c) {
+        return c >= '0' && c <= '9' || c == '.';
+    }
+
+    private static boolean wordChar(char c) {
+        return Character.isLetterOrDigit(c) || c == '_' || c == '#';
     }
 
     /**
@@ -135,15 +260,18 @@ public final class DialectReaders {
      * Never throws.
      */
     public static Choice auto(String text) {
-        List<Evidence> all;
-        try {
-            all = evidence(text);
-        } catch (RuntimeException | StackOverflowError e) {
-            Throwable cause = e.getCause() == null ? e : e.getCause();
-            return new Choice(Dialect.STRICT, List.of(), List.of(),
-                    Optional.of(DialectParser.internalError("<input>", "dialect detection ("
-                            + e.getMessage() + ")", cause)));
-        }
+        return detect(text).choice();
+    }
+
+    private static Choice detectionFailed(Throwable e) {
+        Throwable cause = e.getCause() == null ? e : e.getCause();
+        return new Choice(Dialect.STRICT, List.of(), List.of(),
+                Optional.of(DialectParser.internalError("<input>", "dialect detection ("
+                        + e.getMessage() + ")", cause)));
+    }
+
+    /** The choice the evidence makes (see {@link #auto}). */
+    private static Choice choose(List<Evidence> all) {
         List<Evidence> ranked = new ArrayList<>(all.stream().filter(e -> e.weight() > 0).toList());
         ranked.sort((a, b) -> Integer.compare(b.weight(), a.weight()));     // stable: ties keep the order of Dialect
         if (ranked.isEmpty()) {

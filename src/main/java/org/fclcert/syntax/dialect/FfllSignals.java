@@ -35,6 +35,7 @@ final class FfllSignals {
             return true;
         }
         List<String> w = words(code);
+        Rules rules = new Rules();
         Set<String> outputs = new HashSet<>();
         boolean inDefuzzify = false;
         for (int i = 0; i < w.size(); i++) {
@@ -63,7 +64,7 @@ final class FfllSignals {
                     }
                 }
                 case "RULE" -> {
-                    int end = rule(w, i + 1);
+                    int end = rule(w, i + 1, rules);
                     if (end < 0) {
                         return true;
                     }
@@ -73,7 +74,22 @@ final class FfllSignals {
                 }
             }
         }
-        return false;
+        // a name without IS counts only in a model, and a rule running into the next is a syntax error: no model
+        return rules.nameWithoutIs && !rules.runsOn;
+    }
+
+    /** What the look at the rules found. */
+    private static final class Rules {
+        /** A name in a rule stands without IS beside it (a term-only subcondition or subconclusion, or a degree). */
+        boolean nameWithoutIs;
+        /**
+         * A rule runs into the next RULE or END_RULEBLOCK without its ';'. Fcl.g4's fuzzyRule ends with ';' and takes
+         * RULE nowhere after IF (a keyword is no name), so FFLL's read of the text has a syntax error and gives no
+         * program; the term-only constructs are found in the program only ({@link FfllReader#readGiveaways}: what
+         * the token filter finds alone is ACCUM, RETAIN, ': =', END_FUZZIFY, a declaration without ':', a RANGE
+         * comment, MoM and an unnamed block, each looked for on its own here).
+         */
+        boolean runsOn;
     }
 
     /**
@@ -110,10 +126,12 @@ final class FfllSignals {
     }
 
     /**
-     * Reads a rule from after RULE: the index of its ';', or -1 when a name in it stands without IS beside it
-     * (a term-only subcondition or subconclusion, or a variable as a degree: the full scan decides those).
+     * Reads a rule from after RULE: the index of its ';', or of the word before the RULE or END_RULEBLOCK it runs
+     * into; -1 when it has no IF before a ';' or runs to the end of the text. A name in it standing without IS
+     * beside it (a term-only subcondition or subconclusion, or a variable as a degree: the full scan decides those)
+     * and a rule running on are noted in {@code found}.
      */
-    private static int rule(List<String> w, int from) {
+    private static int rule(List<String> w, int from, Rules found) {
         int i = from;
         while (i < w.size() && !w.get(i).equals("IF")) {
             if (w.get(i).equals(";")) {
@@ -126,13 +144,17 @@ final class FfllSignals {
             if (x.equals(";")) {
                 return i;
             }
+            if (x.equals("RULE") || x.equals("END_RULEBLOCK")) {
+                found.runsOn = true;
+                return i - 1;
+            }
             if (!Character.isLetter(x.charAt(0)) && x.charAt(0) != '_' || RULE_WORDS.contains(x)) {
                 continue;
             }
             boolean before = w.get(i - 1).equals("IS") || w.get(i - 1).equals("NOT") && w.get(i - 2).equals("IS");
             boolean after = i + 1 < w.size() && w.get(i + 1).equals("IS");
             if (!before && !after) {
-                return -1;
+                found.nameWithoutIs = true;
             }
         }
         return -1;
