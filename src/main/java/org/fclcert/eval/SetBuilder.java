@@ -201,10 +201,9 @@ final class SetBuilder {
                 } else {
                     l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                double av = act.activate(j, v);
-                cv[base + i] = av;
-                cl[base + i] = i == 0 || l == v ? av : act.activate(j, l);
-                cr[base + i] = i == nb - 1 || r == v ? av : act.activate(j, r);
+                cv[base + i] = act.activate(j, v);
+                cl[base + i] = act.activate(j, l);
+                cr[base + i] = act.activate(j, r);
             }
         }
     }
