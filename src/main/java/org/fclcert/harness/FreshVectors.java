@@ -199,7 +199,7 @@ public final class FreshVectors {
 
     /**
      * A point of 1/1000 of the span, written with at most 6 significant digits (a short decimal). A span wider
-     * than the largest double (term points near both ends of LREAL, B-IN-TERM-005) is stepped on its halved ends:
+     * than the largest double (term points near both ends of LREAL) is stepped on its halved ends:
      * its width would overflow to infinity and the point with it.
      */
     static double pick(double[] span, SplittableRandom random) {
