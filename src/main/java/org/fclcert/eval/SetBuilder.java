@@ -29,7 +29,11 @@ final class SetBuilder {
     private double[] aV = new double[16];
     private double[] aR = new double[16];
 
-    /** Vertices of the accumulated set, valid after {@link #build}. */
+    /**
+     * Vertices of the accumulated set, valid after {@link #build}. The two degrees after the last vertex (as far
+     * as the arrays reach) are then 0: the arrays are reused, and a read one or two places past the set must see
+     * no degree, never a vertex of an earlier evaluation (conformance/EQUIVALENT-MUTANTS.md, "stale scratch").
+     */
     double[] px = new double[32];
     double[] py = new double[32];
     int np;
@@ -37,6 +41,12 @@ final class SetBuilder {
     /** Builds the vertices over [lo, hi]; leaves none when nothing was added or the interval is empty. */
     void build(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
         np = 0;
+        buildVertices(accu, lo, hi, cx, cy, shapes);
+        Arrays.fill(py, np, Math.min(py.length, np + 2), 0.0);
+    }
+
+    private void buildVertices(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy,
+            Shape[] shapes) {
         if (act.n == 0 || !(lo < hi)) {
             return;
         }
@@ -191,10 +201,9 @@ final class SetBuilder {
                 } else {
                     l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                double av = act.activate(j, v);
-                cv[base + i] = av;
-                cl[base + i] = i == 0 || l == v ? av : act.activate(j, l);
-                cr[base + i] = i == nb - 1 || r == v ? av : act.activate(j, r);
+                cv[base + i] = act.activate(j, v);
+                cl[base + i] = act.activate(j, l);
+                cr[base + i] = act.activate(j, r);
             }
         }
     }

@@ -197,9 +197,16 @@ public final class FreshVectors {
         return out;
     }
 
-    /** A point of 1/1000 of the span, written with at most 6 significant digits (a short decimal). */
-    private static double pick(double[] span, SplittableRandom random) {
-        double x = span[0] + (span[1] - span[0]) * random.nextInt(1001) / 1000.0;
+    /**
+     * A point of 1/1000 of the span, written with at most 6 significant digits (a short decimal). A span wider
+     * than the largest double (term points near both ends of LREAL) is stepped on its halved ends:
+     * its width would overflow to infinity and the point with it.
+     */
+    static double pick(double[] span, SplittableRandom random) {
+        int k = random.nextInt(1001);
+        double width = span[1] - span[0];
+        double x = Double.isFinite(width) ? span[0] + width * k / 1000.0
+                : 2 * (span[0] / 2 + (span[1] / 2 - span[0] / 2) * (k / 1000.0));
         return new BigDecimal(x).round(new MathContext(6)).doubleValue();
     }
 }
