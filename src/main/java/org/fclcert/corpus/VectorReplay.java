@@ -44,12 +44,22 @@ final class VectorReplay {
     }
 
     /** One instance of the judging path, as far as a replay needs it. */
-    private interface Instance {
+    private record Instance(Setter setter, Step step, java.util.function.Supplier<Map<String, Double>> outputs) {
+        void set(String name, double value) throws EvaluationException {
+            setter.set(name, value);
+        }
+
+        void evaluate() throws EvaluationException {
+            step.run();
+        }
+    }
+
+    private interface Setter {
         void set(String name, double value) throws EvaluationException;
+    }
 
-        void evaluate() throws EvaluationException;
-
-        Map<String, Double> outputs();
+    private interface Step {
+        void run() throws EvaluationException;
     }
 
     /**
@@ -61,34 +71,10 @@ final class VectorReplay {
         String block = c.block().orElse(null);
         if (c.inDialect() && !exactPathEvaluates(loaded, c)) {
             FunctionBlockInstance fb = block == null ? loaded.newInstance() : loaded.newInstance(block);
-            return new Instance() {
-                public void set(String name, double value) throws EvaluationException {
-                    fb.set(name, value);
-                }
-
-                public void evaluate() throws EvaluationException {
-                    fb.evaluate();
-                }
-
-                public Map<String, Double> outputs() {
-                    return fb.outputs();
-                }
-            };
+            return new Instance(fb::set, fb::evaluate, fb::outputs);
         }
         ExactInstance fb = loaded.newExactInstance(block, NumberReading.DECIMAL);
-        return new Instance() {
-            public void set(String name, double value) throws EvaluationException {
-                fb.set(name, value);
-            }
-
-            public void evaluate() throws EvaluationException {
-                fb.evaluate();
-            }
-
-            public Map<String, Double> outputs() {
-                return fb.outputs();
-            }
-        };
+        return new Instance(fb::set, fb::evaluate, fb::outputs);
     }
 
     /** Whether the exact path evaluates the case's block (it refuses the dialect constructs it has no exact form of). */
@@ -144,7 +130,7 @@ final class VectorReplay {
         } catch (EvaluationException e) {
             throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
         }
-        return c.tolerance().compareAll(v.out(), fb.outputs(), scales);
+        return c.tolerance().compareAll(v.out(), fb.outputs().get(), scales);
     }
 
     private static String describe(Comparison cmp) {
