@@ -16,6 +16,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * Reads one case file: splits off the metadata comment, parses its YAML, validates every field and reports
@@ -26,7 +27,7 @@ final class CaseFileReader {
     static final String CLOSE = "---*)";
 
     private static final Set<String> KEYS = Set.of("id", "title", "level", "features", "tests", "tolerance",
-            "flags", "derivation", "block", "vectors", "expect", "error");
+            "flags", "derivation", "block", "vectors", "expect", "error", "dialect");
     private static final Pattern ID = CorpusCase.ID_FORM;
     private static final Pattern CODE = Pattern.compile("FCL-[SCWV][0-9]{3}");
     private static final Pattern FLAG = CorpusCase.FLAG_FORM;
@@ -126,6 +127,7 @@ final class CaseFileReader {
         List<String> flags = flags(root);
         Optional<String> derivation = optionalText(root, "derivation");
         Optional<String> block = optionalText(root, "block");
+        Dialect dialect = dialect(root);
         boolean reject = expectReject(root);
         Tolerance tolerance = tolerance(root, reject);
         List<Vector> vectors = reject ? List.of() : vectors(root);
@@ -137,7 +139,7 @@ final class CaseFileReader {
             problem(lineOf("vectors"), "a negative case ('expect: reject') has no vectors");
         }
         return Optional.of(new CorpusCase(id == null ? "" : id, title == null ? "" : title, level, features, tests,
-                tolerance, flags, derivation, block, vectors, reject, error, program, file));
+                tolerance, flags, derivation, block, vectors, reject, error, program, file, dialect));
     }
 
     private String requiredText(JsonNode root, String key) {
@@ -163,6 +165,26 @@ final class CaseFileReader {
             return Optional.empty();
         }
         return Optional.of(n.asText().strip());
+    }
+
+    /**
+     * The syntax the program is written in: absent for standard FCL (plus the Open Level methods); else the
+     * command-line name of a library's dialect ({@code fuzzylite}, {@code jfuzzylogic}, ...; {@link Dialect} is the
+     * one list). {@code strict} is refused: it is what leaving the field out says.
+     */
+    private Dialect dialect(JsonNode root) {
+        Optional<String> name = optionalText(root, "dialect");
+        if (name.isEmpty()) {
+            return Dialect.STRICT;
+        }
+        Optional<Dialect> d = Dialect.byCliName(name.get()).filter(x -> x.cliName().equals(name.get()));
+        List<String> allowed = Dialect.cliNames().stream().filter(n -> !n.equals(Dialect.STRICT.cliName())).toList();
+        if (d.isEmpty() || d.get() == Dialect.STRICT) {
+            problem(lineOf("dialect"), "dialect '" + name.get() + "' is not a library's dialect (allowed: "
+                    + String.join(", ", allowed) + "; leave the field out for standard FCL)");
+            return Dialect.STRICT;
+        }
+        return d.get();
     }
 
     private ConformanceLevel level(JsonNode root) {

@@ -6,6 +6,9 @@ import java.util.Objects;
 import java.util.Optional;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
+import org.fclcert.syntax.FclReader;
+import org.fclcert.syntax.StrictReader;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * One conformance case: a self-contained FCL file whose leading {@code (*--- ... ---*)} comment holds
@@ -28,6 +31,10 @@ import org.fclcert.model.Feature;
  *                      so every line of the program keeps the line number it has in the file (implementations
  *                      report lines, and negative cases cite them)
  * @param path          the case file
+ * @param dialect       the syntax the program is written in ({@code dialect:} in the metadata): {@link
+ *                      Dialect#STRICT} (the default) for standard FCL plus the Open Level methods that fit its syntax,
+ *                      else a library's dialect, read with fclcert's reader of it (conformance/README.md, "Open Level
+ *                      methods and dialects")
  */
 public record CorpusCase(
         String id,
@@ -43,7 +50,8 @@ public record CorpusCase(
         boolean expectReject,
         Optional<ExpectedError> expectedError,
         String programText,
-        Path path) {
+        Path path,
+        Dialect dialect) {
 
     /** The flag that marks a case whose steps depend on the state left by earlier steps. */
     public static final String STATEFUL = "stateful";
@@ -68,6 +76,26 @@ public record CorpusCase(
         tests = List.copyOf(tests);
         flags = List.copyOf(flags);
         vectors = List.copyOf(vectors);
+        Objects.requireNonNull(dialect, "dialect");
+    }
+
+    /** The reader of this case's program ({@link #reader(Dialect)}). */
+    public FclReader reader() {
+        return reader(dialect);
+    }
+
+    /**
+     * The one reading of a case's program in a dialect: standard FCL plus the Open Level methods that fit its syntax
+     * ({@link StrictReader#openLevel()}) for {@link Dialect#STRICT}, else fclcert's reader of the dialect. The lint,
+     * the harness and the reference read a case with it.
+     */
+    public static FclReader reader(Dialect dialect) {
+        return dialect == Dialect.STRICT ? StrictReader.openLevel() : dialect.reader();
+    }
+
+    /** Whether the program is written in a library's dialect rather than in standard FCL. */
+    public boolean inDialect() {
+        return dialect != Dialect.STRICT;
     }
 
     /** True when the steps must run in order on one instance (never replayed in reverse). */

@@ -9,7 +9,6 @@ import java.util.stream.Collectors;
 import org.fclcert.check.Analysis;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Diagnostic;
-import org.fclcert.syntax.StrictReader;
 
 /**
  * Which corpus a run used: the fclcert conformance corpus built into this fclcert, or a custom one. A verdict of a
@@ -63,7 +62,8 @@ public final class CorpusIdentity {
     private static boolean sameCase(CorpusCase a, CorpusCase b) {
         return a.programText().equals(b.programText()) && a.vectors().equals(b.vectors())
                 && Objects.equals(a.expectedError(), b.expectedError()) && a.tolerance() == b.tolerance()
-                && a.flags().equals(b.flags()) && a.level() == b.level() && a.block().equals(b.block());
+                && a.flags().equals(b.flags()) && a.level() == b.level() && a.block().equals(b.block())
+                && a.dialect() == b.dialect();
     }
 
     /**
@@ -75,7 +75,7 @@ public final class CorpusIdentity {
     public static List<CorpusProblem> unreproduced(Corpus corpus) {
         List<CorpusProblem> problems = new ArrayList<>();
         for (CorpusCase c : corpus.cases()) {
-            Analysis analysis = Analysis.analyze(StrictReader.openLevel(), c.path().toString(), c.programText());
+            Analysis analysis = Analysis.analyze(c.reader(), c.path().toString(), c.programText());
             if (c.expectReject()) {
                 ExpectedError want = c.expectedError().orElseThrow();
                 boolean found = analysis.diagnostics().stream().filter(Diagnostic::isError)

@@ -6,12 +6,14 @@ import java.util.Map;
 import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.ExactInstance;
+import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.eval.NumberReading;
 import org.fclcert.model.Program;
 
 /**
- * Runs a positive case's vectors on the reference evaluator's exact judging path: in order on one instance (every expected output
+ * Runs a positive case's vectors on the reference evaluator's exact judging path (for a dialect construct it has no
+ * exact form of, the reference itself: {@link #instance()}): in order on one instance (every expected output
  * must be reproduced within the case's tolerance), then, for a case not flagged {@code stateful}, in reverse
  * order on a fresh instance, as the harness does, so that a case whose steps depend on each other is caught
  * here rather than blamed on an implementation.
@@ -41,12 +43,54 @@ final class VectorReplay {
         return List.copyOf(replay.messages);
     }
 
-    private ExactInstance instance() throws EvaluationException {
-        return loaded.newExactInstance(c.block().orElse(null), NumberReading.DECIMAL);
+    /** One instance of the judging path, as far as a replay needs it. */
+    private record Instance(Setter setter, Step step, java.util.function.Supplier<Map<String, Double>> outputs) {
+        void set(String name, double value) throws EvaluationException {
+            setter.set(name, value);
+        }
+
+        void evaluate() throws EvaluationException {
+            step.run();
+        }
+    }
+
+    private interface Setter {
+        void set(String name, double value) throws EvaluationException;
+    }
+
+    private interface Step {
+        void run() throws EvaluationException;
+    }
+
+    /**
+     * The exact path; for a dialect case whose program it refuses (Takagi-Sugeno terms, Tsukamoto's method, hedges
+     * in conclusions: {@link #exactPathEvaluates}), the reference evaluator itself, whose double path with its error
+     * bounds is the only arithmetic fclcert has for them. A standard case is always judged exactly.
+     */
+    private Instance instance() throws EvaluationException {
+        String block = c.block().orElse(null);
+        if (c.inDialect() && !exactPathEvaluates(loaded, c)) {
+            FunctionBlockInstance fb = block == null ? loaded.newInstance() : loaded.newInstance(block);
+            return new Instance(fb::set, fb::evaluate, fb::outputs);
+        }
+        ExactInstance fb = loaded.newExactInstance(block, NumberReading.DECIMAL);
+        return new Instance(fb::set, fb::evaluate, fb::outputs);
+    }
+
+    /** Whether the exact path evaluates the case's block (it refuses the dialect constructs it has no exact form of). */
+    static boolean exactPathEvaluates(LoadedProgram loaded, CorpusCase c) {
+        try {
+            loaded.newExactInstance(c.block().orElse(null), NumberReading.DECIMAL);
+            return true;
+        } catch (IllegalArgumentException e) {
+            return false;
+        } catch (EvaluationException e) {
+            return true;   // no such block: the replay reports it
+        }
     }
 
     private boolean forward() throws EvaluationException {
-        ExactInstance fb = instance();
+        Instance fb = instance();
         boolean ok = true;
         for (int i = 0; i < c.vectors().size(); i++) {
             for (Comparison cmp : step(fb, i)) {
@@ -60,7 +104,7 @@ final class VectorReplay {
     }
 
     private void reversed() throws EvaluationException {
-        ExactInstance fb = instance();
+        Instance fb = instance();
         for (int i = c.vectors().size() - 1; i >= 0; i--) {
             for (Comparison cmp : step(fb, i)) {
                 if (!cmp.passed()) {
@@ -72,7 +116,7 @@ final class VectorReplay {
         }
     }
 
-    private List<Comparison> step(ExactInstance fb, int index) throws EvaluationException {
+    private List<Comparison> step(Instance fb, int index) throws EvaluationException {
         Vector v = c.vectors().get(index);
         for (Map.Entry<String, Double> in : v.in().entrySet()) {
             try {
@@ -86,7 +130,7 @@ final class VectorReplay {
         } catch (EvaluationException e) {
             throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
         }
-        return c.tolerance().compareAll(v.out(), fb.outputs(), scales);
+        return c.tolerance().compareAll(v.out(), fb.outputs().get(), scales);
     }
 
     private static String describe(Comparison cmp) {

@@ -5,13 +5,16 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Predicate;
 import org.fclcert.corpus.ExpectedError;
 import org.fclcert.corpus.OutputComparison;
 import org.fclcert.corpus.Vector;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutHealth;
+import org.fclcert.iut.Iuts;
 import org.fclcert.iut.LoadOutcome;
+import org.fclcert.syntax.dialect.Dialect;
 
 /**
  * Runs one case against an implementation: load, then either judge the rejection (negative case) or run the
@@ -23,8 +26,13 @@ final class CaseRunner {
     record Ran(CaseResult result, boolean gaveUp) {
     }
 
+    /** The beginning of the message of a dialect case the implementation is not sent (it does not read the dialect). */
+    static final String NOT_PRESENTABLE = "not presentable: ";
+
     private final ExportCheck exportCheck;
     private final Presenter presenter;
+    /** Which dialects the implementation is sent cases in as they are ({@link Iuts#reads}); the standard always. */
+    private Predicate<Dialect> reads = d -> d == Dialect.STRICT;
 
     CaseRunner(ExportCheck exportCheck) {
         this(exportCheck, null);
@@ -38,6 +46,12 @@ final class CaseRunner {
 
     Ran run(ImplementationUnderTest iut, RunCase c) {
         return run(iut, c, iut, c);
+    }
+
+    /** The implementation behind {@code spec} is sent the dialect cases it reads ({@link Iuts#reads}). */
+    CaseRunner readingAs(String spec) {
+        reads = d -> Iuts.reads(spec, d);
+        return this;
     }
 
     /**
@@ -75,12 +89,19 @@ final class CaseRunner {
     private Ran runCounted(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain,
             Optional<Disguise.Twin> twin, Disguise disguise) {
         long start = System.nanoTime();
+        if (c.inDialect() && !reads.test(c.dialect())) {
+            // the language axis sends a case as the corpus writes it; this text is not one the implementation reads
+            CaseResult skipped = CaseResult.skipped(c.plan(), NOT_PRESENTABLE + "the case is written in "
+                    + c.dialect().displayName() + "'s dialect (" + c.dialect().summary() + "), which this implementation"
+                    + " is not sent; it counts for and against no row");
+            return presented(iut, c, plainIut, plain, disguise, skipped, false);
+        }
         ResultBuilder r = new ResultBuilder(c);
         boolean gaveUp = false;
         try {
             // the twin goes before or after the case as the disguise drew it, so that the order gives nothing away
             LoadOutcome twinOutcome = twin.isPresent() && twin.get().first() ? iut.load(twin.get().text()) : null;
-            LoadOutcome outcome = iut.load(c.program());
+            LoadOutcome outcome = load(iut, c);
             if (c.expectReject()) {
                 if (twin.isPresent() && !twin.get().first()) {
                     twinOutcome = iut.load(twin.get().text());
@@ -108,7 +129,12 @@ final class CaseRunner {
         if (!c.expectReject()) {
             r.traceReference(plain);
         }
-        CaseResult result = r.build((System.nanoTime() - start) / 1_000_000);
+        return presented(iut, c, plainIut, plain, disguise, r.build((System.nanoTime() - start) / 1_000_000), gaveUp);
+    }
+
+    /** The result with the case presented on the semantic axis, when there is one. */
+    private Ran presented(ImplementationUnderTest iut, RunCase c, ImplementationUnderTest plainIut, RunCase plain,
+            Disguise disguise, CaseResult result, boolean gaveUp) {
         if (presenter != null && !c.expectReject()) {
             if (gaveUp) {
                 result = notPresented(c, result, "the implementation was given up");
@@ -120,6 +146,16 @@ final class CaseRunner {
             }
         }
         return new Ran(result, gaveUp);
+    }
+
+    /**
+     * Sends the case's program: standard FCL as it is ({@link ImplementationUnderTest#load}); a case written in a
+     * dialect as a text in that library's layout ({@link ImplementationUnderTest#loadWritten}: the library gets it as
+     * it is, the reference reads it with fclcert's reader of the dialect). Only an implementation that reads the
+     * dialect is sent it ({@link org.fclcert.iut.Iuts#reads}; the others: {@link Runner}).
+     */
+    static LoadOutcome load(ImplementationUnderTest iut, RunCase c) throws IutException {
+        return c.inDialect() ? iut.loadWritten(c.program(), c.dialect()) : iut.load(c.program());
     }
 
     /** {@code result} of a case that was not run: a positive one is not presented either, for reason {@code why}. */
@@ -248,6 +284,13 @@ final class CaseRunner {
     }
 
     private void checkExport(ImplementationUnderTest iut, RunCase c, ResultBuilder r) {
+        if (c.inDialect()) {
+            // clause 6 e) asks for FCL out; a dialect's constructs (curves, hedges, Takagi-Sugeno terms) have no
+            // standard text to read back and compare, so the export of a dialect case is not judged
+            r.export(ExportStatus.NOT_RUN, "not checked: the case is written in " + c.dialect().displayName()
+                    + "'s dialect, and the export check reads standard FCL back");
+            return;
+        }
         try {
             Optional<String> text = iut.export();
             if (text.isEmpty()) {

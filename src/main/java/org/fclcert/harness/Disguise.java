@@ -124,7 +124,7 @@ public final class Disguise {
     /** The case as sent: its program the disguised text, a negative case's error at the moved line. */
     public RunCase apply(RunCase c) {
         return new RunCase(c.id(), c.title(), c.level(), c.features(), c.tests(), c.flags(), c.block(), c.vectors(),
-                expectedError, c.tolerance(), text, c.source());
+                expectedError, c.tolerance(), text, c.source(), c.dialect());
     }
 
     /** The disguised name of {@code name} (a name the program does not declare stays as it is). */
@@ -158,8 +158,24 @@ public final class Disguise {
         return rename(exported, originals);
     }
 
-    /** Draws the disguise of {@code c} from {@code random}. */
+    /**
+     * Why {@code c} is sent undisguised, or empty when it is disguised. A case written in a library's dialect is exempt:
+     * every step of the disguise (renaming, rule numbers, comments, reordering, line breaks) rewrites standard FCL's
+     * tokens and sections ({@link DisguiseText}) and is checked by reading the result with the standard's reader, and a
+     * dialect's text (rules that end with their line, {@code #} comments, shape names, hedges) is neither, so a
+     * rewritten dialect text could change its meaning unchecked. Such a case still gets its fresh vectors.
+     */
+    public static Optional<String> exemption(RunCase c) {
+        return c.inDialect() ? Optional.of("written in " + c.dialect().displayName() + "'s dialect: the disguise rewrites"
+                + " and checks standard FCL text only, so the program is sent as the corpus writes it") : Optional.empty();
+    }
+
+    /** Draws the disguise of {@code c} from {@code random} (none for a case {@link #exemption exempt} from it). */
     public static Disguise draw(RunCase c, SplittableRandom random) {
+        if (exemption(c).isPresent()) {
+            return new Disguise(Map.of(), Map.of(), c.program(), 0, c.expectedError(), Optional.empty(), false,
+                    Optional.empty());
+        }
         // a negative case's program has an error: the reader's program (when it has one) still names what it declares
         Program original = (c.expectReject() ? partial(c.program()) : read(c.program())).orElse(null);
         Map<String, String> renames = new LinkedHashMap<>();

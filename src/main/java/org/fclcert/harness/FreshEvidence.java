@@ -2,6 +2,7 @@ package org.fclcert.harness;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.fclcert.iut.ImplementationUnderTest;
 
 /**
@@ -29,13 +30,15 @@ public final class FreshEvidence {
             List<String> notes = new ArrayList<>(r.verdict().notes());
             String vectors = fresh() == 0 ? "no fresh vectors" : "steps " + (corpus.vectors().size() + 1) + "–"
                     + plain.vectors().size() + " are fresh vectors drawn for this run";
-            notes.add("run seed " + RunSeed.text(seed) + ": " + vectors + "; the program was sent disguised ("
+            Optional<String> exempt = Disguise.exemption(corpus);
+            notes.add("run seed " + RunSeed.text(seed) + ": " + vectors + (exempt.isPresent()
+                    ? "; the program was sent undisguised (" + exempt.get() + ")" : "; the program was sent disguised ("
                     + disguise.renamed() + " names renamed, " + disguise.lineShift() + " line(s) put in front"
                     + (disguise.reordered() ? ", declarations, blocks, terms and rules reordered" : "")
                     + (corpus.expectReject() ? ", the error's line following its token" : "")
                     + disguise.twin().map(t -> "; its accepted twin (the defect repaired) was sent " + (t.first() ? "before"
                             : "after") + " it").orElse("")
-                    + ")");
+                    + ")"));
             return new CaseResult(r.plan(), new CaseResult.Verdict(r.status(), r.message(), notes,
                     r.verdict().rejection()), r.evidence(), r.export(), r.setup(), r.presented(), r.replies());
         }

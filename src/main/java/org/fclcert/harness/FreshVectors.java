@@ -23,7 +23,6 @@ import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Names;
 import org.fclcert.model.Point;
 import org.fclcert.model.Program;
-import org.fclcert.syntax.StrictReader;
 
 /**
  * Fresh input vectors for a positive case, drawn for this run from the run seed ({@link RunSeed}), so that a
@@ -60,13 +59,13 @@ public final class FreshVectors {
         List<Vector> all = new ArrayList<>(c.vectors());
         all.addAll(fresh);
         return new RunCase(c.id(), c.title(), c.level(), c.features(), c.tests(), c.flags(), c.block(), all,
-                c.expectedError(), c.tolerance(), c.program(), c.source());
+                c.expectedError(), c.tolerance(), c.program(), c.source(), c.dialect());
     }
 
     private static List<Vector> draw(RunCase c, SplittableRandom random) {
         Optional<Program> program;
         try {
-            program = Analysis.analyze(StrictReader.openLevel(), c.id(), c.program()).program();
+            program = Analysis.analyze(c.reader(), c.id(), c.program()).program();
         } catch (RuntimeException | StackOverflowError e) {
             return List.of();
         }

@@ -103,7 +103,9 @@ final class Presenter {
     }
 
     private Prepared prepare(RunCase c, Disguise disguise) {
-        Analysis analysis = AnalysisMemo.analyze(ReaderOptions.OPEN_LEVEL, c.id(), c.program());
+        // a dialect case is read in its dialect, then written in the library's layout like any other
+        Analysis analysis = c.inDialect() ? Analysis.analyze(c.reader(), c.id(), c.program())
+                : AnalysisMemo.analyze(ReaderOptions.OPEN_LEVEL, c.id(), c.program());
         if (analysis.program().isEmpty()) {
             return new Prepared(null, "fclcert cannot read the case's program: " + firstError(analysis.diagnostics()));
         }
@@ -149,9 +151,10 @@ final class Presenter {
                 : Optional.of("read back, it does not give the case's expected values: " + r.build(0).message());
     }
 
-    private static RunCase withProgram(RunCase c, String text) {
+    /** The case with the written text as its program: read in the layout written, not in the case's dialect. */
+    private RunCase withProgram(RunCase c, String text) {
         return new RunCase(c.id(), c.title(), c.level(), c.features(), c.tests(), c.flags(), c.block(), c.vectors(),
-                c.expectedError(), c.tolerance(), text, c.source());
+                c.expectedError(), c.tolerance(), text, c.source(), dialect);
     }
 
     private static String firstError(List<Diagnostic> diagnostics) {

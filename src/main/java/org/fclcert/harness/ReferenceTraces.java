@@ -7,7 +7,6 @@ import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.eval.Trace;
-import org.fclcert.syntax.StrictReader;
 
 /** The reference evaluator run on a case up to the step that went wrong, traced at that step. */
 final class ReferenceTraces {
@@ -24,7 +23,7 @@ final class ReferenceTraces {
             return null;
         }
         try {
-            Analysis analysis = Analysis.analyze(StrictReader.openLevel(), c.id(), c.program());
+            Analysis analysis = Analysis.analyze(c.reader(), c.id(), c.program());
             if (analysis.program().isEmpty()) {
                 return null;
             }

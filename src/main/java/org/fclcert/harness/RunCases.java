@@ -9,7 +9,6 @@ import org.fclcert.corpus.Tolerance;
 import org.fclcert.model.Feature;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Program;
-import org.fclcert.syntax.StrictReader;
 
 /** Turns corpus cases into the runner's cases (the one place that knows the corpus record's shape). */
 public final class RunCases {
@@ -19,7 +18,7 @@ public final class RunCases {
     public static RunCase from(CorpusCase c) {
         return new RunCase(c.id(), c.title(), c.level(), ids(c.features()), ids(c.tests()), c.flags(), c.block(),
                 c.vectors(), c.expectReject() ? c.expectedError() : Optional.empty(), tolerance(c), c.programText(),
-                c.path().toString());
+                c.path().toString(), c.dialect());
     }
 
     public static List<RunCase> from(List<CorpusCase> cases) {
@@ -38,7 +37,7 @@ public final class RunCases {
         if (c.expectReject() || c.tolerance() == Tolerance.EXACT) {
             return new CorpusTolerance(c.tolerance(), OutputScales.none());
         }
-        Analysis analysis = Analysis.analyze(StrictReader.openLevel(), c.path().toString(), c.programText());
+        Analysis analysis = Analysis.analyze(c.reader(), c.path().toString(), c.programText());
         OutputScales scales = analysis.program().flatMap(p -> block(p, c.block())).map(OutputScales::of)
                 .orElse(OutputScales.none());
         return new CorpusTolerance(c.tolerance(), scales);

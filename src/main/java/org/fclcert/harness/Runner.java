@@ -62,6 +62,7 @@ public final class Runner {
     public List<CaseResult> run(ImplementationUnderTest iut, RunHeader header, List<RunCase> cases,
             ResultSink sink, StopSignal stop) throws IOException {
         sink.header(header);
+        caseRunner.readingAs(header == null ? null : header.iut().spec());
         List<CaseResult> results = new ArrayList<>();
         String gaveUpAt = null;
         for (int i = 0; i < cases.size(); i++) {

@@ -152,6 +152,22 @@ public final class Iuts {
     }
 
     /**
+     * Whether an implementation is sent, as it is, a corpus case written in {@code dialect} (a case's {@code dialect:},
+     * conformance/README.md): standard FCL always; a library's dialect only by the adapter whose own layout it is
+     * ({@link Kind#presentedAs}: fuzzylite's FCL to fuzzylite and jfuzzylite, FLL to pyfuzzylite, ...), and every
+     * dialect by the reference, which reads each with fclcert's reader of it. A vendor's implementation ({@code java:},
+     * {@code process:}) speaks the standard only. The others get such a case as not presentable (not determined).
+     */
+    public static boolean reads(String spec, Dialect dialect) {
+        if (dialect == Dialect.STRICT) {
+            return true;
+        }
+        Optional<Kind> kind = kind(spec);
+        return kind.isPresent() && (kind.get().name().equals("reference")
+                || kind.get().presentedAs().equals(Optional.of(dialect)));
+    }
+
+    /**
      * What a built-in adapter cannot observe of its library, in sentences for the reports (empty for other
      * specs). The details are in {@code docs/iut-protocol.md}, in the adapter's section.
      */

@@ -256,9 +256,10 @@ public enum Feature {
 
     /**
      * True for an Open Level construct that only a dialect reader accepts (its syntax is not the standard's):
-     * no program the corpus (read as standard FCL plus the Open Level methods) holds can carry it, so the
-     * corpus coverage rule does not ask for a case. False for every Table 8 and 9 row and for Open Level
-     * features a standard-syntax program can carry (O-MANY-POINTS, O-MOM, ...).
+     * only a corpus case written in a dialect ({@code dialect:} in its metadata) can carry it, so the corpus
+     * coverage rule does not ask for a case, and the reports show its row only where the corpus has one. False for
+     * every Table 8 and 9 row and for Open Level features a standard-syntax program can carry (O-MANY-POINTS,
+     * O-MOM, ...).
      */
     public boolean dialectSyntax() {
         return dialectSyntax;

@@ -226,8 +226,9 @@ public enum ShapeKind {
                     : p[1] - (p[1] - p[0]) * Math.sqrt((1 - w) / 2);
             case Z_SHAPE -> w > 1 ? never : w >= 0.5 ? p[0] + (p[1] - p[0]) * Math.sqrt((1 - w) / 2)
                     : p[1] - (p[1] - p[0]) * Math.sqrt(w / 2);
-            // rising: (e − i) / (2e − i − u) = w below e; falling: (i − e) / (i − 2e + u) = w above e
-            case CONCAVE -> w > 1 ? never : rising ? 2 * p[1] - p[0] - (p[1] - p[0]) / w : (p[0] - p[1]) / w + 2 * p[1] - p[0];
+            // rising: (e − i) / (2e − i − u) = w below e; falling: (i − e) / (i − 2e + u) = w above e; both solve to
+            // the one expression u = 2e − i − (e − i) / w
+            case CONCAVE -> w > 1 ? never : 2 * p[1] - p[0] - (p[1] - p[0]) / w;
             default -> Double.NaN;
         };
     }

@@ -184,10 +184,12 @@ public final class ReportBuilder {
     private static List<Report.FeatureRow> featureRows(RunHeader header, List<CaseResult> counted, boolean semantic) {
         List<Report.FeatureRow> rows = new ArrayList<>();
         for (Feature f : Feature.values()) {
-            if (f.dialectSyntax()) {
-                continue;   // a dialect's own syntax: no corpus case can test it (Feature#dialectSyntax)
-            }
             List<CaseResult> evidence = counted.stream().filter(testing(f)).toList();
+            if (f.dialectSyntax() && evidence.isEmpty() && !header.corpus().rowCases().containsKey(f.id())) {
+                // a dialect's own syntax (Feature#dialectSyntax): a row only where the corpus has a case written in a
+                // dialect for it (conformance/README.md, "Open Level methods and dialects")
+                continue;
+            }
             List<CaseResult> deciding = evidence.stream().filter(c -> Attribution.decides(c.level(), f)).toList();
             int run = (int) deciding.stream().filter(c -> c.status() != CaseStatus.SKIPPED).count();
             int required = rowCases(header, f, deciding.size());

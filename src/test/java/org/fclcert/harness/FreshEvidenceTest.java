@@ -31,7 +31,8 @@ class FreshEvidenceTest {
 
     @BeforeAll
     static void corpus() throws Exception {
-        cases = RunCases.from(Corpus.load(Path.of("conformance")).cases());
+        // a case written in a dialect is sent undisguised (DisguiseOrderTest says so for each)
+        cases = RunCases.from(Corpus.load(Path.of("conformance")).cases()).stream().filter(c -> !c.inDialect()).toList();
     }
 
     private static RunCase byId(String id) {

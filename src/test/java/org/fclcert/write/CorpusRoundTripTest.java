@@ -39,7 +39,7 @@ class CorpusRoundTripTest {
 
     @BeforeAll
     static void roundTripEveryCase() throws CorpusException {
-        cases = Corpus.load(CORPUS).cases().stream().filter(c -> !c.expectReject()).toList();
+        cases = Corpus.load(CORPUS).cases().stream().filter(c -> !c.expectReject() && !c.inDialect()).toList();
         for (Dialect d : DialectWriters.libraries()) {
             Tally t = new Tally(new ArrayList<>(), new TreeMap<>());
             DialectWriter writer = DialectWriters.writer(d);

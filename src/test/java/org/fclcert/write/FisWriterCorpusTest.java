@@ -27,7 +27,7 @@ import org.junit.jupiter.api.Test;
 class FisWriterCorpusTest {
     @Test
     void everyCaseIsWrittenReadBackAndTheExactOnesEvaluateEqual() throws Exception {
-        List<CorpusCase> cases = Corpus.load(Path.of("conformance")).cases().stream().filter(c -> !c.expectReject())
+        List<CorpusCase> cases = Corpus.load(Path.of("conformance")).cases().stream().filter(c -> !c.expectReject() && !c.inDialect())
                 .toList();
         DialectWriter writer = DialectWriters.writer(Dialect.FIS);
         List<String> failures = new ArrayList<>();

@@ -35,7 +35,10 @@ class RealCorpusTest {
 
     @BeforeAll
     static void load() throws Exception {
-        corpus = Certify.Prepared.load(CORPUS);
+        Certify.Prepared all = Certify.Prepared.load(CORPUS);
+        // the fakes speak standard FCL only: a case written in a dialect is not sent to them (DialectCasesTest)
+        corpus = new Certify.Prepared(all.dir(), all.sha256(),
+                all.cases().stream().filter(c -> !c.inDialect()).toList());
         cases = Corpus.load(CORPUS).cases().stream().collect(Collectors.toMap(CorpusCase::id, c -> c));
     }
 
