@@ -230,6 +230,10 @@ public final class FfllWriter implements DialectWriter {
             if (f instanceof MembershipFunction.Points p) {
                 return new ArrayList<>(p.points());
             }
+            if (f instanceof MembershipFunction.Computed c) {
+                LibraryText.computedLost(cx, t, c, "FFLL");
+                return new ArrayList<>(List.of(new Point(Literal.of(span[0]), Literal.of(0), t.location())));
+            }
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             Optional<List<Point>> exact = ShapePoints.exact(n);
             if (exact.isPresent()) {

@@ -108,12 +108,16 @@ public final class FllWriter implements DialectWriter {
         out.append(IN).append("term: ").append(t.name()).append(' ');
         MembershipFunction f = t.function();
         if (f instanceof MembershipFunction.Singleton s) {
-            out.append("Constant ").append(cx.numberText(s.value(), 0, WriterCode.POINT_VARIABLE, "singleton '"
-                    + t.name() + "'"));
+            String x = cx.numberText(s.value(), 0, WriterCode.POINT_VARIABLE, "singleton '" + t.name() + "'");
             if (input) {
+                // fuzzylite's Constant in an input is a constant degree; three points at x are the singleton as
+                // fclcert reads them back, but fuzzylite's Discrete gives 0 at x (measured with fuzzylite 6.0)
+                out.append("Discrete ").append(x).append(" 0 ").append(x).append(" 1 ").append(x).append(" 0");
                 cx.findings.lost(t.location(), WriterCode.SHAPE, "FLL has no singleton for an input: '" + t.name()
-                        + "' is written as fuzzylite's Constant, a constant degree, which fclcert does not read in an"
-                        + " input");
+                        + "' is written as a Discrete of three points at " + x + ", which fuzzylite 6.0 gives degree 0"
+                        + " there");
+            } else {
+                out.append("Constant ").append(x);
             }
         } else if (f instanceof MembershipFunction.Points p) {
             out.append("Discrete");
@@ -126,6 +130,11 @@ public final class FllWriter implements DialectWriter {
                         "a degree of term '" + t.name() + "'"));
             }
             LibraryText.verticalEdge(cx, t, p);
+        } else if (f instanceof MembershipFunction.Computed c) {
+            out.append(LibraryText.fuzzyliteComputed(cx, c).orElseGet(() -> {
+                LibraryText.computedLost(cx, t, c, "FLL as fclcert writes it (Constant or Linear)");
+                return "Constant 0";
+            }));
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()

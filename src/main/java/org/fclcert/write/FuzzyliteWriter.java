@@ -132,6 +132,11 @@ public final class FuzzyliteWriter implements DialectWriter {
         } else if (f instanceof MembershipFunction.Points p) {
             out.append(LibraryText.points(p.points(), cx, t.name()));
             LibraryText.verticalEdge(cx, t, p);
+        } else if (f instanceof MembershipFunction.Computed c) {
+            out.append(LibraryText.fuzzyliteComputed(cx, c).orElseGet(() -> {
+                LibraryText.computedLost(cx, t, c, "fuzzylite's FCL as fclcert writes it (Constant or Linear)");
+                return "Constant 0";
+            }));
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()
@@ -155,8 +160,13 @@ public final class FuzzyliteWriter implements DialectWriter {
         out.append(IN).append("METHOD : ").append(LibraryText.method(m)).append(";\n");
         defuzzificationNotes(cx, d, m, "100 samples of the RANGE");
         AccumulationMethod a = accu == null ? AccumulationMethod.MAX : accu.value();
-        // fuzzylite's names: ASUM for PROBOR, the others (MAX, BSUM, NSUM, SUM, ESUM, HSUM, DSUM, NMAX) as the model's
-        out.append(IN).append("ACCU : ").append(a == AccumulationMethod.PROBOR ? "ASUM" : a.name()).append(";\n");
+        // fuzzylite's names: ASUM for PROBOR, the class name UnboundedSum for SUM (its FCL has no word for it), the
+        // others (MAX, BSUM, NSUM, ESUM, HSUM, DSUM, NMAX) as the model's
+        out.append(IN).append("ACCU : ").append(switch (a) {
+            case PROBOR -> "ASUM";
+            case SUM -> "UnboundedSum";
+            default -> a.name();
+        }).append(";\n");
         if (a == AccumulationMethod.NSUM) {
             cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite computes ACCU NSUM of '" + name
                     + "' as BSUM");

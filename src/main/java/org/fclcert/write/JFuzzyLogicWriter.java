@@ -83,8 +83,10 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 + " block; it is left out (fclcert gives it no meaning)"));
         for (Fuzzification f : fb.fuzzifications()) {
             out.append("FUZZIFY ").append(cx.variable(f.variable())).append('\n');
-            f.declaredRange().ifPresent(r -> out.append(IN).append("RANGE := (").append(LibraryText.number(r.min()))
-                    .append(" .. ").append(LibraryText.number(r.max())).append(");\n"));
+            // jFuzzyLogic's grammar refuses RANGE in FUZZIFY (before or after the terms); it has no effect here
+            f.declaredRange().ifPresent(r -> cx.findings.differs(f.location(), WriterCode.LEFT_OUT, "jFuzzyLogic reads"
+                    + " no RANGE in FUZZIFY; the RANGE of input '" + f.variable() + "' is left out (it has no effect on"
+                    + " evaluation)"));
             double[] span = cx.inputSpan(f);
             for (Term t : f.terms()) {
                 term(cx, t, span, out);
@@ -128,6 +130,9 @@ public final class JFuzzyLogicWriter implements DialectWriter {
         } else if (f instanceof MembershipFunction.Points p) {
             out.append(LibraryText.points(p.points(), cx, t.name()));
             LibraryText.verticalEdge(cx, t, p);
+        } else if (f instanceof MembershipFunction.Computed c) {
+            LibraryText.computedLost(cx, t, c, "jFuzzyLogic's FCL as fclcert writes it");
+            out.append('0');
         } else {
             out.append(shape(cx, t, (NamedShape) f, span));
         }

@@ -1,13 +1,20 @@
 package org.fclcert.write;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
 import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Expression;
 import org.fclcert.model.Literal;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.MembershipFunction.NamedShape;
 import org.fclcert.model.Point;
 import org.fclcert.model.ShapeKind;
+import org.fclcert.model.Term;
+import org.fclcert.model.Variable;
+import org.fclcert.model.VariableKind;
 
 /** Spellings the library writers share: numbers, points, shape names. */
 final class LibraryText {
@@ -21,6 +28,66 @@ final class LibraryText {
 
     static String number(Literal l) {
         return LiteralText.of(l);
+    }
+
+    /**
+     * A Takagi–Sugeno term in fuzzylite's words: {@code Constant c}, or {@code Linear} with one coefficient per input
+     * of the block in declaration order and the constant last. Empty when the expression is not a sum of
+     * {@code coefficient * input} terms (each input once) and one constant: fclcert writes no {@code Function}.
+     */
+    static Optional<String> fuzzyliteComputed(BlockContext cx, MembershipFunction.Computed c) {
+        Map<String, Double> coefficients = new HashMap<>();
+        double[] constant = {0};
+        if (!linear(c.value(), coefficients, constant, new boolean[1])) {
+            return Optional.empty();
+        }
+        List<Variable> inputs = cx.fb.variables().stream().filter(v -> v.kind() == VariableKind.INPUT).toList();
+        if (!inputs.stream().map(v -> v.name().toLowerCase(Locale.ROOT)).toList().containsAll(coefficients.keySet())) {
+            return Optional.empty();            // a term reading an output or a local: not a Linear
+        }
+        if (coefficients.isEmpty()) {
+            return Optional.of("Constant " + number(constant[0]));
+        }
+        StringBuilder out = new StringBuilder("Linear");
+        for (Variable v : inputs) {
+            out.append(' ').append(number(coefficients.getOrDefault(v.name().toLowerCase(Locale.ROOT), 0.0)));
+        }
+        return Optional.of(out.append(' ').append(number(constant[0])).toString());
+    }
+
+    /** Collects {@code e} as coefficients and a constant; false where that would not be exact. */
+    private static boolean linear(Expression e, Map<String, Double> coefficients, double[] constant, boolean[] seen) {
+        if (e instanceof Expression.Binary b && b.operator() == '+') {
+            return linear(b.left(), coefficients, constant, seen) && linear(b.right(), coefficients, constant, seen);
+        }
+        if (e instanceof Expression.Number n) {
+            if (seen[0] && n.value() != 0) {
+                return false;                   // two constants would be added in doubles
+            }
+            seen[0] |= n.value() != 0;
+            constant[0] = n.value() != 0 ? n.value() : constant[0];
+            return true;
+        }
+        Expression.Variable v = null;
+        double k = 1;
+        if (e instanceof Expression.Variable x) {
+            v = x;
+        } else if (e instanceof Expression.Binary b && b.operator() == '*') {
+            if (b.left() instanceof Expression.Number n && b.right() instanceof Expression.Variable x) {
+                v = x;
+                k = n.value();
+            } else if (b.right() instanceof Expression.Number n && b.left() instanceof Expression.Variable x) {
+                v = x;
+                k = n.value();
+            }
+        }
+        return v != null && coefficients.putIfAbsent(v.name().toLowerCase(Locale.ROOT), k) == null;
+    }
+
+    /** The finding for a Takagi–Sugeno term a library's layout cannot state. */
+    static void computedLost(BlockContext cx, Term t, MembershipFunction.Computed c, String library) {
+        cx.findings.lost(t.location(), WriterCode.SHAPE, library + " cannot state the Takagi-Sugeno term '" + t.name()
+                + "' (" + c.written() + ") here; it is not written");
     }
 
     /** {@code (x, y) (x, y) ...}: the point list both libraries and the standard read. */

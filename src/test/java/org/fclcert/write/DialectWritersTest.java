@@ -219,6 +219,65 @@ class DialectWritersTest {
 
 
     /**
+     * Takagi–Sugeno terms are written as fuzzylite reads them (Constant, Linear with one coefficient per input in
+     * declaration order, the constant last) and the unbounded sum by its class name (fuzzylite 6.0 refuses 'SUM');
+     * jFuzzyLogic's and FFLL's writers name the loss instead of failing.
+     */
+    @Test
+    void takagiSugenoTermsAndTheUnboundedSumAreWrittenAsFuzzyliteReadsThem() {
+        String text = """
+                FUNCTION_BLOCK ts
+                VAR_INPUT
+                  a: REAL;
+                  b: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                END_VAR
+                FUZZIFY a
+                  TERM lo := Ramp 10 0;
+                  TERM hi := Ramp 0 10;
+                END_FUZZIFY
+                FUZZIFY b
+                  TERM hi := Ramp 0 10;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  RANGE := (-100 .. 100);
+                  TERM c := Constant 2.5;
+                  TERM l := Linear 0 3 -1;
+                  METHOD : COGS;
+                  ACCU : UnboundedSum;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK r
+                  AND : MIN;
+                  RULE 1 : if a is lo then y is c
+                  RULE 2 : if a is hi and b is hi then y is l
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = Analysis.analyze(DialectReaders.reader(Dialect.FUZZYLITE), "ts.fcl", text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        Written fl = DialectWriters.writer(Dialect.FUZZYLITE).write(p);
+        assertTrue(fl.text().contains("  TERM c := Constant 2.5;\n") && fl.text().contains("  TERM l := Linear 0 3 -1;\n")
+                && fl.text().contains("  ACCU : UnboundedSum;\n"), fl.text());
+        // a = 6, b = 4: c with 0.4, l = 3 * 4 - 1 = 11 with min(0.6, 0.4) = 0.4: (0.4 * 2.5 + 0.4 * 11) / 0.8 = 6.75
+        RoundTrip rt = DialectWriters.readBackAndCompare(p, fl, null, List.of(Map.of("a", 6.0, "b", 4.0)));
+        assertTrue(rt.equal(), rt.summary());
+        Written fll = DialectWriters.writer(Dialect.FLL).write(p);
+        assertTrue(fll.text().contains("term: l Linear 0 3 -1"), fll.text());
+        for (Dialect d : List.of(Dialect.JFUZZYLOGIC, Dialect.FFLL)) {
+            Written w = DialectWriters.writer(d).write(p);
+            assertTrue(w.notExpressible().stream().anyMatch(x -> x.code().equals("FCL-X106")
+                    && x.message().contains("Takagi-Sugeno term 'l' (Linear 0 3 -1)")), d + " " + w.notExpressible());
+        }
+        Analysis sum = Analysis.analyze(DialectReaders.reader(Dialect.FUZZYLITE), "sum.fcl",
+                text.replace("UnboundedSum", "SUM"));
+        assertTrue(sum.diagnostics().stream().anyMatch(x -> x.code().equals("FCL-S308")
+                && x.message().startsWith("'SUM' is not an accumulation")), sum.diagnostics().toString());
+    }
+
+    /**
      * fuzzylite's Einstein ACT/ACCU and Tsukamoto's method: its writer says them (read back, equal on the grid);
      * jFuzzyLogic and FFLL cannot, and name each loss where it was written.
      */

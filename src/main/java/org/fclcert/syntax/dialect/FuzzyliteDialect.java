@@ -182,7 +182,9 @@ class FuzzyliteDialect extends LibraryDialect {
             case "MAX" -> AccumulationMethod.MAX;
             case "BSUM" -> AccumulationMethod.BSUM;
             case "NSUM" -> AccumulationMethod.NSUM;
-            case "SUM" -> AccumulationMethod.SUM;
+            // fuzzylite's FCL has no word for the unbounded sum: its importer hands an unknown name to the s-norm
+            // factory, which knows the class name (fuzzylite 6.0 refuses "SUM": "SNorm <SUM> not registered")
+            case "UNBOUNDEDSUM" -> AccumulationMethod.SUM;
             case "ASUM" -> AccumulationMethod.PROBOR;
             case "ESUM" -> AccumulationMethod.ESUM;
             case "HSUM" -> AccumulationMethod.HSUM;
@@ -219,7 +221,7 @@ class FuzzyliteDialect extends LibraryDialect {
 
     @Override
     String accumulationNames() {
-        return "MAX, BSUM, NSUM, ASUM, SUM, ESUM, HSUM, DSUM, NMAX";
+        return "MAX, BSUM, NSUM, ASUM, UnboundedSum, ESUM, HSUM, DSUM, NMAX";
     }
 
     @Override

