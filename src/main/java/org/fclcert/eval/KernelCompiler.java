@@ -48,7 +48,7 @@ final class KernelCompiler {
     private static final String NORMS = "org/fclcert/eval/Norms";
     private static final String FBI = "org/fclcert/eval/FunctionBlockInstance";
     private static final String SELF = "org/fclcert/eval/Kernel";
-    private static final String FRONT_DESC = "([D[D[D[D[D[D[D[D)V";
+    private static final String FRONT_DESC = "([D[D[D[D[D[D[D[D[I)I";
     private static final String OUTPUT_DESC = "(I[D[D[D[D[D[D)D";
     private static final String ONE_OUTPUT_DESC = "([D[D[D[D[D[D)D";
     /** A budget of bytecode per generated method, well below HotSpot's 8 000-byte limit for compiling one. */
@@ -83,15 +83,20 @@ final class KernelCompiler {
             }
             front.visitMethodInsn(INVOKESTATIC, SELF, m, "([D[D[D[D)V", false);
         }
+        // the count of live contributions so far, threaded through the rule methods
+        front.visitInsn(ICONST_0);
         for (String m : rules) {
+            front.visitVarInsn(ISTORE, 10);
             for (int a = 3; a <= 8; a++) {
                 front.visitVarInsn(ALOAD, a);
             }
             front.visitVarInsn(ALOAD, 1);
             front.visitVarInsn(ALOAD, 2);
+            front.visitVarInsn(ALOAD, 9);
+            front.visitVarInsn(ILOAD, 10);
             front.visitMethodInsn(INVOKESTATIC, SELF, m, RULES_DESC, false);
         }
-        front.visitInsn(RETURN);
+        front.visitInsn(IRETURN);
         front.visitMaxs(0, 0);
         front.visitEnd();
         outputMethods(cw, plan, outputs);
@@ -411,29 +416,42 @@ final class KernelCompiler {
     // ------------------------------------------------------------------------------------------ rule blocks
 
     /**
-     * Locals of a rule method: td, te, cd, cw, ce, cde, values, valueRep (0–7), then acc, e, y, ey, r, wd, w, ew,
-     * and from STACK the degree and bound of each entry of a condition's stack.
+     * Locals of a rule method: td, te, cd, cw, ce, cde, values, valueRep (0–7), live and its count (8, 9), then acc,
+     * e, y, ey, r, wd, w, ew, and from STACK the degree and bound of each entry of a condition's stack. A rule method
+     * returns the count of live contributions.
      */
-    private static final int ACC = 8;
-    private static final int ERR = 10;
-    private static final int Y = 12;
-    private static final int EY = 14;
-    private static final int R = 16;
-    private static final int WD = 18;
-    private static final int W = 20;
-    private static final int EW = 22;
-    private static final int STACK = 24;
-    private static final String RULES_DESC = "([D[D[D[D[D[D[D[D)V";
+    private static final int LIVE = 8;
+    private static final int COUNT = 9;
+    private static final int ACC = 10;
+    private static final int ERR = 12;
+    private static final int Y = 14;
+    private static final int EY = 16;
+    private static final int R = 18;
+    private static final int WD = 20;
+    private static final int W = 22;
+    private static final int EW = 24;
+    private static final int STACK = 26;
+    private static final String RULES_DESC = "([D[D[D[D[D[D[D[D[II)I";
 
     private static List<String> ruleMethods(ClassWriter cw, BlockPlan plan) {
         List<String> names = new ArrayList<>();
         MethodVisitor mv = null;
         int used = 0;
         for (RuleBlockPlan rb : plan.ruleBlocks) {
-            for (int r = 0; r < rb.conditions().length; r++) {
-                int cost = 60 + 70 * rb.conditions()[r].ops.length + 120 * rb.conclusions()[r].length;
+            int rules = rb.conditions().length;
+            for (int r = 0; r < rules; ) {
+                // a run of consecutive rules that an exact 0 of the same first term settles: one test for all
+                int first = zeroSkipTerm(rb, r);
+                int end = r + 1;
+                while (first >= 0 && end < rules && zeroSkipTerm(rb, end) == first) {
+                    end++;
+                }
+                int cost = 0;
+                for (int q = r; q < end; q++) {
+                    cost += 60 + 70 * rb.conditions()[q].ops.length + 120 * rb.conclusions()[q].length;
+                }
                 if (mv == null || used + cost > CHUNK) {
-                    end(mv);
+                    endRules(mv);
                     String name = "rules" + names.size();
                     names.add(name);
                     mv = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, name, RULES_DESC, null, null);
@@ -441,14 +459,62 @@ final class KernelCompiler {
                     used = 0;
                 }
                 used += cost;
-                rule(mv, rb, rb.conditions()[r], rb.conclusions()[r]);
+                Label after = new Label();
+                if (first >= 0) {
+                    // runRuleBlock's ZeroSkip: their contributions are exact 0s already (FunctionBlockInstance
+                    // clears the live ones of the step before), so nothing is written
+                    Label run = new Label();
+                    loadElement(mv, 0, first);
+                    mv.visitInsn(DCONST_0);
+                    mv.visitInsn(DCMPL);
+                    mv.visitJumpInsn(IFNE, run);
+                    loadElement(mv, 1, first);
+                    mv.visitInsn(DCONST_0);
+                    mv.visitInsn(DCMPL);
+                    mv.visitJumpInsn(IFEQ, after);
+                    mv.visitLabel(run);
+                }
+                for (int q = r; q < end; q++) {
+                    rule(mv, rb, rb.conditions()[q], rb.conclusions()[q]);
+                }
+                mv.visitLabel(after);
+                r = end;
             }
         }
-        end(mv);
+        endRules(mv);
         return names;
     }
 
-    /** FunctionBlockInstance.runRuleBlock for one rule: its ZeroSkip, aggregateTerms and its subconclusions. */
+    /**
+     * The first term whose exact 0 settles rule r (runRuleBlock's ZeroSkip: a lone term or an AND by MIN or PROD
+     * of terms, its subconclusions of constant weight), else -1.
+     */
+    private static int zeroSkipTerm(RuleBlockPlan rb, int r) {
+        ConditionCode code = rb.conditions()[r];
+        int n = code.flatTerms;
+        boolean absorbs = n > 1 && code.ops[n] == ConditionCode.AND
+                && (rb.and() == AndAlgorithm.MIN || rb.and() == AndAlgorithm.PROD);
+        for (SubconclusionPlan sc : rb.conclusions()[r]) {
+            if (sc.weightSlot() >= 0) {
+                return -1;
+            }
+        }
+        return n > 0 && code.ops[0] == ConditionCode.TERM && (n == 1 || absorbs) ? code.args[0] : -1;
+    }
+
+    private static void endRules(MethodVisitor mv) {
+        if (mv != null) {
+            mv.visitVarInsn(ILOAD, COUNT);
+            mv.visitInsn(IRETURN);
+            mv.visitMaxs(0, 0);
+            mv.visitEnd();
+        }
+    }
+
+    /**
+     * FunctionBlockInstance.runRuleBlock for one rule (its ZeroSkip tested before, in {@link #ruleMethods}):
+     * aggregateTerms or aggregate, and its subconclusions.
+     */
     private static void rule(MethodVisitor mv, RuleBlockPlan rb, ConditionCode code, SubconclusionPlan[] scs) {
         int[] ops = code.ops;
         int[] args = code.args;
@@ -458,31 +524,8 @@ final class KernelCompiler {
         boolean isAnd = n > 1 && ops[n] == ConditionCode.AND;
         boolean absorbs = isAnd && (and == AndAlgorithm.MIN || and == AndAlgorithm.PROD);
         Label next = new Label();
-        boolean plain = true;
-        for (SubconclusionPlan sc : scs) {
-            plain &= sc.weightSlot() < 0;
-        }
         if (n == 0) {
             aggregate(mv, code, and, or);
-        } else if (ops[0] == ConditionCode.TERM && (n == 1 || absorbs) && plain) {
-            // the ZeroSkip of runRuleBlock: an exact 0 as the first term settles the rule
-            Label run = new Label();
-            loadElement(mv, 0, args[0]);
-            mv.visitInsn(DCONST_0);
-            mv.visitInsn(DCMPL);
-            mv.visitJumpInsn(IFNE, run);
-            loadElement(mv, 1, args[0]);
-            mv.visitInsn(DCONST_0);
-            mv.visitInsn(DCMPL);
-            mv.visitJumpInsn(IFNE, run);
-            for (SubconclusionPlan sc : scs) {
-                storeConstant(mv, 2, sc.contribution(), 0.0);
-                storeConstant(mv, 3, sc.contribution(), sc.weightConst());
-                storeConstant(mv, 4, sc.contribution(), 0.0);
-                storeConstant(mv, 5, sc.contribution(), 0.0);
-            }
-            mv.visitJumpInsn(GOTO, next);
-            mv.visitLabel(run);
         }
         Label folded = new Label();
         if (n > 0) {
@@ -527,6 +570,7 @@ final class KernelCompiler {
             storeElement(mv, 3, sc.contribution(), W);
             storeConstant(mv, 4, sc.contribution(), 0.0);
             storeElement(mv, 5, sc.contribution(), ERR);
+            live(mv, sc.contribution());
         }
         mv.visitJumpInsn(GOTO, next);
         mv.visitLabel(inexact);
@@ -550,8 +594,18 @@ final class KernelCompiler {
             mv.visitMethodInsn(INVOKESTATIC, NORMS, "productError", "(DDDDD)D", false);
             mv.visitInsn(DASTORE);
             storeElement(mv, 5, c, ERR);
+            live(mv, c);
         }
         mv.visitLabel(next);
+    }
+
+    /** live[count++] = c: a contribution written in this step (FunctionBlockInstance clears it before the next). */
+    private static void live(MethodVisitor mv, int c) {
+        mv.visitVarInsn(ALOAD, LIVE);
+        mv.visitVarInsn(ILOAD, COUNT);
+        push(mv, c);
+        mv.visitInsn(IASTORE);
+        mv.visitIincInsn(COUNT, 1);
     }
 
     /**
