@@ -183,27 +183,33 @@ final class SetBuilder {
                 while (c < crossEnd[j] && crossU[c] < u) {
                     c++;
                 }
-                double l;
                 double v;
-                double r;
                 if (c < crossEnd[j] && crossU[c] == u) {
-                    l = v = r = act.level[j]; // a clip crossing: the term's degree is the level, exactly
+                    v = act.level[j]; // a clip crossing: the term's degree is the level, exactly
                 } else if (p < n && x[p] == u) {
-                    int q = p;
-                    v = y[p];
-                    while (q + 1 < n && x[q + 1] == u) {
-                        v = Math.max(v, y[++q]);
+                    if (p + 1 < n && x[p + 1] == u) {
+                        // a jump: left limit, value and right limit differ
+                        int q = p;
+                        v = y[p];
+                        while (q + 1 < n && x[q + 1] == u) {
+                            v = Math.max(v, y[++q]);
+                        }
+                        cv[base + i] = act.activate(j, v);
+                        cl[base + i] = act.activate(j, y[p]);
+                        cr[base + i] = act.activate(j, y[q]);
+                        continue;
                     }
-                    l = y[p];
-                    r = y[q];
+                    v = y[p];
                 } else if (p == 0 || p == n) {
-                    l = v = r = y[p == 0 ? 0 : n - 1];
+                    v = y[p == 0 ? 0 : n - 1];
                 } else {
-                    l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
+                    v = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                cv[base + i] = act.activate(j, v);
-                cl[base + i] = act.activate(j, l);
-                cr[base + i] = act.activate(j, r);
+                // left limit, value and right limit are the one degree: activated once
+                double a = act.activate(j, v);
+                cv[base + i] = a;
+                cl[base + i] = a;
+                cr[base + i] = a;
             }
         }
     }
