@@ -1309,7 +1309,7 @@ public final class FunctionBlockInstance {
                 methodBound = band * steepest + 4 * Norms.R * m;
             }
             default -> {
-                double area = Defuzzifier.area(set.px, set.py, set.np);
+                double area = setArea[0];      // Defuzzifier.area of this set, summed by centreOfGravity
                 double delta = spread * width + rounding;
                 if (area > 2 * delta) {
                     methodBound = width * delta / (area - delta) + rounding;
@@ -1472,7 +1472,10 @@ public final class FunctionBlockInstance {
             case MOM -> Defuzzifier.meanOfMaximum(set.px, set.py, set.np);
             // BlockCompiler refuses COGSS (like CoGS) on an output with point terms, so no point set reaches here
             case COGSS -> throw new AssertionError("COGSS on a point set: BlockCompiler admits it only on singletons");
-            default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
+            default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np, setArea);
         };
     }
+
+    /** The area of the set CoG was last computed on ({@link #decideSet} reads it instead of summing again). */
+    private final double[] setArea = new double[1];
 }
