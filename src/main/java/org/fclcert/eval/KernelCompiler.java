@@ -441,14 +441,13 @@ final class KernelCompiler {
             int rules = rb.conditions().length;
             for (int r = 0; r < rules; ) {
                 // a run of consecutive rules that an exact 0 of the same first term settles: one test for all
+                // (a run within one method's budget: a longer one is split, each part behind its own test)
                 int first = zeroSkipTerm(rb, r);
                 int end = r + 1;
-                while (first >= 0 && end < rules && zeroSkipTerm(rb, end) == first) {
+                int cost = ruleCost(rb, r);
+                while (first >= 0 && end < rules && zeroSkipTerm(rb, end) == first && cost + ruleCost(rb, end) <= CHUNK) {
+                    cost += ruleCost(rb, end);
                     end++;
-                }
-                int cost = 0;
-                for (int q = r; q < end; q++) {
-                    cost += 60 + 70 * rb.conditions()[q].ops.length + 120 * rb.conclusions()[q].length;
                 }
                 if (mv == null || used + cost > CHUNK) {
                     endRules(mv);
@@ -459,30 +458,86 @@ final class KernelCompiler {
                     used = 0;
                 }
                 used += cost;
-                Label after = new Label();
-                if (first >= 0) {
-                    // runRuleBlock's ZeroSkip: their contributions are exact 0s already (FunctionBlockInstance
-                    // clears the live ones of the step before), so nothing is written
-                    Label run = new Label();
-                    loadElement(mv, 0, first);
-                    mv.visitInsn(DCONST_0);
-                    mv.visitInsn(DCMPL);
-                    mv.visitJumpInsn(IFNE, run);
-                    loadElement(mv, 1, first);
-                    mv.visitInsn(DCONST_0);
-                    mv.visitInsn(DCMPL);
-                    mv.visitJumpInsn(IFEQ, after);
-                    mv.visitLabel(run);
-                }
-                for (int q = r; q < end; q++) {
-                    rule(mv, rb, rb.conditions()[q], rb.conclusions()[q]);
-                }
-                mv.visitLabel(after);
+                runs(mv, rb, r, end, 0);
                 r = end;
             }
         }
         endRules(mv);
         return names;
+    }
+
+    /** The bytecode budget of rule r, with room for the tests of its runs. */
+    private static int ruleCost(RuleBlockPlan rb, int r) {
+        return 60 + 70 * rb.conditions()[r].ops.length + 120 * rb.conclusions()[r].length;
+    }
+
+    /**
+     * Rules from..to-1, which share their first {@code level} terms (all rules ZeroSkip may settle, when level &gt; 0),
+     * in runs of consecutive rules with the same term at position {@code level}, each run behind one test that
+     * settles all of its rules with nothing to write:
+     * <ul>
+     * <li>level 0, runRuleBlock's ZeroSkip: the first term's degree is 0 with bound 0; the rules give degree 0, their
+     * constant weights and bounds 0;</li>
+     * <li>level k &gt; 0: the first k terms' degrees are above 0 and the next term's is +0 with bound 0. The fold of
+     * MIN or PROD reaches that term with a degree not below +0 (or stopped before at +0 with bound 0) and gives +0
+     * with bound 0 there ({@code minError}'s and {@code productError}'s first case), then stops: the rule writes
+     * degree +0, its constant weight, bounds 0, as ZeroSkip does.</li>
+     * </ul>
+     * FunctionBlockInstance.clearLive has set every contribution the kernel did not write in the step before to just
+     * those values, so a settled run writes nothing. A run of more than one rule is split again by the next term.
+     */
+    private static void runs(MethodVisitor mv, RuleBlockPlan rb, int from, int to, int level) {
+        for (int q = from; q < to; ) {
+            int t = termAt(rb, q, level);
+            int end = q + 1;
+            while (t >= 0 && end < to && termAt(rb, end, level) == t) {
+                end++;
+            }
+            Label past = new Label();
+            if (t >= 0) {
+                Label run = new Label();
+                int[] args = rb.conditions()[q].args;
+                if (level == 0) {
+                    loadElement(mv, 0, t);
+                    mv.visitInsn(DCONST_0);
+                    mv.visitInsn(DCMPL);
+                    mv.visitJumpInsn(IFNE, run);
+                } else {
+                    for (int i = 0; i < level; i++) {
+                        loadElement(mv, 0, args[i]);
+                        mv.visitInsn(DCONST_0);
+                        mv.visitInsn(DCMPL);
+                        mv.visitJumpInsn(IFLE, run);
+                    }
+                    loadElement(mv, 0, t);
+                    mv.visitMethodInsn(INVOKESTATIC, "java/lang/Double", "doubleToRawLongBits", "(D)J", false);
+                    mv.visitInsn(LCONST_0);
+                    mv.visitInsn(LCMP);
+                    mv.visitJumpInsn(IFNE, run);
+                }
+                loadElement(mv, 1, t);
+                mv.visitInsn(DCONST_0);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFEQ, past);
+                mv.visitLabel(run);
+            }
+            if (t >= 0 && end - q > 1) {
+                runs(mv, rb, q, end, level + 1);
+            } else {
+                for (int k = q; k < end; k++) {
+                    rule(mv, rb, rb.conditions()[k], rb.conclusions()[k]);
+                }
+            }
+            mv.visitLabel(past);
+            q = end;
+        }
+    }
+
+    /** The term at position {@code level} of rule r's flat AND (not negated) when ZeroSkip may settle r, else -1. */
+    private static int termAt(RuleBlockPlan rb, int r, int level) {
+        ConditionCode code = rb.conditions()[r];
+        return zeroSkipTerm(rb, r) >= 0 && code.flatTerms > level && code.ops[level] == ConditionCode.TERM
+                ? code.args[level] : -1;
     }
 
     /**
