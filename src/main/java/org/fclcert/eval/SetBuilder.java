@@ -54,12 +54,17 @@ final class SetBuilder {
         activatedValues(cx, cy, shapes);
         accumulateAtBreakpoints(accu);
         for (int i = 0; i < nb; i++) {
+            // a degree equal to the one just emitted at the same u adds no vertex (emitRaw's first test): not emitted
             if (i > 0) {
                 emit(bx[i], aL[i], accu);
             }
-            emit(bx[i], aV[i], accu);
+            if (i == 0 || aV[i] != aL[i]) {
+                emit(bx[i], aV[i], accu);
+            }
             if (i < nb - 1) {
-                emit(bx[i], aR[i], accu);
+                if (aR[i] != aV[i]) {
+                    emit(bx[i], aR[i], accu);
+                }
                 interior(i, accu);
             }
         }
