@@ -25,6 +25,8 @@ final class SetBuilder {
     private double[] cl = new double[64];
     private double[] cv = new double[64];
     private double[] cr = new double[64];
+    /** Per breakpoint: whether some contribution jumps there (its left limit, value and right limit differ). */
+    private boolean[] jump = new boolean[16];
     private double[] aL = new double[16];
     private double[] aV = new double[16];
     private double[] aR = new double[16];
@@ -173,6 +175,10 @@ final class SetBuilder {
             cv = new double[2 * size];
             cr = new double[2 * size];
         }
+        if (jump.length < nb) {
+            jump = new boolean[2 * nb];
+        }
+        Arrays.fill(jump, 0, nb, false);
         for (int j = 0; j < act.n; j++) {
             double[] x = cx[act.shape[j]];
             double[] y = cy[act.shape[j]];
@@ -202,6 +208,7 @@ final class SetBuilder {
                         cv[base + i] = act.activate(j, v);
                         cl[base + i] = act.activate(j, y[p]);
                         cr[base + i] = act.activate(j, y[q]);
+                        jump[i] = true;
                         continue;
                     }
                     v = y[p];
@@ -228,6 +235,18 @@ final class SetBuilder {
         }
         boolean max = accu == AccumulationMethod.MAX;
         for (int i = 0; i < nb; i++) {
+            if (!jump[i]) {
+                // every contribution's three degrees here are one double: so are their accumulations
+                double v = 0;
+                for (int j = 0; j < act.n; j++) {
+                    int at = j * nb + i;
+                    v = max ? Math.max(v, cv[at]) : v + cv[at];
+                }
+                aL[i] = v;
+                aV[i] = v;
+                aR[i] = v;
+                continue;
+            }
             double l = 0;
             double v = 0;
             double r = 0;
@@ -244,8 +263,8 @@ final class SetBuilder {
     }
 
     private void interior(int i, AccumulationMethod accu) {
-        if (accu == AccumulationMethod.MAX) {
-            envelope(i);
+        if (accu == AccumulationMethod.MAX && act.n > 1) {
+            envelope(i);        // one contribution is its own envelope: no crossing
         } else if (accu == AccumulationMethod.BSUM) {
             double s0 = aR[i];
             double s1 = aL[i + 1];
