@@ -12,10 +12,11 @@ interface CompiledKernel {
     /**
      * Fuzzification and every rule block: each input term's degree and bound into {@code td}/{@code te}, each
      * contribution's degree, weight, bound of w·degree and bound of the degree into {@code cd}, {@code cw},
-     * {@code ce}, {@code cde}.
+     * {@code ce}, {@code cde}; the contributions not written as an exact 0 (degree 0, bound 0), in ascending order,
+     * into {@code live}. Returns how many those are.
      */
-    void front(double[] values, double[] valueRep, double[] td, double[] te, double[] cd, double[] cw, double[] ce,
-            double[] cde);
+    int front(double[] values, double[] valueRep, double[] td, double[] te, double[] cd, double[] cw, double[] ce,
+            double[] cde, int[] live);
 
     /**
      * Accumulation and defuzzification of an output the kernel compiled ({@link KernelCompiler.Compiled#outputs}):

@@ -20,6 +20,14 @@ final class Defuzzifier {
 
     /** Centre of gravity: ∫u·μ / ∫μ. */
     static double centreOfGravity(double[] px, double[] py, int np) {
+        return centreOfGravity(px, py, np, null);
+    }
+
+    /**
+     * {@link #centreOfGravity(double[], double[], int)}, and its ∫μ into {@code areaOut[0]} (when not null): the
+     * same double as {@link #area}, summed by the same operations in the same order.
+     */
+    static double centreOfGravity(double[] px, double[] py, int np, double[] areaOut) {
         double area = 0;
         double moment = 0;
         for (int j = 0; j + 1 < np; j++) {
@@ -28,6 +36,9 @@ final class Defuzzifier {
             double y1 = py[j + 1];
             area += h * (y0 + y1) * 0.5;
             moment += h * (px[j] * (2 * y0 + y1) + px[j + 1] * (y0 + 2 * y1)) / 6.0;
+        }
+        if (areaOut != null) {
+            areaOut[0] = area;
         }
         return area > 0 ? moment / area : Double.NaN;
     }

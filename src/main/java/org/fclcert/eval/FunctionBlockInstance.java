@@ -121,6 +121,18 @@ public final class FunctionBlockInstance {
     private CompiledKernel kernel;
     private boolean[] kernelOutputs;
     private final double[] kernelScratch = new double[2];
+    /**
+     * The contributions the kernel wrote in this evaluation, ascending ({@code liveCount} of them; -1 when the
+     * interpreter ran). The kernel writes nothing for a rule its ZeroSkip settles: {@link #clearLive} sets the
+     * contributions of the step before to that rule's exact 0 first, so every other contribution holds it already.
+     * {@link #collect} walks only the live ones, since an exact 0 (degree 0, bound 0) changes nothing there. Per
+     * contribution its output, its position in that output's list and its constant weight (NaN for a variable).
+     */
+    private final int[] live;
+    private int liveCount = -1;
+    private final int[] contributionOutput;
+    private final int[] contributionPosition;
+    private final double[] constantWeight;
     /** Whether this instance still waits to take the kernel ({@link #KERNEL_AFTER}); false once decided either way. */
     private boolean kernelPending = true;
     private long compiledEvaluations;
@@ -193,6 +205,26 @@ public final class FunctionBlockInstance {
         this.previous = new double[plan.outputs.length];
         for (RuleBlockPlan rb : plan.ruleBlocks) {
             zeroSkip.put(rb, zeroSkip(rb));
+        }
+        this.live = new int[plan.contributionCount];
+        this.constantWeight = new double[plan.contributionCount];
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            for (SubconclusionPlan[] scs : rb.conclusions()) {
+                for (SubconclusionPlan sc : scs) {
+                    if (sc.contribution() >= 0) {
+                        constantWeight[sc.contribution()] = sc.weightSlot() < 0 ? sc.weightConst() : Double.NaN;
+                    }
+                }
+            }
+        }
+        this.contributionOutput = new int[plan.contributionCount];
+        this.contributionPosition = new int[plan.contributionCount];
+        for (int i = 0; i < plan.outputs.length; i++) {
+            int[] cs = plan.outputs[i].contributions();
+            for (int k = 0; k < cs.length; k++) {
+                contributionOutput[cs[k]] = i;
+                contributionPosition[cs[k]] = k;
+            }
         }
         this.smoothSets = new SmoothSet[plan.outputs.length];
         for (int i = 0; i < smoothSets.length; i++) {
@@ -496,10 +528,12 @@ public final class FunctionBlockInstance {
         boolean compiled = kernel != null && trace == null;
         if (compiled) {
             // the kernel's plans have no chained terms, output-value conditions nor bare conclusions
-            kernel.front(values, valueRep, termDegrees, termErrors, contributionDegree, contributionWeight,
-                    contributionError, contributionDegreeError);
+            clearLive();
+            liveCount = kernel.front(values, valueRep, termDegrees, termErrors, contributionDegree, contributionWeight,
+                    contributionError, contributionDegreeError, live);
             compiledEvaluations++;
         } else {
+            liveCount = -1;
             fuzzify(trace);
             for (int t = plan.termShape.length; t < termDegrees.length; t++) {
                 termDegrees[t] = 0.0;           // 'output IS term' (dialects): nothing concluded yet
@@ -514,6 +548,30 @@ public final class FunctionBlockInstance {
         }
         for (int i = 0; i < plan.outputs.length; i++) {
             defuzzify(i, plan.outputs[i], previous[i], smoothSets[i], trace, compiled && kernelOutputs[i]);
+        }
+    }
+
+    /**
+     * Before the kernel runs: every contribution it wrote in the step before (all of them after the interpreter)
+     * back to what runRuleBlock's ZeroSkip writes, degree 0, its constant weight, bounds 0.
+     */
+    private void clearLive() {
+        if (liveCount < 0) {
+            java.util.Arrays.fill(contributionDegree, 0.0);
+            java.util.Arrays.fill(contributionError, 0.0);
+            java.util.Arrays.fill(contributionDegreeError, 0.0);
+            for (int c = 0; c < constantWeight.length; c++) {
+                if (!Double.isNaN(constantWeight[c])) {
+                    contributionWeight[c] = constantWeight[c];
+                }
+            }
+            return;
+        }
+        for (int k = 0; k < liveCount; k++) {
+            int c = live[k];
+            contributionDegree[c] = 0.0;
+            contributionError[c] = 0.0;
+            contributionDegreeError[c] = 0.0;     // its weight, if constant, is the constant already
         }
     }
 
@@ -1251,7 +1309,7 @@ public final class FunctionBlockInstance {
                 methodBound = band * steepest + 4 * Norms.R * m;
             }
             default -> {
-                double area = Defuzzifier.area(set.px, set.py, set.np);
+                double area = setArea[0];      // Defuzzifier.area of this set, summed by centreOfGravity
                 double delta = spread * width + rounding;
                 if (area > 2 * delta) {
                     methodBound = width * delta / (area - delta) + rounding;
@@ -1340,30 +1398,51 @@ public final class FunctionBlockInstance {
     private double collect(OutputPlan o, Activations into, boolean merge) {
         into.clear();
         merge &= o.accumulation() == AccumulationMethod.MAX;
+        collectedLargest = 0;
+        collectedTotal = 0;
         int[] cs = o.contributions();
-        double largest = 0;
-        double total = 0;
-        for (int i = 0; i < cs.length; i++) {
-            double d = contributionDegree[cs[i]];
-            double w = contributionWeight[cs[i]];
-            double e = contributionError[cs[i]];
-            double dw = d * w;
-            if (!(dw > e) && !(dw == 0 && e == 0)) {
-                undecided("whether a rule fired");
+        if (liveCount >= 0 && cs.length > 0) {
+            // the kernel's live contributions, ascending as o.contributions() is: the others are exact 0s
+            int index = contributionOutput[cs[0]];
+            for (int k = 0; k < liveCount; k++) {
+                int c = live[k];
+                if (contributionOutput[c] == index) {
+                    collectOne(o, contributionPosition[c], into, merge);
+                }
             }
-            if (dw > 0 && merge) {
-                into.addUnderMax(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
-            } else if (dw > 0) {
-                into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
+        } else {
+            for (int i = 0; i < cs.length; i++) {
+                collectOne(o, i, into, merge);
             }
-            largest = Math.max(largest, e);
-            total += e;
         }
         return switch (o.accumulation()) {
-            case MAX -> largest;
-            case NSUM -> 2 * total;
-            default -> total;
+            case MAX -> collectedLargest;
+            case NSUM -> 2 * collectedTotal;
+            default -> collectedTotal;
         };
+    }
+
+    /** Set by {@link #collectOne}: the largest and the sum of the bounds of the contributions collected. */
+    private double collectedLargest;
+    private double collectedTotal;
+
+    /** {@link #collect} for the contribution at position i of o's list. */
+    private void collectOne(OutputPlan o, int i, Activations into, boolean merge) {
+        int c = o.contributions()[i];
+        double d = contributionDegree[c];
+        double w = contributionWeight[c];
+        double e = contributionError[c];
+        double dw = d * w;
+        if (!(dw > e) && !(dw == 0 && e == 0)) {
+            undecided("whether a rule fired");
+        }
+        if (dw > 0 && merge) {
+            into.addUnderMax(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
+        } else if (dw > 0) {
+            into.add(o.termShapes()[o.contributionTerm()[i]], d, w, o.contributionActivation()[i]);
+        }
+        collectedLargest = Math.max(collectedLargest, e);
+        collectedTotal += e;
     }
 
     /** Outputs whose set is not piece-wise linear: accumulation and defuzzification by SmoothSet. */
@@ -1393,7 +1472,10 @@ public final class FunctionBlockInstance {
             case MOM -> Defuzzifier.meanOfMaximum(set.px, set.py, set.np);
             // BlockCompiler refuses COGSS (like CoGS) on an output with point terms, so no point set reaches here
             case COGSS -> throw new AssertionError("COGSS on a point set: BlockCompiler admits it only on singletons");
-            default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np);
+            default -> Defuzzifier.centreOfGravity(set.px, set.py, set.np, setArea);
         };
     }
+
+    /** The area of the set CoG was last computed on ({@link #decideSet} reads it instead of summing again). */
+    private final double[] setArea = new double[1];
 }

@@ -48,7 +48,7 @@ final class KernelCompiler {
     private static final String NORMS = "org/fclcert/eval/Norms";
     private static final String FBI = "org/fclcert/eval/FunctionBlockInstance";
     private static final String SELF = "org/fclcert/eval/Kernel";
-    private static final String FRONT_DESC = "([D[D[D[D[D[D[D[D)V";
+    private static final String FRONT_DESC = "([D[D[D[D[D[D[D[D[I)I";
     private static final String OUTPUT_DESC = "(I[D[D[D[D[D[D)D";
     private static final String ONE_OUTPUT_DESC = "([D[D[D[D[D[D)D";
     /** A budget of bytecode per generated method, well below HotSpot's 8 000-byte limit for compiling one. */
@@ -83,15 +83,20 @@ final class KernelCompiler {
             }
             front.visitMethodInsn(INVOKESTATIC, SELF, m, "([D[D[D[D)V", false);
         }
+        // the count of live contributions so far, threaded through the rule methods
+        front.visitInsn(ICONST_0);
         for (String m : rules) {
+            front.visitVarInsn(ISTORE, 10);
             for (int a = 3; a <= 8; a++) {
                 front.visitVarInsn(ALOAD, a);
             }
             front.visitVarInsn(ALOAD, 1);
             front.visitVarInsn(ALOAD, 2);
+            front.visitVarInsn(ALOAD, 9);
+            front.visitVarInsn(ILOAD, 10);
             front.visitMethodInsn(INVOKESTATIC, SELF, m, RULES_DESC, false);
         }
-        front.visitInsn(RETURN);
+        front.visitInsn(IRETURN);
         front.visitMaxs(0, 0);
         front.visitEnd();
         outputMethods(cw, plan, outputs);
@@ -411,29 +416,41 @@ final class KernelCompiler {
     // ------------------------------------------------------------------------------------------ rule blocks
 
     /**
-     * Locals of a rule method: td, te, cd, cw, ce, cde, values, valueRep (0–7), then acc, e, y, ey, r, wd, w, ew,
-     * and from STACK the degree and bound of each entry of a condition's stack.
+     * Locals of a rule method: td, te, cd, cw, ce, cde, values, valueRep (0–7), live and its count (8, 9), then acc,
+     * e, y, ey, r, wd, w, ew, and from STACK the degree and bound of each entry of a condition's stack. A rule method
+     * returns the count of live contributions.
      */
-    private static final int ACC = 8;
-    private static final int ERR = 10;
-    private static final int Y = 12;
-    private static final int EY = 14;
-    private static final int R = 16;
-    private static final int WD = 18;
-    private static final int W = 20;
-    private static final int EW = 22;
-    private static final int STACK = 24;
-    private static final String RULES_DESC = "([D[D[D[D[D[D[D[D)V";
+    private static final int LIVE = 8;
+    private static final int COUNT = 9;
+    private static final int ACC = 10;
+    private static final int ERR = 12;
+    private static final int Y = 14;
+    private static final int EY = 16;
+    private static final int R = 18;
+    private static final int WD = 20;
+    private static final int W = 22;
+    private static final int EW = 24;
+    private static final int STACK = 26;
+    private static final String RULES_DESC = "([D[D[D[D[D[D[D[D[II)I";
 
     private static List<String> ruleMethods(ClassWriter cw, BlockPlan plan) {
         List<String> names = new ArrayList<>();
         MethodVisitor mv = null;
         int used = 0;
         for (RuleBlockPlan rb : plan.ruleBlocks) {
-            for (int r = 0; r < rb.conditions().length; r++) {
-                int cost = 60 + 70 * rb.conditions()[r].ops.length + 120 * rb.conclusions()[r].length;
+            int rules = rb.conditions().length;
+            for (int r = 0; r < rules; ) {
+                // a run of consecutive rules that an exact 0 of the same first term settles: one test for all
+                // (a run within one method's budget: a longer one is split, each part behind its own test)
+                int first = zeroSkipTerm(rb, r);
+                int end = r + 1;
+                int cost = ruleCost(rb, r);
+                while (first >= 0 && end < rules && zeroSkipTerm(rb, end) == first && cost + ruleCost(rb, end) <= CHUNK) {
+                    cost += ruleCost(rb, end);
+                    end++;
+                }
                 if (mv == null || used + cost > CHUNK) {
-                    end(mv);
+                    endRules(mv);
                     String name = "rules" + names.size();
                     names.add(name);
                     mv = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, name, RULES_DESC, null, null);
@@ -441,14 +458,118 @@ final class KernelCompiler {
                     used = 0;
                 }
                 used += cost;
-                rule(mv, rb, rb.conditions()[r], rb.conclusions()[r]);
+                runs(mv, rb, r, end, 0);
+                r = end;
             }
         }
-        end(mv);
+        endRules(mv);
         return names;
     }
 
-    /** FunctionBlockInstance.runRuleBlock for one rule: its ZeroSkip, aggregateTerms and its subconclusions. */
+    /** The bytecode budget of rule r, with room for the tests of its runs. */
+    private static int ruleCost(RuleBlockPlan rb, int r) {
+        return 60 + 70 * rb.conditions()[r].ops.length + 120 * rb.conclusions()[r].length;
+    }
+
+    /**
+     * Rules from..to-1, which share their first {@code level} terms (all rules ZeroSkip may settle, when level &gt; 0),
+     * in runs of consecutive rules with the same term at position {@code level}, each run behind one test that
+     * settles all of its rules with nothing to write:
+     * <ul>
+     * <li>level 0, runRuleBlock's ZeroSkip: the first term's degree is 0 with bound 0; the rules give degree 0, their
+     * constant weights and bounds 0;</li>
+     * <li>level k &gt; 0: the first k terms' degrees are above 0 and the next term's is +0 with bound 0. The fold of
+     * MIN or PROD reaches that term with a degree not below +0 (or stopped before at +0 with bound 0) and gives +0
+     * with bound 0 there ({@code minError}'s and {@code productError}'s first case), then stops: the rule writes
+     * degree +0, its constant weight, bounds 0, as ZeroSkip does.</li>
+     * </ul>
+     * FunctionBlockInstance.clearLive has set every contribution the kernel did not write in the step before to just
+     * those values, so a settled run writes nothing. A run of more than one rule is split again by the next term.
+     */
+    private static void runs(MethodVisitor mv, RuleBlockPlan rb, int from, int to, int level) {
+        for (int q = from; q < to; ) {
+            int t = termAt(rb, q, level);
+            int end = q + 1;
+            while (t >= 0 && end < to && termAt(rb, end, level) == t) {
+                end++;
+            }
+            Label past = new Label();
+            if (t >= 0) {
+                Label run = new Label();
+                int[] args = rb.conditions()[q].args;
+                if (level == 0) {
+                    loadElement(mv, 0, t);
+                    mv.visitInsn(DCONST_0);
+                    mv.visitInsn(DCMPL);
+                    mv.visitJumpInsn(IFNE, run);
+                } else {
+                    for (int i = 0; i < level; i++) {
+                        loadElement(mv, 0, args[i]);
+                        mv.visitInsn(DCONST_0);
+                        mv.visitInsn(DCMPL);
+                        mv.visitJumpInsn(IFLE, run);
+                    }
+                    loadElement(mv, 0, t);
+                    mv.visitMethodInsn(INVOKESTATIC, "java/lang/Double", "doubleToRawLongBits", "(D)J", false);
+                    mv.visitInsn(LCONST_0);
+                    mv.visitInsn(LCMP);
+                    mv.visitJumpInsn(IFNE, run);
+                }
+                loadElement(mv, 1, t);
+                mv.visitInsn(DCONST_0);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFEQ, past);
+                mv.visitLabel(run);
+            }
+            if (t >= 0 && end - q > 1) {
+                runs(mv, rb, q, end, level + 1);
+            } else {
+                for (int k = q; k < end; k++) {
+                    rule(mv, rb, rb.conditions()[k], rb.conclusions()[k]);
+                }
+            }
+            mv.visitLabel(past);
+            q = end;
+        }
+    }
+
+    /** The term at position {@code level} of rule r's flat AND (not negated) when ZeroSkip may settle r, else -1. */
+    private static int termAt(RuleBlockPlan rb, int r, int level) {
+        ConditionCode code = rb.conditions()[r];
+        return zeroSkipTerm(rb, r) >= 0 && code.flatTerms > level && code.ops[level] == ConditionCode.TERM
+                ? code.args[level] : -1;
+    }
+
+    /**
+     * The first term whose exact 0 settles rule r (runRuleBlock's ZeroSkip: a lone term or an AND by MIN or PROD
+     * of terms, its subconclusions of constant weight), else -1.
+     */
+    private static int zeroSkipTerm(RuleBlockPlan rb, int r) {
+        ConditionCode code = rb.conditions()[r];
+        int n = code.flatTerms;
+        boolean absorbs = n > 1 && code.ops[n] == ConditionCode.AND
+                && (rb.and() == AndAlgorithm.MIN || rb.and() == AndAlgorithm.PROD);
+        for (SubconclusionPlan sc : rb.conclusions()[r]) {
+            if (sc.weightSlot() >= 0) {
+                return -1;
+            }
+        }
+        return n > 0 && code.ops[0] == ConditionCode.TERM && (n == 1 || absorbs) ? code.args[0] : -1;
+    }
+
+    private static void endRules(MethodVisitor mv) {
+        if (mv != null) {
+            mv.visitVarInsn(ILOAD, COUNT);
+            mv.visitInsn(IRETURN);
+            mv.visitMaxs(0, 0);
+            mv.visitEnd();
+        }
+    }
+
+    /**
+     * FunctionBlockInstance.runRuleBlock for one rule (its ZeroSkip tested before, in {@link #ruleMethods}):
+     * aggregateTerms or aggregate, and its subconclusions.
+     */
     private static void rule(MethodVisitor mv, RuleBlockPlan rb, ConditionCode code, SubconclusionPlan[] scs) {
         int[] ops = code.ops;
         int[] args = code.args;
@@ -458,31 +579,8 @@ final class KernelCompiler {
         boolean isAnd = n > 1 && ops[n] == ConditionCode.AND;
         boolean absorbs = isAnd && (and == AndAlgorithm.MIN || and == AndAlgorithm.PROD);
         Label next = new Label();
-        boolean plain = true;
-        for (SubconclusionPlan sc : scs) {
-            plain &= sc.weightSlot() < 0;
-        }
         if (n == 0) {
             aggregate(mv, code, and, or);
-        } else if (ops[0] == ConditionCode.TERM && (n == 1 || absorbs) && plain) {
-            // the ZeroSkip of runRuleBlock: an exact 0 as the first term settles the rule
-            Label run = new Label();
-            loadElement(mv, 0, args[0]);
-            mv.visitInsn(DCONST_0);
-            mv.visitInsn(DCMPL);
-            mv.visitJumpInsn(IFNE, run);
-            loadElement(mv, 1, args[0]);
-            mv.visitInsn(DCONST_0);
-            mv.visitInsn(DCMPL);
-            mv.visitJumpInsn(IFNE, run);
-            for (SubconclusionPlan sc : scs) {
-                storeConstant(mv, 2, sc.contribution(), 0.0);
-                storeConstant(mv, 3, sc.contribution(), sc.weightConst());
-                storeConstant(mv, 4, sc.contribution(), 0.0);
-                storeConstant(mv, 5, sc.contribution(), 0.0);
-            }
-            mv.visitJumpInsn(GOTO, next);
-            mv.visitLabel(run);
         }
         Label folded = new Label();
         if (n > 0) {
@@ -527,6 +625,7 @@ final class KernelCompiler {
             storeElement(mv, 3, sc.contribution(), W);
             storeConstant(mv, 4, sc.contribution(), 0.0);
             storeElement(mv, 5, sc.contribution(), ERR);
+            live(mv, sc.contribution());
         }
         mv.visitJumpInsn(GOTO, next);
         mv.visitLabel(inexact);
@@ -550,8 +649,18 @@ final class KernelCompiler {
             mv.visitMethodInsn(INVOKESTATIC, NORMS, "productError", "(DDDDD)D", false);
             mv.visitInsn(DASTORE);
             storeElement(mv, 5, c, ERR);
+            live(mv, c);
         }
         mv.visitLabel(next);
+    }
+
+    /** live[count++] = c: a contribution written in this step (FunctionBlockInstance clears it before the next). */
+    private static void live(MethodVisitor mv, int c) {
+        mv.visitVarInsn(ALOAD, LIVE);
+        mv.visitVarInsn(ILOAD, COUNT);
+        push(mv, c);
+        mv.visitInsn(IASTORE);
+        mv.visitIincInsn(COUNT, 1);
     }
 
     /**

@@ -25,6 +25,8 @@ final class SetBuilder {
     private double[] cl = new double[64];
     private double[] cv = new double[64];
     private double[] cr = new double[64];
+    /** Per breakpoint: whether some contribution jumps there (its left limit, value and right limit differ). */
+    private boolean[] jump = new boolean[16];
     private double[] aL = new double[16];
     private double[] aV = new double[16];
     private double[] aR = new double[16];
@@ -54,12 +56,17 @@ final class SetBuilder {
         activatedValues(cx, cy, shapes);
         accumulateAtBreakpoints(accu);
         for (int i = 0; i < nb; i++) {
+            // a degree equal to the one just emitted at the same u adds no vertex (emitRaw's first test): not emitted
             if (i > 0) {
                 emit(bx[i], aL[i], accu);
             }
-            emit(bx[i], aV[i], accu);
+            if (i == 0 || aV[i] != aL[i]) {
+                emit(bx[i], aV[i], accu);
+            }
             if (i < nb - 1) {
-                emit(bx[i], aR[i], accu);
+                if (aR[i] != aV[i]) {
+                    emit(bx[i], aR[i], accu);
+                }
                 interior(i, accu);
             }
         }
@@ -168,6 +175,10 @@ final class SetBuilder {
             cv = new double[2 * size];
             cr = new double[2 * size];
         }
+        if (jump.length < nb) {
+            jump = new boolean[2 * nb];
+        }
+        Arrays.fill(jump, 0, nb, false);
         for (int j = 0; j < act.n; j++) {
             double[] x = cx[act.shape[j]];
             double[] y = cy[act.shape[j]];
@@ -183,27 +194,34 @@ final class SetBuilder {
                 while (c < crossEnd[j] && crossU[c] < u) {
                     c++;
                 }
-                double l;
                 double v;
-                double r;
                 if (c < crossEnd[j] && crossU[c] == u) {
-                    l = v = r = act.level[j]; // a clip crossing: the term's degree is the level, exactly
+                    v = act.level[j]; // a clip crossing: the term's degree is the level, exactly
                 } else if (p < n && x[p] == u) {
-                    int q = p;
-                    v = y[p];
-                    while (q + 1 < n && x[q + 1] == u) {
-                        v = Math.max(v, y[++q]);
+                    if (p + 1 < n && x[p + 1] == u) {
+                        // a jump: left limit, value and right limit differ
+                        int q = p;
+                        v = y[p];
+                        while (q + 1 < n && x[q + 1] == u) {
+                            v = Math.max(v, y[++q]);
+                        }
+                        cv[base + i] = act.activate(j, v);
+                        cl[base + i] = act.activate(j, y[p]);
+                        cr[base + i] = act.activate(j, y[q]);
+                        jump[i] = true;
+                        continue;
                     }
-                    l = y[p];
-                    r = y[q];
+                    v = y[p];
                 } else if (p == 0 || p == n) {
-                    l = v = r = y[p == 0 ? 0 : n - 1];
+                    v = y[p == 0 ? 0 : n - 1];
                 } else {
-                    l = v = r = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
+                    v = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                cv[base + i] = act.activate(j, v);
-                cl[base + i] = act.activate(j, l);
-                cr[base + i] = act.activate(j, r);
+                // left limit, value and right limit are the one degree: activated once
+                double a = act.activate(j, v);
+                cv[base + i] = a;
+                cl[base + i] = a;
+                cr[base + i] = a;
             }
         }
     }
@@ -217,6 +235,18 @@ final class SetBuilder {
         }
         boolean max = accu == AccumulationMethod.MAX;
         for (int i = 0; i < nb; i++) {
+            if (!jump[i]) {
+                // every contribution's three degrees here are one double: so are their accumulations
+                double v = 0;
+                for (int j = 0; j < act.n; j++) {
+                    int at = j * nb + i;
+                    v = max ? Math.max(v, cv[at]) : v + cv[at];
+                }
+                aL[i] = v;
+                aV[i] = v;
+                aR[i] = v;
+                continue;
+            }
             double l = 0;
             double v = 0;
             double r = 0;
@@ -233,8 +263,8 @@ final class SetBuilder {
     }
 
     private void interior(int i, AccumulationMethod accu) {
-        if (accu == AccumulationMethod.MAX) {
-            envelope(i);
+        if (accu == AccumulationMethod.MAX && act.n > 1) {
+            envelope(i);        // one contribution is its own envelope: no crossing
         } else if (accu == AccumulationMethod.BSUM) {
             double s0 = aR[i];
             double s1 = aL[i + 1];
