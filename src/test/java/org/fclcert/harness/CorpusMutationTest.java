@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
+import org.fclcert.iut.CompiledReference;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutOptions;
@@ -23,6 +24,11 @@ import org.junit.jupiter.params.provider.MethodSource;
  * {@code fclcert certify --iut reference} judges it (tolerance, knife edges not judged, the reverse-order rerun,
  * negative cases), and must pass. It is the only test of the {@code mutation} profile (pom.xml, PIT): a
  * mutant of {@code org.fclcert.eval} is killed only when the corpus alone tells it apart.
+ *
+ * <p>Each positive case is judged a second time on instances that take the compiled kernel ({@code KernelCompiler})
+ * from their first evaluation ({@code LoadedProgram.newCompiledInstance}): certify's reference takes it only at an
+ * instance's 65th evaluation, which no case's few vectors reach, so without this judgement no kernel mutant could
+ * fail a case. A block the kernel does not cover stays interpreted there (the judgement then repeats the first).
  */
 class CorpusMutationTest {
     private static final Path CORPUS = Path.of("conformance");
@@ -39,6 +45,19 @@ class CorpusMutationTest {
         try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
             CaseResult result = runOne(reference, c);
             assertEquals(CaseStatus.PASSED, result.status(), () -> c.id() + ": " + result.message());
+        }
+    }
+
+    static Stream<Arguments> positiveCases() throws CorpusException {
+        return corpusCases().filter(a -> ((RunCase) a.get()[1]).expectedError().isEmpty());
+    }
+
+    @ParameterizedTest(name = "{0} on the compiled kernel")
+    @MethodSource("positiveCases")
+    void referenceOnTheKernelPassesTheCase(String id, RunCase c) throws IOException, IutException {
+        try (ImplementationUnderTest reference = CompiledReference.open()) {
+            CaseResult result = runOne(reference, c);
+            assertEquals(CaseStatus.PASSED, result.status(), () -> c.id() + " on the compiled kernel: " + result.message());
         }
     }
 
