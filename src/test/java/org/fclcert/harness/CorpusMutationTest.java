@@ -29,9 +29,15 @@ import org.junit.jupiter.params.provider.MethodSource;
  * from their first evaluation ({@code LoadedProgram.newCompiledInstance}): certify's reference takes it only at an
  * instance's 65th evaluation, which no case's few vectors reach, so without this judgement no kernel mutant could
  * fail a case. A block the kernel does not cover stays interpreted there (the judgement then repeats the first).
+ *
+ * <p>The export check is not run ({@link #EXPORT_NOT_JUDGED}): its verdict is not part of the status asserted here,
+ * and it evaluates the exported text on the exact path, so it made every case cover {@code ExactInstance} and each
+ * surviving mutant cost the exact evaluation of every case's vectors on top of the judged ones.
  */
 class CorpusMutationTest {
     private static final Path CORPUS = Path.of("conformance");
+    private static final ExportCheck EXPORT_NOT_JUDGED =
+            (text, c) -> new ExportCheck.Verdict(ExportStatus.NOT_RUN, "not judged by the mutation test");
 
     static Stream<Arguments> corpusCases() throws CorpusException {
         List<RunCase> cases = RunCases.from(Corpus.load(CORPUS).cases());
@@ -66,7 +72,7 @@ class CorpusMutationTest {
         var info = iut.hello();
         RunHeader header = RunHeaders.of(info, info.command(), null, CORPUS.toString(), "", one, one,
                 List.of(List.of(), List.of(), List.of()));
-        List<CaseResult> results = new Runner(RunListener.NONE).run(iut, header, one, new ResultSink() {
+        List<CaseResult> results = new Runner(EXPORT_NOT_JUDGED, RunListener.NONE).run(iut, header, one, new ResultSink() {
             @Override
             public void header(RunHeader h) {
             }
