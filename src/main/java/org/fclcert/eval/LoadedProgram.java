@@ -27,6 +27,19 @@ public final class LoadedProgram {
     }
 
     /**
+     * A fresh instance of the named block (null: the first) that runs the compiled kernel from its first evaluation
+     * instead of its {@link FunctionBlockInstance#KERNEL_AFTER}th: for a caller that knows the instance will run long
+     * (a controller loop) and for the corpus's second judgement (CorpusMutationTest), which so reaches the kernel with
+     * a handful of vectors. The results are those of {@link #newInstance(String)} bit for bit (docs/semantics.md, "The
+     * compiled kernel"); a block the kernel does not cover stays interpreted.
+     */
+    public FunctionBlockInstance newCompiledInstance(String blockName) throws EvaluationException {
+        FunctionBlockInstance instance = new FunctionBlockInstance(blockName == null ? blocks.get(0) : block(blockName));
+        instance.useKernel();
+        return instance;
+    }
+
+    /**
      * A fresh instance of the named block (null: the first) in plain double arithmetic, without the exact fallback
      * of the filtered evaluator: one arithmetic an implementation may use, for judging whether a vector is fair
      * ({@link FairVectors}, the fuzzer's screen). Never the reference: its decisions may differ from the exact ones.

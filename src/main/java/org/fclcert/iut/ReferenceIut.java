@@ -38,6 +38,21 @@ final class ReferenceIut implements ImplementationUnderTest {
     private LoadedProgram loaded;
     /** The reference evaluator (filtered exact evaluation, the one `fclcert eval` runs), one instance per block. */
     private final Map<String, FunctionBlockInstance> instances = new HashMap<>();
+    /**
+     * Whether each instance takes the compiled kernel from its first evaluation ({@link LoadedProgram#newCompiledInstance});
+     * the same results, so only the corpus's second judgement (CorpusMutationTest) asks for it, to reach the kernel.
+     */
+    private final boolean compiledFromFirst;
+    /** Evaluations that ran on the compiled kernel (counted for that judgement: which vectors reach the kernel). */
+    private long kernelEvaluations;
+
+    ReferenceIut() {
+        this(false);
+    }
+
+    ReferenceIut(boolean compiledFromFirst) {
+        this.compiledFromFirst = compiledFromFirst;
+    }
 
     @Override
     public IutInfo hello() {
@@ -99,7 +114,9 @@ final class ReferenceIut implements ImplementationUnderTest {
             for (Map.Entry<String, Double> input : inputs.entrySet()) {
                 instance.setInput(instance.inputIndex(input.getKey()), input.getValue());
             }
+            long compiled = instance.compiledEvaluations();
             instance.evaluate();
+            kernelEvaluations += instance.compiledEvaluations() - compiled;
             Map<String, Double> out = new LinkedHashMap<>();
             List<String> names = instance.outputNames();
             for (int i = 0; i < names.size(); i++) {
@@ -121,13 +138,18 @@ final class ReferenceIut implements ImplementationUnderTest {
         FunctionBlockInstance instance = instances.get(Names.key(name));
         if (instance == null) {
             try {
-                instance = loaded.newInstance(name);
+                instance = compiledFromFirst ? loaded.newCompiledInstance(name) : loaded.newInstance(name);
             } catch (EvaluationException e) {
                 throw new IutException(Kind.EVAL_ERROR, e.toString());
             }
             instances.put(Names.key(name), instance);
         }
         return instance;
+    }
+
+    /** How many evaluations so far ran on the compiled kernel. */
+    long kernelEvaluations() {
+        return kernelEvaluations;
     }
 
     @Override

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.CorpusException;
+import org.fclcert.iut.CompiledReference;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutOptions;
@@ -23,9 +24,20 @@ import org.junit.jupiter.params.provider.MethodSource;
  * {@code fclcert certify --iut reference} judges it (tolerance, knife edges not judged, the reverse-order rerun,
  * negative cases), and must pass. It is the only test of the {@code mutation} profile (pom.xml, PIT): a
  * mutant of {@code org.fclcert.eval} is killed only when the corpus alone tells it apart.
+ *
+ * <p>Each positive case is judged a second time on instances that take the compiled kernel ({@code KernelCompiler})
+ * from their first evaluation ({@code LoadedProgram.newCompiledInstance}): certify's reference takes it only at an
+ * instance's 65th evaluation, which no case's few vectors reach, so without this judgement no kernel mutant could
+ * fail a case. A block the kernel does not cover stays interpreted there (the judgement then repeats the first).
+ *
+ * <p>The export check is not run ({@link #EXPORT_NOT_JUDGED}): its verdict is not part of the status asserted here,
+ * and it evaluates the exported text on the exact path, so it made every case cover {@code ExactInstance} and each
+ * surviving mutant cost the exact evaluation of every case's vectors on top of the judged ones.
  */
 class CorpusMutationTest {
     private static final Path CORPUS = Path.of("conformance");
+    private static final ExportCheck EXPORT_NOT_JUDGED =
+            (text, c) -> new ExportCheck.Verdict(ExportStatus.NOT_RUN, "not judged by the mutation test");
 
     static Stream<Arguments> corpusCases() throws CorpusException {
         List<RunCase> cases = RunCases.from(Corpus.load(CORPUS).cases());
@@ -42,12 +54,25 @@ class CorpusMutationTest {
         }
     }
 
+    static Stream<Arguments> positiveCases() throws CorpusException {
+        return corpusCases().filter(a -> ((RunCase) a.get()[1]).expectedError().isEmpty());
+    }
+
+    @ParameterizedTest(name = "{0} on the compiled kernel")
+    @MethodSource("positiveCases")
+    void referenceOnTheKernelPassesTheCase(String id, RunCase c) throws IOException, IutException {
+        try (ImplementationUnderTest reference = CompiledReference.open()) {
+            CaseResult result = runOne(reference, c);
+            assertEquals(CaseStatus.PASSED, result.status(), () -> c.id() + " on the compiled kernel: " + result.message());
+        }
+    }
+
     private static CaseResult runOne(ImplementationUnderTest iut, RunCase c) throws IOException, IutException {
         List<RunCase> one = List.of(c);
         var info = iut.hello();
         RunHeader header = RunHeaders.of(info, info.command(), null, CORPUS.toString(), "", one, one,
                 List.of(List.of(), List.of(), List.of()));
-        List<CaseResult> results = new Runner(RunListener.NONE).run(iut, header, one, new ResultSink() {
+        List<CaseResult> results = new Runner(EXPORT_NOT_JUDGED, RunListener.NONE).run(iut, header, one, new ResultSink() {
             @Override
             public void header(RunHeader h) {
             }
