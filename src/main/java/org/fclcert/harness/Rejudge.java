@@ -86,7 +86,9 @@ public final class Rejudge {
             }
             presenter = new Presenter(dialect.get());
         }
-        CaseRunner runner = new CaseRunner(new ReferenceExportCheck(), presenter);
+        // the dialect cases the run sent as written are those the header's implementation reads, as in the run
+        CaseRunner runner = new CaseRunner(new ReferenceExportCheck(), presenter)
+                .readingAs(h.iut() == null ? null : h.iut().spec());
         List<CaseResult> out = new ArrayList<>();
         for (CaseResult recorded : file.results()) {
             Optional<CorpusCase> c = corpus.byId(recorded.id());

@@ -90,7 +90,7 @@ class DialectSemanticsTest {
         probor.set("x", 2);
         probor.evaluate();
         assertEquals(0.8 + 0.4 - 0.8 * 0.4, probor.get("y"), 1e-15);                  // 0.88
-        FunctionBlockInstance sum = load(true, fuzzylite("Ramp 0 2.5", "x is a", "SUM", second));
+        FunctionBlockInstance sum = load(true, fuzzylite("Ramp 0 2.5", "x is a", "UnboundedSum", second));
         sum.set("x", 2);
         sum.evaluate();
         assertEquals(1.2, sum.get("y"), 1e-15);                                          // 0.8 + 0.4, unbounded

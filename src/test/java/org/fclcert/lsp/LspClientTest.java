@@ -371,8 +371,8 @@ class LspClientTest {
     /**
      * In a library's dialect the standard's words come first, then the dialect's own spellings. The expected words
      * are the libraries' own: jFuzzyLogic's FclParser (its jar) has the tokens DMIN, NIPMIN, HAMACHER, DMAX,
-     * NIPMAX, EINSTEIN, PROBOR and COGF; fuzzylite's FCL importer reads the s-norms ASUM, SUM, ESUM (Einstein),
-     * HSUM (Hamacher), DSUM (drastic), NMAX (nilpotent) for ACCU and LM, RM, MM, COGSS besides the standard's.
+     * NIPMAX, EINSTEIN, PROBOR and COGF; fuzzylite's FCL importer reads the s-norms ASUM, ESUM (Einstein),
+     * HSUM (Hamacher), DSUM (drastic), NMAX (nilpotent) and, by its class name, UnboundedSum for ACCU and LM, RM, MM, COGSS besides the standard's.
      */
     @Test
     void completionOffersTheDialectsMethodsToo() throws Exception {
@@ -392,7 +392,7 @@ class LspClientTest {
 
         remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
                 JsonParser.parseString("{\"fclcert\": {\"dialect\": \"fuzzylite\"}}")));
-        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "SUM", "ESUM", "HSUM", "DSUM", "NMAX"),
+        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "UnboundedSum", "ESUM", "HSUM", "DSUM", "NMAX"),
                 complete(block + "    ACCU : "));
         assertEquals(List.of("CoG", "CoGS", "CoA", "LM", "RM", "MM", "COGSS"), complete(defuzzify + "    METHOD : "));
         remote.getWorkspaceService().didChangeConfiguration(new DidChangeConfigurationParams(
@@ -405,7 +405,7 @@ class LspClientTest {
                 JsonParser.parseString("{\"fclcert\": {\"dialect\": \"auto\"}}")));
         String fuzzylite = VALID.replace("    METHOD : CoGS;\n", "    METHOD : CoGS;\n    ACCU : MAX;\n");
         String accu = fuzzylite.substring(0, fuzzylite.indexOf("    ACCU : MAX;\n    RULE") + "    ACCU : ".length());
-        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "SUM", "ESUM", "HSUM", "DSUM", "NMAX"), complete(accu));
+        assertEquals(List.of("MAX", "BSUM", "NSUM", "ASUM", "UnboundedSum", "ESUM", "HSUM", "DSUM", "NMAX"), complete(accu));
     }
 
     private List<? extends TextEdit> format(String uri) throws Exception {

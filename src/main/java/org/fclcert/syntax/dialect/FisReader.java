@@ -352,7 +352,7 @@ public final class FisReader implements DialectReader {
                 t.error(i, DialectCode.SYNTAX, "AggMethod '" + agg + "' is none of " + String.join(", ",
                         S_NORMS.keySet().stream().sorted().toList()));
             } else {
-                b.append(" ACCU : ").append(a).append(';');
+                b.append(" ACCU : ").append(FuzzyliteDialect.accumulationWord(a)).append(';');
             }
         }
         b.append(" DEFAULT := nan;");

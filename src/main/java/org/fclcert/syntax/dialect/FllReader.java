@@ -227,7 +227,7 @@ public final class FllReader implements DialectReader {
             t.error(l.index, DialectCode.SYNTAX, "'" + l.value + "' is not " + what + " of fuzzylite ("
                     + String.join(", ", names.keySet().stream().sorted().toList()) + ")");
         } else {
-            t.put(l.index, keyword + " : " + n + ";");
+            t.put(l.index, keyword + " : " + (keyword.equals("ACCU") ? FuzzyliteDialect.accumulationWord(n) : n) + ";");
         }
     }
 

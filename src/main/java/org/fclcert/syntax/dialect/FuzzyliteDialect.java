@@ -176,6 +176,14 @@ class FuzzyliteDialect extends LibraryDialect {
         return "COG, COA, LM, RM, MM, COGS, COGSS";
     }
 
+    /**
+     * The word fuzzylite's FCL reads for the accumulation fclcert's tables call {@code name} ({@code SUM}: the class
+     * name {@code UnboundedSum}, its FCL having no word for it); the FLL and FIS readers restate ACCU with it.
+     */
+    static String accumulationWord(String name) {
+        return name.equals("SUM") ? "UnboundedSum" : name;
+    }
+
     @Override
     Optional<AccumulationMethod> accumulation(String upper) {
         return Optional.ofNullable(switch (upper) {
