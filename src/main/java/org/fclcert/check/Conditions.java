@@ -36,6 +36,33 @@ final class Conditions {
         return out;
     }
 
+    /**
+     * The largest {@link Node#parenthesisDepth} of the condition's nodes, without making the nodes (a large block asks
+     * this of every rule, and most rules nest no parentheses at all).
+     */
+    static int parenthesisDepth(Condition root) {
+        if (isSubcondition(root)) {
+            return 0;
+        }
+        int deepest = 0;
+        Deque<Condition> stack = new ArrayDeque<>();
+        Deque<Integer> depths = new ArrayDeque<>();
+        stack.push(root);
+        depths.push(0);
+        while (!stack.isEmpty()) {
+            Condition c = stack.pop();
+            int depth = depthOf(c, depths.pop());
+            deepest = Math.max(deepest, depth);
+            for (Condition child : children(c)) {
+                if (!isSubcondition(child)) {     // a subcondition is as deep as its parent
+                    stack.push(child);
+                    depths.push(depth);
+                }
+            }
+        }
+        return deepest;
+    }
+
     /** The subconditions ({@code v IS t} and bare variables) of the condition, in source order. */
     static List<Condition> subconditions(Condition root) {
         if (isSubcondition(root)) {
@@ -46,10 +73,19 @@ final class Conditions {
         if (operands != null && operands.stream().allMatch(Conditions::isSubcondition)) {
             return operands;            // or one AND (OR) over subconditions
         }
+        // the order of nodes(root), without making a node for each
         List<Condition> out = new ArrayList<>();
-        for (Node node : nodes(root)) {
-            if (isSubcondition(node.condition())) {
-                out.add(node.condition());
+        Deque<Condition> stack = new ArrayDeque<>();
+        stack.push(root);
+        while (!stack.isEmpty()) {
+            Condition c = stack.pop();
+            if (isSubcondition(c)) {
+                out.add(c);
+                continue;
+            }
+            List<Condition> children = children(c);
+            for (int i = children.size() - 1; i >= 0; i--) {
+                stack.push(children.get(i));
             }
         }
         return out;

@@ -1,9 +1,7 @@
 package org.fclcert.check;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Deque;
 import java.util.List;
 import java.util.Optional;
 import java.util.TreeSet;
@@ -401,37 +399,53 @@ public final class CoverageGaps {
 
         /** Post-order without recursion (conditions may be nested very deep). */
         Optional<int[]> compile(Condition root) {
-            List<Integer> out = new ArrayList<>();
-            Deque<Object[]> stack = new ArrayDeque<>();
-            stack.push(new Object[] {root, false});
-            while (!stack.isEmpty()) {
-                Object[] frame = stack.pop();
-                Condition c = (Condition) frame[0];
-                boolean expanded = (Boolean) frame[1];
+            // no boxing, no frame objects: a large block compiles tens of thousands of conditions
+            int[] out = new int[16];
+            int size = 0;
+            Condition[] stack = new Condition[16];
+            boolean[] expandedAt = new boolean[16];
+            int top = 0;
+            stack[top] = root;
+            expandedAt[top++] = false;
+            while (top > 0) {
+                Condition c = stack[--top];
+                boolean expanded = expandedAt[top];
+                stack[top] = null;
+                if (out.length - size < 2) {
+                    out = Arrays.copyOf(out, out.length * 2);
+                }
                 if (c instanceof Condition.Parenthesized p) {
-                    stack.push(new Object[] {p.inner(), false});
+                    stack[top] = p.inner();
+                    expandedAt[top++] = false;
                 } else if (c instanceof Condition.TermSubcondition || c instanceof Condition.VariableSubcondition) {
                     int leaf = leaf(c);
                     if (leaf < 0) {
                         return Optional.empty();
                     }
-                    out.add(leaf);
+                    out[size++] = leaf;
                 } else if (expanded) {
                     if (c instanceof Condition.Not) {
-                        out.add(NOT);
+                        out[size++] = NOT;
                     } else {
-                        out.add(c instanceof Condition.And ? AND : OR);
-                        out.add(operands(c).size());
+                        out[size++] = c instanceof Condition.And ? AND : OR;
+                        out[size++] = operands(c).size();
                     }
                 } else {
-                    stack.push(new Object[] {c, true});
                     List<Condition> operands = operands(c);
+                    if (stack.length - top < operands.size() + 1) {
+                        int room = Math.max(stack.length * 2, top + operands.size() + 1);
+                        stack = Arrays.copyOf(stack, room);
+                        expandedAt = Arrays.copyOf(expandedAt, room);
+                    }
+                    stack[top] = c;
+                    expandedAt[top++] = true;
                     for (int i = operands.size() - 1; i >= 0; i--) {
-                        stack.push(new Object[] {operands.get(i), false});
+                        stack[top] = operands.get(i);
+                        expandedAt[top++] = false;
                     }
                 }
             }
-            return Optional.of(out.stream().mapToInt(Integer::intValue).toArray());
+            return Optional.of(Arrays.copyOf(out, size));
         }
 
         private static List<Condition> operands(Condition c) {
@@ -557,16 +571,37 @@ public final class CoverageGaps {
         }
 
         private boolean usedBare(String variable) {
-            for (RuleBlock rb : block.ruleBlocks()) {
-                for (Rule r : rb.rules()) {
-                    for (Conditions.Node n : Conditions.nodes(r.condition())) {
-                        if (n.condition() instanceof Condition.VariableSubcondition v && Names.same(v.variable(), variable)) {
-                            return true;
+            if (bare == null) {
+                // one walk for all axes (each used to walk every rule of the block): the bare variables' names
+                bare = new java.util.HashMap<>();
+                Scope scope = Scope.of(block);
+                for (RuleBlock rb : block.ruleBlocks()) {
+                    for (Rule r : rb.rules()) {
+                        for (Condition c : scope.subconditions(r)) {
+                            if (c instanceof Condition.VariableSubcondition v) {
+                                List<String> spelt = bare.computeIfAbsent(folded(v.variable()), k -> new ArrayList<>());
+                                if (!spelt.contains(v.variable())) {
+                                    spelt.add(v.variable());
+                                }
+                            }
                         }
                     }
                 }
             }
-            return false;
+            List<String> spelt = bare.get(folded(variable));
+            return spelt != null && spelt.stream().anyMatch(n -> Names.same(n, variable));
+        }
+
+        /** The names used as bare-variable subconditions anywhere in the block, by {@link #folded}, once asked for. */
+        private java.util.Map<String, List<String>> bare;
+
+        /** A name with each character folded as {@link String#equalsIgnoreCase} folds it (a hash key for {@link Names#same}). */
+        private static String folded(String name) {
+            char[] c = name.toCharArray();
+            for (int i = 0; i < c.length; i++) {
+                c[i] = Character.toLowerCase(Character.toUpperCase(c[i]));
+            }
+            return new String(c);
         }
     }
 

@@ -31,7 +31,7 @@ public final class NoUndefinedTerms implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
-        for (TermUse use : TermUse.of(scope)) {
+        for (TermUse use : scope.termUses()) {
             check(scope, use, sink);
         }
     }

@@ -39,20 +39,25 @@ public final class NoUndefinedVariables implements FunctionBlockRule {
             }
         }
         for (OperandUse use : scope.operandUses()) {
-            if (use.operand() instanceof VariableRef ref) {
+            if (use.operand() instanceof VariableRef ref && !scope.declared(ref.name())) {
                 need(scope, ref.name(), ref.location(), use::where, "VAR_INPUT", sink);
             }
         }
     }
 
     private void checkRule(Scope scope, Rule rule, DiagnosticSink sink) {
+        // the message's pieces are made only for an undeclared name (most rules of a large block have none)
         for (Condition c : scope.subconditions(rule)) {
             String variable = c instanceof Condition.TermSubcondition t
                     ? t.variable() : ((Condition.VariableSubcondition) c).variable();
-            need(scope, variable, c.location(), () -> Describe.subcondition(c), "VAR_INPUT", sink);
+            if (!scope.declared(variable)) {
+                need(scope, variable, c.location(), () -> Describe.subcondition(c), "VAR_INPUT", sink);
+            }
         }
         for (Subconclusion s : rule.conclusion()) {
-            need(scope, s.variable(), s.location(), () -> Describe.subconclusion(s), "VAR_OUTPUT", sink);
+            if (!scope.declared(s.variable())) {
+                need(scope, s.variable(), s.location(), () -> Describe.subconclusion(s), "VAR_OUTPUT", sink);
+            }
         }
     }
 

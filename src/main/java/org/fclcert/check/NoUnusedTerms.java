@@ -36,16 +36,20 @@ public final class NoUnusedTerms implements FunctionBlockRule {
         Scope scope = Scope.of(block);
         // per FUZZIFY or DEFUZZIFY block (by identity), which of its terms some rule names: no name keys to build
         Map<Object, boolean[]> used = new IdentityHashMap<>();
+        // a use spelt by the very Strings of one already marked marks nothing new (the reader shares one String per
+        // spelling, so a large block's uses are a few spellings): skipped by identity, before any name lookup
+        Map<String, Map<String, Boolean>> markedIn = new IdentityHashMap<>();
+        Map<String, Map<String, Boolean>> markedOut = new IdentityHashMap<>();
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : scope.subconditions(rule)) {
-                    if (c instanceof Condition.TermSubcondition t && !t.any()) {
+                    if (c instanceof Condition.TermSubcondition t && !t.any() && first(markedIn, t.variable(), t.term())) {
                         String[] meant = scope.meant(t.variable(), t.term(), true);
                         scope.fuzzification(meant[0]).ifPresent(f -> mark(used, f, f.terms(), meant[1]));
                     }
                 }
                 for (Subconclusion s : rule.conclusion()) {
-                    if (s.term().isPresent()) {
+                    if (s.term().isPresent() && first(markedOut, s.variable(), s.term().get())) {
                         String[] meant = scope.meant(s.variable(), s.term().get(), false);
                         scope.defuzzification(meant[0]).ifPresent(d -> mark(used, d, d.terms(), meant[1]));
                     }
@@ -64,6 +68,11 @@ public final class NoUnusedTerms implements FunctionBlockRule {
                 report(d.variable(), d.terms(), used.get(d), "subconclusion", sink);
             }
         }
+    }
+
+    /** True the first time this pair of Strings (by identity) is seen. */
+    private static boolean first(Map<String, Map<String, Boolean>> seen, String variable, String term) {
+        return seen.computeIfAbsent(variable, v -> new IdentityHashMap<>()).put(term, Boolean.TRUE) == null;
     }
 
     /** Marks every term of the block named {@code term} (a repeated term name is its own error). */

@@ -29,6 +29,7 @@ final class Scope {
     /** Per rule (by identity): its subconditions, walked once per check run rather than once per rule class. */
     private final Map<Rule, List<Condition>> subconditions = new IdentityHashMap<>();
     private List<OperandUse> operandUses;
+    private List<TermUse> termUses;
     private String hashedName;
     private int hashedHash;
 
@@ -126,6 +127,14 @@ final class Scope {
         }
     }
 
+    /** Every named-term use of the block ({@link TermUse#of}), made once for the two rules that judge them. */
+    List<TermUse> termUses() {
+        if (termUses == null) {
+            termUses = TermUse.of(this);
+        }
+        return termUses;
+    }
+
     /** Every operand of the block ({@link OperandUse#all}), made once for the five rules that look at them. */
     List<OperandUse> operandUses() {
         if (operandUses == null) {
@@ -162,6 +171,16 @@ final class Scope {
 
     Optional<Variable> variable(String name) {
         return Optional.ofNullable(variables.get(name));
+    }
+
+    /** The variable declared by that name, or null (no Optional: asked of every subcondition of a large block). */
+    Variable declaredVariable(String name) {
+        return variables.get(name);
+    }
+
+    /** Whether the variable has a FUZZIFY block. */
+    boolean fuzzified(String variable) {
+        return fuzzifications.containsKey(variable);
     }
 
     boolean declared(String name) {

@@ -34,21 +34,22 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
         program.dialectFeatures().stream().filter(u -> u.feature() == org.fclcert.model.Feature.O_OUTPUT_CONDITION
                 || u.feature() == org.fclcert.model.Feature.O_OUTPUT_VALUE_CONDITION).forEach(u -> tolerated.add(u.location()));
         for (FunctionBlock fb : program.functionBlocks()) {
-            check(fb, c -> !tolerated.contains(c.location()), sink);
+            check(fb, tolerated.isEmpty() ? null : c -> !tolerated.contains(c.location()), sink);
         }
     }
 
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
-        check(block, c -> true, sink);
+        check(block, null, sink);
     }
 
+    /** {@code judged}: null when every subcondition is judged. */
     private void check(FunctionBlock block, java.util.function.Predicate<Condition> judged, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
         for (RuleBlock rb : block.ruleBlocks()) {
             for (Rule rule : rb.rules()) {
                 for (Condition c : scope.subconditions(rule)) {
-                    if (judged.test(c)) {
+                    if (judged == null || judged.test(c)) {
                         check(scope, c, sink);
                     }
                 }
@@ -58,7 +59,10 @@ public final class SubconditionsOnInputs implements FunctionBlockRule {
 
     private void check(Scope scope, Condition c, DiagnosticSink sink) {
         if (c instanceof Condition.TermSubcondition t) {
-            scope.variable(t.variable()).ifPresent(v -> checkTerm(scope, t, v, sink));
+            Variable v = scope.declaredVariable(t.variable());
+            if (v != null && (v.kind() != VariableKind.INPUT || !scope.fuzzified(v.name()))) {
+                checkTerm(scope, t, v, sink);
+            }
         } else if (c instanceof Condition.VariableSubcondition bare) {
             scope.variable(bare.variable()).filter(v -> v.kind() == VariableKind.OUTPUT).ifPresent(v ->
                     sink.report(finding(c.location(), bare.variable() + ": " + Describe.variable(v)

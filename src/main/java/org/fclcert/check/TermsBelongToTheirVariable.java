@@ -25,7 +25,7 @@ public final class TermsBelongToTheirVariable implements FunctionBlockRule {
     @Override
     public void check(FunctionBlock block, DiagnosticSink sink) {
         Scope scope = Scope.of(block);
-        for (TermUse use : TermUse.of(scope)) {
+        for (TermUse use : scope.termUses()) {
             check(scope, use, sink);
         }
     }

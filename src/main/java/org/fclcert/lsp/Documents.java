@@ -18,16 +18,17 @@ import org.fclcert.syntax.dialect.DialectReaders;
  */
 final class Documents {
     private static final class Open {
-        String text;
+        /** The text with its line starts, kept from one version to the next (an edit moves them). */
+        SourceText source;
         int version;
         Snapshot snapshot;
-        /** auto's choice, while it is known to hold for {@link #text} (edits that cannot change it keep it). */
+        /** auto's choice, while it is known to hold for the text (edits that cannot change it keep it). */
         Optional<DialectReaders.Detection> detection = Optional.empty();
         ScheduledFuture<?> pending;
         String shownNote;
 
         Open(String text, int version) {
-            this.text = text;
+            this.source = new SourceText(text);
             this.version = version;
         }
     }
@@ -46,23 +47,22 @@ final class Documents {
         if (d == null) {
             return false;
         }
-        String text = d.text;
+        SourceText src = d.source;
         Optional<DialectReaders.Detection> detection = d.detection;
         for (TextDocumentContentChangeEvent c : changes) {
             String inserted = c.getText() == null ? "" : c.getText();
             if (c.getRange() == null) {
-                text = inserted;
+                src = new SourceText(inserted);
                 detection = Optional.empty();
             } else {
-                SourceText src = new SourceText(text);
                 int from = src.offset(c.getRange().getStart());
                 int to = Math.max(from, src.offset(c.getRange().getEnd()));
-                String before = text;
+                String before = src.text();
                 detection = detection.filter(k -> DialectReaders.kept(k, before, from, to, inserted));
-                text = text.substring(0, from) + inserted + text.substring(to);
+                src = src.edited(from, to, inserted);
             }
         }
-        d.text = text;
+        d.source = src;
         d.detection = detection;
         d.version = version;
         d.snapshot = null;
@@ -76,7 +76,7 @@ final class Documents {
     /** The snapshot of a document's current version, read now if it is not yet. */
     Optional<Snapshot> snapshot(String uri) {
         Open d;
-        String text;
+        SourceText text;
         int version;
         Optional<Dialect> in;
         Optional<DialectReaders.Detection> known;
@@ -88,7 +88,7 @@ final class Documents {
             if (d.snapshot != null) {
                 return Optional.of(d.snapshot);
             }
-            text = d.text;
+            text = d.source;
             version = d.version;
             in = dialect;
             known = d.detection;
@@ -96,7 +96,7 @@ final class Documents {
         // read outside the lock: edits keep arriving while a large text is checked
         Snapshot s = Snapshot.read(uri, version, text, in, known);
         synchronized (this) {
-            if (open.get(uri) == d && d.version == version && d.text == text && dialect.equals(in)) {
+            if (open.get(uri) == d && d.version == version && d.source == text && dialect.equals(in)) {
                 d.snapshot = s;
                 d.detection = s.detection();
             }

@@ -28,11 +28,11 @@ final class Snapshot {
     private final Optional<DialectReaders.Detection> detection;
     private volatile Outline outline;
 
-    private Snapshot(String uri, int version, String text, String sourceName, Dialect dialect, String dialectNote,
+    private Snapshot(String uri, int version, SourceText source, String sourceName, Dialect dialect, String dialectNote,
             Analysis analysis, Optional<Program> program, Optional<DialectReaders.Detection> detection) {
         this.uri = uri;
         this.version = version;
-        this.source = new SourceText(text);
+        this.source = source;
         this.sourceName = sourceName;
         this.dialect = dialect;
         this.dialectNote = dialectNote;
@@ -47,6 +47,13 @@ final class Snapshot {
      */
     static Snapshot read(String uri, int version, String text, Optional<Dialect> dialect,
             Optional<DialectReaders.Detection> known) {
+        return read(uri, version, new SourceText(text), dialect, known);
+    }
+
+    /** The same of a text whose line starts are known. */
+    static Snapshot read(String uri, int version, SourceText source, Optional<Dialect> dialect,
+            Optional<DialectReaders.Detection> known) {
+        String text = source.text();
         String name = sourceName(uri);
         FclReader reader;
         Dialect read;
@@ -65,7 +72,7 @@ final class Snapshot {
         }
         ReadResult result = reader.read(name, text);
         Analysis analysis = Analysis.of(result);
-        return new Snapshot(uri, version, text, name, read, note, analysis,
+        return new Snapshot(uri, version, source, name, read, note, analysis,
                 result.program().or(result::repaired), Optional.ofNullable(detection));
     }
 

@@ -27,8 +27,46 @@ final class SourceText {
         this.lineStarts = Arrays.copyOf(starts, n);
     }
 
+    private SourceText(String text, int[] lineStarts) {
+        this.text = text;
+        this.lineStarts = lineStarts;
+    }
+
+    /**
+     * The text with the characters {@code from} to {@code to} replaced by {@code inserted}: equal to a SourceText made
+     * of the new text, but its line starts moved rather than found again (a keystroke in a 1 MB text changes a few).
+     */
+    SourceText edited(int from, int to, String inserted) {
+        String edited = new StringBuilder(text.length() - (to - from) + inserted.length())
+                .append(text, 0, from).append(inserted).append(text, to, text.length()).toString();
+        int[] starts = new int[lineStarts.length + inserted.length()];
+        int n = 0;
+        int i = 0;
+        // a line start s follows the line break at s - 1: kept before the edit, dropped inside it, moved after it
+        for (; i < lineStarts.length && lineStarts[i] <= from; i++) {
+            starts[n++] = lineStarts[i];
+        }
+        for (int k = 0; k < inserted.length(); k++) {
+            if (inserted.charAt(k) == '\n') {
+                starts[n++] = from + k + 1;
+            }
+        }
+        int shift = inserted.length() - (to - from);
+        for (; i < lineStarts.length; i++) {
+            if (lineStarts[i] - 1 >= to) {
+                starts[n++] = lineStarts[i] + shift;
+            }
+        }
+        return new SourceText(edited, Arrays.copyOf(starts, n));
+    }
+
     String text() {
         return text;
+    }
+
+    /** The line starts (for the test that holds {@link #edited} to a fresh count). */
+    int[] lineStarts() {
+        return lineStarts.clone();
     }
 
     int lineCount() {

@@ -51,11 +51,30 @@ final class CommentPlaces {
         if (body.indexOf("(*") < 0) {
             return program;
         }
-        return program.withComments(new CommentPlaces(items(program)).comments(program.sourceName(), body));
+        return program.withComments(new CommentPlaces(items(program)).comments(program.sourceName(),
+                new FclTokenSource(body, program.sourceName())));
     }
 
-    private List<Comment> comments(String sourceName, String body) {
-        FclTokenSource lexer = new FclTokenSource(body, sourceName);
+    /**
+     * The same from the tokens the direct parser kept as it read {@code body} ({@link DirectParser#read}): every
+     * comment with the tokens on either side, the tokens that open and close OPTIONS, and EOF. The walk below
+     * decides from those alone, so it gives what it gives over every token.
+     */
+    static Program attach(Program program, String body, List<Token> aroundComments) {
+        if (body.indexOf("(*") < 0) {
+            return program;
+        }
+        return program.withComments(new CommentPlaces(items(program)).comments(program.sourceName(),
+                new org.antlr.v4.runtime.ListTokenSource(aroundComments)));
+    }
+
+    /** Whether a token changes the walk's "inside OPTIONS" (the only state it keeps besides the token before). */
+    static boolean changesOptions(int type) {
+        return type == FclLexer.OPTIONS || type == FclLexer.OPTION || type == FclLexer.END_OPTIONS
+                || type == FclLexer.END_OPTION;
+    }
+
+    private List<Comment> comments(String sourceName, org.antlr.v4.runtime.TokenSource lexer) {
         List<Comment> out = new ArrayList<>();
         List<Token> pending = new ArrayList<>();
         Token previous = null;

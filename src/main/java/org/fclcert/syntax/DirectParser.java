@@ -89,6 +89,26 @@ final class DirectParser {
         return program(sourceName, new FclTokenSource(body, sourceName), options, diagnostics);
     }
 
+    /** A program read from a text, with the tokens {@link CommentPlaces} needs to place its comments. */
+    record Read(Program program, List<Token> aroundComments) {
+    }
+
+    /**
+     * {@link #program(String, String, ReaderOptions, ReaderDiagnostics)}, keeping the tokens around the text's
+     * comments as they pass, so that the comments are placed without lexing the text again.
+     */
+    static Optional<Read> read(String sourceName, String body, ReaderOptions options,
+            ReaderDiagnostics diagnostics) {
+        try {
+            DirectParser parser = new DirectParser(new FclTokenSource(body, sourceName), sourceName, options,
+                    diagnostics);
+            parser.aroundComments = new ArrayList<>();
+            return Optional.of(new Read(parser.program(), parser.aroundComments));
+        } catch (RuntimeException declinedOrUnforeseen) {
+            return Optional.empty();    // as program(...) below
+        }
+    }
+
     /**
      * The same from tokens already made, as Fcl.g4's lexer makes them (comments included, white space not), ending
      * with EOF: the one-token repair's repaired tokens ({@link SyntaxRepair}), read without a parse tree.
@@ -105,10 +125,41 @@ final class DirectParser {
 
     // ---------------------------------------------------------------- tokens
 
+    /**
+     * When asked for ({@link #read}): every comment, the token before and the token after each, every token of
+     * OPTIONS and END_OPTIONS (which tell a comment inside an OPTIONS block) and EOF, in order: what
+     * {@link CommentPlaces} looks at when it walks all the tokens.
+     */
+    private List<Token> aroundComments;
+    /** The last token that is no comment, and whether a comment came after it. */
+    private Token lastToken;
+    private boolean commentSince;
+
+    /** Keeps {@link #t} in {@link #aroundComments} where CommentPlaces needs it. */
+    private void keep() {
+        if (type == FclLexer.COMMENT) {
+            if (lastToken != null && !commentSince
+                    && (aroundComments.isEmpty() || aroundComments.get(aroundComments.size() - 1) != lastToken)) {
+                aroundComments.add(lastToken);
+            }
+            aroundComments.add(t);
+            commentSince = true;
+            return;
+        }
+        if (commentSince || type == Token.EOF || CommentPlaces.changesOptions(type)) {
+            aroundComments.add(t);
+        }
+        commentSince = false;
+        lastToken = t;
+    }
+
     private void next() {
         while (true) {
             t = lexer.nextToken();
             type = t.getType();
+            if (aroundComments != null) {
+                keep();
+            }
             if (type != FclLexer.COMMENT) {
                 break;
             }

@@ -70,7 +70,8 @@ public final class StrictReader implements FclReader {
             Outcome outcome = readProgram(sourceName, text, diagnostics, options, directPath);
             String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
             Optional<Program> program = diagnostics.hasErrors() ? Optional.empty()
-                    : outcome.program().map(p -> CommentPlaces.attach(p, body));
+                    : outcome.program().map(p -> outcome.aroundComments() != null
+                            ? CommentPlaces.attach(p, body, outcome.aroundComments()) : CommentPlaces.attach(p, body));
             return new ReadResult(program, diagnostics.finish(), outcome.repaired());
         } catch (RuntimeException | StackOverflowError e) {
             // A bug in fclcert, not in the program: still a diagnostic, never a stack trace.
@@ -82,8 +83,12 @@ public final class StrictReader implements FclReader {
     }
 
     /** The program read, and after syntax errors the program of the repaired text ({@link SyntaxRepair}). */
-    private record Outcome(Optional<Program> program, Optional<Program> repaired) {
+    private record Outcome(Optional<Program> program, Optional<Program> repaired, List<Token> aroundComments) {
         static final Outcome NONE = new Outcome(Optional.empty(), Optional.empty());
+
+        Outcome(Optional<Program> program, Optional<Program> repaired) {
+            this(program, repaired, null);
+        }
     }
 
     private static Outcome readProgram(String sourceName, String text, ReaderDiagnostics diagnostics,
@@ -93,9 +98,11 @@ public final class StrictReader implements FclReader {
         if (directPath && options.tokenFilter() == ReaderOptions.TokenFilter.NONE) {
             // most texts have no error: read those without a parse tree, the rest as below
             ReaderDiagnostics.Mark mark = diagnostics.mark();
-            Optional<Program> direct = DirectParser.program(sourceName, body, options, diagnostics);
+            // its tokens around the comments are kept, so that placing the comments needs no second lexing
+            Optional<DirectParser.Read> direct = DirectParser.read(sourceName, body, options, diagnostics);
             if (direct.isPresent()) {
-                return new Outcome(direct, Optional.empty());
+                return new Outcome(Optional.of(direct.get().program()), Optional.empty(),
+                        direct.get().aroundComments());
             }
             diagnostics.rollback(mark);
         }

@@ -49,6 +49,26 @@ final class SyntaxRepair {
                     return direct;
                 }
             }
+            if (attempt == 0) {
+                // the tokens as read had a syntax error, so this attempt stops at it: found without a tree or a model
+                // (the repair depends only on the parser's state there); should it parse to the end, the attempt below
+                // is made as before
+                Optional<Repair> first = firstRepair(current);
+                if (first.isPresent()) {
+                    Repair r = first.get();
+                    if (r.index >= current.size()) {
+                        return Optional.empty();
+                    }
+                    if (r.insert == 0) {
+                        current.remove(r.index);
+                        lowestNext = r.index;
+                    } else {
+                        current.add(r.index, conjured(r.insert, current, r.index));
+                        lowestNext = r.index + 1;
+                    }
+                    continue;
+                }
+            }
             CommonTokenStream stream = new CommonTokenStream(new ListTokenSource(current));
             FclParser parser = new FclParser(stream);
             parser.removeErrorListeners();
@@ -82,6 +102,27 @@ final class SyntaxRepair {
             }
             scratch.warnings().forEach(warningsTo::keepWarning);
             return Optional.of(program);
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * The repair of the first mismatch of the tokens, parsed as each attempt parses them but without building the parse
+     * tree or the model; empty when they parse to the end, or when the mismatch has no one-token repair is also
+     * answered by the attempt (which then fails the same way).
+     */
+    private static Optional<Repair> firstRepair(List<Token> tokens) {
+        FclParser parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
+        parser.removeErrorListeners();
+        parser.getInterpreter().setPredictionMode(PredictionMode.LL);
+        parser.setErrorHandler(new FindRepair());
+        parser.setBuildParseTree(false);
+        try {
+            parser.program();
+        } catch (Repair r) {
+            return Optional.of(r);
+        } catch (ParseCancellationException | RecognitionException e) {
+            return Optional.empty();
         }
         return Optional.empty();
     }

@@ -118,8 +118,16 @@ final class DialectParser {
     /** jFuzzyLogic: ranges written after a declaration, by variable key. */
     final java.util.Map<String, Range> declaredRanges = new java.util.HashMap<>();
 
-    private DialectParser(String source, LibraryDialect dialect, DialectLexer lexer) {
+    /** Where a line and column of the text read are in the file (a restatement's places are the file's, see EngineText). */
+    interface Placer {
+        SourceLocation at(int line, int column);
+    }
+
+    private final Placer placer;
+
+    private DialectParser(String source, LibraryDialect dialect, DialectLexer lexer, Placer placer) {
         this.source = source;
+        this.placer = placer;
         this.dialect = dialect;
         this.library = dialect.library();
         this.tokens = lexer.tokens;
@@ -137,10 +145,16 @@ final class DialectParser {
 
     /** Reads a text in the dialect; an internal error becomes a located diagnostic (FCL-S999), never an exception. */
     static ReadResult read(String source, String text, LibraryDialect dialect) {
+        return read(source, text, dialect, null);
+    }
+
+    /** The same, every place of the model and of the diagnostics put where {@code placer} says (none: as written). */
+    static ReadResult read(String source, String text, LibraryDialect dialect, Placer placer) {
         String name = source == null ? "<input>" : source;
         DialectParser parser = null;
         try {
-            parser = new DialectParser(name, dialect, DialectLexer.lex(text == null ? "" : text, dialect.lexing()));
+            parser = new DialectParser(name, dialect, DialectLexer.lex(text == null ? "" : text, dialect.lexing()),
+                    placer);
             Program program = parser.program();
             List<Diagnostic> list = new ArrayList<>(parser.diagnostics);
             list.sort(Comparator.comparing(Diagnostic::location));
@@ -163,7 +177,7 @@ final class DialectParser {
     // ---------------------------------------------------------------- diagnostics and tokens
 
     SourceLocation at(int line, int column) {
-        return SourceLocation.of(source, line, column);
+        return placer == null ? SourceLocation.of(source, line, column) : placer.at(line, column);
     }
 
     SourceLocation at(Token t) {

@@ -20,7 +20,11 @@ import org.fclcert.syntax.ReadResult;
  * that says what a fuzzylite construct means in the model. What is only FCL's way of writing a thing (its
  * comments, rule semicolons, where ACCU stands, block names) is the restatement's, not the file's, so those Open
  * Level features are left out. Every place keeps its line; the reader's diagnostics are put at the line's first
- * written column, while the model's places (and so the checks' diagnostics) keep the restatement's columns.
+ * written column. The model's places (and so the checks' diagnostics) are put in the file too ({@link #place}): a
+ * place in a line's own restatement at the line's first written column plus its offset in the restatement, never past
+ * the line's end; a place in text the restatement adds (the END_… closing the section before, the declarations of
+ * the variables) at the first written column of the line it stands for. So a place is always on its line of the file,
+ * not at a column of the longer restated line.
  */
 final class EngineText {
     /** Features of FCL's spelling, never of the engine file: the restatement writes them, the file does not. */
@@ -37,6 +41,17 @@ final class EngineText {
     private final List<Diagnostic> warnings = new ArrayList<>();
     private String end = "";
     private String pending = "";
+    /** Added text waiting for the next line put ({@link #beforeNext}), with the lines of the file it stands for. */
+    private final List<Piece> pendingPieces = new ArrayList<>();
+    /** Per restated line, its pieces in order: where each starts and ends in the line, and what it stands for. */
+    private final List<List<Piece>> pieces;
+
+    /**
+     * A stretch of a restated line: {@code from} to {@code to} (0-based, exclusive); {@code own} when it restates the
+     * line itself, else added text standing for line {@code target} (0-based).
+     */
+    private record Piece(int from, int to, boolean own, int target) {
+    }
 
     /** A restatement of {@code text}, whose lines start empty. */
     EngineText(String source, String text) {
@@ -44,6 +59,10 @@ final class EngineText {
         this.lines = (text == null ? "" : text).lines().toList();
         this.fcl = new String[lines.size()];
         java.util.Arrays.fill(fcl, "");
+        this.pieces = new ArrayList<>();
+        for (int i = 0; i < lines.size(); i++) {
+            pieces.add(new ArrayList<>());
+        }
     }
 
     /** The file's lines (0-based here, 1-based in diagnostics). */
@@ -51,24 +70,52 @@ final class EngineText {
         return lines;
     }
 
-    /** Appends FCL text to line {@code index} (0-based). */
+    /** Appends FCL text to line {@code index} (0-based), the restatement of that line. */
     void put(int index, String text) {
+        put(index, "", text);
+    }
+
+    /**
+     * Appends to line {@code index} (0-based) FCL text the restatement adds there ({@code added}, such as the END_…
+     * of the section before), then the restatement of the line itself.
+     */
+    void put(int index, String added, String text) {
         if (!pending.isEmpty()) {
-            text = pending + " " + text;
+            for (Piece p : pendingPieces) {
+                append(index, pending.substring(p.from(), p.to()), false, p.target() < 0 ? index : p.target());
+            }
             pending = "";
+            pendingPieces.clear();
         }
+        if (!added.isBlank()) {
+            append(index, added.strip(), false, index);
+        }
+        append(index, text, true, index);
+    }
+
+    private void append(int index, String text, boolean own, int target) {
+        int from = fcl[index].isEmpty() ? 0 : fcl[index].length() + 1;
         fcl[index] = fcl[index].isEmpty() ? text : fcl[index] + " " + text;
+        pieces.get(index).add(new Piece(from, fcl[index].length(), own, target));
     }
 
     /** FCL text that goes before the next text put on a line (a statement that must not share its line). */
     void beforeNext(String text) {
+        beforeNext(text, -1);
+    }
+
+    /** The same, standing for line {@code target} (0-based; -1: for the line it is put on). */
+    void beforeNext(String text, int target) {
+        int from = pending.isEmpty() ? 0 : pending.length() + 1;
         pending = pending.isEmpty() ? text : pending + " " + text;
+        pendingPieces.add(new Piece(from, pending.length(), false, target));
     }
 
     /** FCL text after the last line (the closing keywords). */
     void end(String text) {
         String all = pending.isEmpty() ? text : pending + " " + text;
         pending = "";
+        pendingPieces.clear();
         end = end.isEmpty() ? all : end + " " + all;
     }
 
@@ -84,6 +131,27 @@ final class EngineText {
 
     boolean failed() {
         return !errors.isEmpty();
+    }
+
+    /**
+     * Where a place of the restatement (1-based line and column) is in the file: see the class comment. The text after
+     * the last line (the closing keywords) stands for the last line.
+     */
+    SourceLocation place(int line, int column) {
+        if (line < 1 || line > lines.size()) {
+            return at(Math.max(1, Math.min(line, lines.size())));
+        }
+        SourceLocation start = at(line);
+        for (Piece p : pieces.get(line - 1)) {
+            if (column - 1 >= p.from() && column - 1 < p.to()) {
+                if (!p.own()) {
+                    return at(p.target() + 1);
+                }
+                int last = Math.max(start.column(), lines.get(line - 1).stripTrailing().length());
+                return SourceLocation.of(source, line, Math.min(last, start.column() + column - 1 - p.from()));
+            }
+        }
+        return start;
     }
 
     private SourceLocation at(int line) {
@@ -112,7 +180,7 @@ final class EngineText {
             sorted.sort(Comparator.comparing(Diagnostic::location));
             return new ReadResult(Optional.empty(), sorted);
         }
-        ReadResult r = DialectParser.read(source, fcl(), FUZZYLITE);
+        ReadResult r = DialectParser.read(source, fcl(), FUZZYLITE, this::place);
         List<Diagnostic> located = new ArrayList<>(r.diagnostics().stream()
                 .map(d -> new Diagnostic(at(Math.min(d.location().line(), lines.size())), d.severity(),
                         d.diagnosticCode(), d.message())).toList());

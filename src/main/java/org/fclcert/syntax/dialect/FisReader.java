@@ -105,7 +105,7 @@ public final class FisReader implements DialectReader {
     }
 
     /** One variable of the file: its name and its terms' names, in order. */
-    private record Variable(String name, List<String> terms, List<String> kinds) {
+    private record Variable(String name, List<String> terms, List<String> kinds, int line) {
     }
 
     private static String unquote(String v) {
@@ -129,7 +129,7 @@ public final class FisReader implements DialectReader {
                 section = m.group(1);
                 current = null;
                 if (section.equals("Input") || section.equals("Output")) {
-                    current = new Variable("", new ArrayList<>(), new ArrayList<>());
+                    current = new Variable("", new ArrayList<>(), new ArrayList<>(), i);
                     (section.equals("Input") ? inputs : outputs).add(current);
                 }
                 continue;
@@ -143,7 +143,7 @@ public final class FisReader implements DialectReader {
                 system.put(key, unquote(s.substring(eq + 1)));
             } else if (key.equals("Name") && current != null) {
                 (section.equals("Input") ? inputs : outputs).set((section.equals("Input") ? inputs : outputs)
-                        .size() - 1, current = new Variable(unquote(s.substring(eq + 1)), current.terms(), current.kinds()));
+                        .size() - 1, current = new Variable(unquote(s.substring(eq + 1)), current.terms(), current.kinds(), i));
             } else if (key.startsWith("MF") && current != null) {
                 Matcher mf = MF.matcher(s);
                 if (mf.matches()) {
@@ -174,16 +174,18 @@ public final class FisReader implements DialectReader {
                     case "System" -> {
                         sawSystem = true;
                         t.put(i, "FUNCTION_BLOCK " + EngineText.identifier(system.getOrDefault("Name", ""), "fis"));
-                        StringBuilder d = new StringBuilder("VAR_INPUT");
-                        inputs.forEach(v -> d.append(' ').append(EngineText.identifier(v.name(), "input")).append(" : REAL;"));
-                        d.append(" END_VAR VAR_OUTPUT");
-                        outputs.forEach(v -> d.append(' ').append(EngineText.identifier(v.name(), "output")).append(" : REAL;"));
-                        t.beforeNext(d.append(" END_VAR").toString());
+                        // each declaration stands for the line that names the variable
+                        int systemLine = i;
+                        t.beforeNext("VAR_INPUT", systemLine);
+                        inputs.forEach(v -> t.beforeNext(EngineText.identifier(v.name(), "input") + " : REAL;", v.line()));
+                        t.beforeNext("END_VAR VAR_OUTPUT", systemLine);
+                        outputs.forEach(v -> t.beforeNext(EngineText.identifier(v.name(), "output") + " : REAL;", v.line()));
+                        t.beforeNext("END_VAR", systemLine);
                     }
                     case "Input" -> inputIndex++;
                     case "Output" -> outputIndex++;
                     default -> {
-                        t.put(i, close + "RULEBLOCK rules");     // its name reads to the end of the line
+                        t.put(i, close, "RULEBLOCK rules");     // its name reads to the end of the line
                         close = "";
                         StringBuilder b = new StringBuilder();
                         setting(t, i, b, "AND", system.get("AndMethod"), T_NORMS, "AndMethod");
@@ -229,11 +231,11 @@ public final class FisReader implements DialectReader {
                     if (!input) {
                         nameLines.put(outputIndex, i);
                     }
-                    StringBuilder b = new StringBuilder(close).append(input ? "FUZZIFY " : "DEFUZZIFY ").append(name);
+                    StringBuilder b = new StringBuilder(input ? "FUZZIFY " : "DEFUZZIFY ").append(name);
                     if (!input) {
                         outputSettings(t, i, b, v, type, system);
                     }
-                    t.put(i, b.toString());
+                    t.put(i, close, b.toString());
                     close = input ? "END_FUZZIFY " : "END_DEFUZZIFY ";
                 }
                 case "Range" -> {

@@ -65,13 +65,13 @@ public final class FllReader implements DialectReader {
     static EngineText restate(String source, String text) {
         EngineText t = new EngineText(source, text);
         List<Line> lines = lines(t);
-        List<String> inputs = new ArrayList<>();
-        List<String> outputs = new ArrayList<>();
+        List<Line> inputs = new ArrayList<>();
+        List<Line> outputs = new ArrayList<>();
         for (Line l : lines) {
             if (l.key.equals("InputVariable")) {
-                inputs.add(l.value);
+                inputs.add(l);
             } else if (l.key.equals("OutputVariable")) {
-                outputs.add(l.value);
+                outputs.add(l);
             }
         }
         String section = null;
@@ -89,11 +89,12 @@ public final class FllReader implements DialectReader {
                     engine = true;
                     // fuzzylite reads a block's name to the end of its line: the declarations go on the next
                     t.put(l.index, "FUNCTION_BLOCK " + EngineText.identifier(l.value, "engine"));
-                    StringBuilder s = new StringBuilder("VAR_INPUT");
-                    inputs.forEach(n -> s.append(' ').append(n).append(" : REAL;"));
-                    s.append(" END_VAR VAR_OUTPUT");
-                    outputs.forEach(n -> s.append(' ').append(n).append(" : REAL;"));
-                    t.beforeNext(s.append(" END_VAR").toString());
+                    // each declaration stands for the line that declares the variable
+                    t.beforeNext("VAR_INPUT", l.index);
+                    inputs.forEach(n -> t.beforeNext(n.value + " : REAL;", n.index));
+                    t.beforeNext("END_VAR VAR_OUTPUT", l.index);
+                    outputs.forEach(n -> t.beforeNext(n.value + " : REAL;", n.index));
+                    t.beforeNext("END_VAR", l.index);
                     section = "Engine";
                     continue;
                 }
@@ -114,7 +115,7 @@ public final class FllReader implements DialectReader {
                     ruleBlocks++;
                     rules = 0;
                 }
-                t.put(l.index, close + open);
+                t.put(l.index, close, open);
                 close = switch (l.key) {
                     case "InputVariable" -> "END_FUZZIFY ";
                     case "OutputVariable" -> "END_DEFUZZIFY ";

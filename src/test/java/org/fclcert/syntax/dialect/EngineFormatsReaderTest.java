@@ -149,6 +149,60 @@ class EngineFormatsReaderTest {
         assertEquals(0.75, eval(p, "y", 1.0), 1e-12);
     }
 
+    /**
+     * The checks' findings on an engine file stand on the file's lines, never past a line's end: the restatement puts
+     * the END_… of the section before on the line that opens the next (here "END_DEFUZZIFY RULEBLOCK r", so RULEBLOCK
+     * stood at column 15 of a 12-character line) and the variables' declarations before the first section, and those
+     * columns are not the file's. A rule block with no aggregation anywhere has no ACCU (FCL-C018): reported where the
+     * file writes "RuleBlock:", line 16, column 1.
+     */
+    @Test
+    void checkFindingsStayOnTheFilesLines() {
+        String fll = """
+                Engine: tipper
+                InputVariable: service
+                  enabled: true
+                  range: 0.000 10.000
+                  term: poor Triangle 0.000 2.500 5.000
+                  term: good Triangle 2.500 5.000 7.500
+                  term: excellent Triangle 5.000 7.500 10.000
+                InputVariable: food
+                  range: 0.000 10.000
+                  term: rancid Ramp 5.000 0.000
+                OutputVariable: tip
+                  range: 0.000 30.000
+                  defuzzifier: Centroid 100
+                  term: low Triangle 0.000 5.000 10.000
+                  term: high Triangle 10.000 20.000 30.000
+                RuleBlock: r
+                  conjunction: Minimum
+                  implication: Minimum
+                  rule: if service is poor or food is rancid then tip is low
+                  rule: if service is good then tip is high
+                """;
+        Analysis a = Analysis.analyze(Dialect.FLL.reader(), "tip.fll", fll);
+        List<String> lines = fll.lines().toList();
+        List<Diagnostic> c018 = a.diagnostics().stream().filter(d -> d.code().equals("FCL-C018")).toList();
+        assertEquals(1, c018.size(), a.diagnostics().toString());
+        assertEquals("tip.fll:16:1", c018.get(0).location().toString());
+        // 'excellent' is used by no rule (FCL-W001): on its own line 7
+        assertTrue(a.diagnostics().stream().anyMatch(d -> d.code().equals("FCL-W001") && d.location().line() == 7),
+                a.diagnostics().toString());
+        for (Diagnostic d : a.diagnostics()) {
+            String line = lines.get(d.location().line() - 1);
+            assertTrue(d.location().column() >= 1 && d.location().column() <= line.length(),
+                    () -> d + " is not within its line '" + line + "'");
+        }
+        // the variables stand where the file declares them, the fuzzification of the first input on its own line
+        org.fclcert.model.FunctionBlock fb = a.program().map(p -> p.functionBlocks().get(0))
+                .orElseGet(() -> Dialect.FLL.reader().read("tip.fll", fll).program().get().functionBlocks().get(0));
+        assertEquals(List.of("tip.fll:2:1", "tip.fll:8:1", "tip.fll:11:1"),
+                fb.variables().stream().map(v -> v.location().toString()).toList());
+        assertEquals("tip.fll:2:1", fb.fuzzifications().get(0).location().toString());
+        assertEquals("tip.fll:8:1", fb.fuzzifications().get(1).location().toString());
+        assertEquals("tip.fll:11:1", fb.defuzzifications().get(0).location().toString());
+    }
+
     @Test
     void errorsAreLocatedOnTheFilesOwnLines() {
         Analysis fll = Analysis.analyze(Dialect.FLL.reader(), "bad.fll", """
