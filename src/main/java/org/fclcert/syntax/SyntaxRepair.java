@@ -59,13 +59,7 @@ final class SyntaxRepair {
                     if (r.index >= current.size()) {
                         return Optional.empty();
                     }
-                    if (r.insert == 0) {
-                        current.remove(r.index);
-                        lowestNext = r.index;
-                    } else {
-                        current.add(r.index, conjured(r.insert, current, r.index));
-                        lowestNext = r.index + 1;
-                    }
+                    lowestNext = apply(r, current);
                     continue;
                 }
             }
@@ -85,13 +79,7 @@ final class SyntaxRepair {
                 if (r.index < lowestNext || r.index >= current.size()) {
                     return Optional.empty();    // no progress: the text is not repairable token by token
                 }
-                if (r.insert == 0) {
-                    current.remove(r.index);
-                    lowestNext = r.index;
-                } else {
-                    current.add(r.index, conjured(r.insert, current, r.index));
-                    lowestNext = r.index + 1;
-                }
+                lowestNext = apply(r, current);
                 continue;
             } catch (ParseCancellationException | RecognitionException e) {
                 return Optional.empty();
@@ -128,6 +116,16 @@ final class SyntaxRepair {
     }
 
     /** A token of the given type placed just after the default-channel token before {@code index}. */
+    /** Applies one repair to the tokens; the first index a later repair may touch (no going back: progress). */
+    private static int apply(Repair r, List<Token> tokens) {
+        if (r.insert == 0) {
+            tokens.remove(r.index);
+            return r.index;
+        }
+        tokens.add(r.index, conjured(r.insert, tokens, r.index));
+        return r.index + 1;
+    }
+
     private static Token conjured(int type, List<Token> tokens, int index) {
         String literal = FclParser.VOCABULARY.getLiteralName(type);
         CommonToken t = new CommonToken(type, literal.substring(1, literal.length() - 1));
