@@ -10,6 +10,7 @@ import org.fclcert.model.Expression;
 import org.fclcert.model.Literal;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.MembershipFunction.NamedShape;
+import org.fclcert.model.Names;
 import org.fclcert.model.Point;
 import org.fclcert.model.ShapeKind;
 import org.fclcert.model.Term;
@@ -38,11 +39,11 @@ final class LibraryText {
     static Optional<String> fuzzyliteComputed(BlockContext cx, MembershipFunction.Computed c) {
         Map<String, Double> coefficients = new HashMap<>();
         double[] constant = {0};
-        if (!linear(c.value(), coefficients, constant, new boolean[1])) {
+        if (!linear(c.value(), coefficients, constant)) {
             return Optional.empty();
         }
         List<Variable> inputs = cx.fb.variables().stream().filter(v -> v.kind() == VariableKind.INPUT).toList();
-        if (!inputs.stream().map(v -> v.name().toLowerCase(Locale.ROOT)).toList().containsAll(coefficients.keySet())) {
+        if (!inputs.stream().map(v -> Names.key(v.name())).toList().containsAll(coefficients.keySet())) {
             return Optional.empty();            // a term reading an output or a local: not a Linear
         }
         if (coefficients.isEmpty()) {
@@ -50,22 +51,24 @@ final class LibraryText {
         }
         StringBuilder out = new StringBuilder("Linear");
         for (Variable v : inputs) {
-            out.append(' ').append(number(coefficients.getOrDefault(v.name().toLowerCase(Locale.ROOT), 0.0)));
+            out.append(' ').append(number(coefficients.getOrDefault(Names.key(v.name()), 0.0)));
         }
         return Optional.of(out.append(' ').append(number(constant[0])).toString());
     }
 
     /** Collects {@code e} as coefficients and a constant; false where that would not be exact. */
-    private static boolean linear(Expression e, Map<String, Double> coefficients, double[] constant, boolean[] seen) {
+    private static boolean linear(Expression e, Map<String, Double> coefficients, double[] constant) {
         if (e instanceof Expression.Binary b && b.operator() == '+') {
-            return linear(b.left(), coefficients, constant, seen) && linear(b.right(), coefficients, constant, seen);
+            return linear(b.left(), coefficients, constant) && linear(b.right(), coefficients, constant);
         }
         if (e instanceof Expression.Number n) {
-            if (seen[0] && n.value() != 0) {
+            if (n.value() == 0) {
+                return true;
+            }
+            if (constant[0] != 0) {
                 return false;                   // two constants would be added in doubles
             }
-            seen[0] |= n.value() != 0;
-            constant[0] = n.value() != 0 ? n.value() : constant[0];
+            constant[0] = n.value();
             return true;
         }
         Expression.Variable v = null;
@@ -81,7 +84,7 @@ final class LibraryText {
                 k = n.value();
             }
         }
-        return v != null && coefficients.putIfAbsent(v.name().toLowerCase(Locale.ROOT), k) == null;
+        return v != null && coefficients.putIfAbsent(Names.key(v.name()), k) == null;
     }
 
     /** The finding for a Takagi–Sugeno term a library's layout cannot state. */
