@@ -185,6 +185,12 @@ public final class FfllWriter implements DialectWriter {
                         .append(";\n");
                 return;
             }
+            if (f instanceof MembershipFunction.Computed c) {
+                // a place-holder singleton keeps the rules that name the term (one point would not read back)
+                LibraryText.computedLost(cx, t, c, "FFLL");
+                out.append(LibraryText.number(span[0])).append(";\n");
+                return;
+            }
             List<Point> points = points(t, span);
             Optional<List<double[]>> literal = literal(points);
             if (literal.isPresent()) {
@@ -229,10 +235,6 @@ public final class FfllWriter implements DialectWriter {
             MembershipFunction f = t.function();
             if (f instanceof MembershipFunction.Points p) {
                 return new ArrayList<>(p.points());
-            }
-            if (f instanceof MembershipFunction.Computed c) {
-                LibraryText.computedLost(cx, t, c, "FFLL");
-                return new ArrayList<>(List.of(new Point(Literal.of(span[0]), Literal.of(0), t.location())));
             }
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
             Optional<List<Point>> exact = ShapePoints.exact(n);
@@ -291,6 +293,12 @@ public final class FfllWriter implements DialectWriter {
                     .orElse(AndAlgorithm.MIN));
             OrAlgorithm or = rb.or().map(Located::value).orElse(null);
             AccumulationMethod accu = rb.accumulation().map(Located::value).orElse(AccumulationMethod.MAX);
+            if (!and.standard()) {
+                // FFLL's reader takes Table 3's names only (it would refuse the program), and it ANDs with MIN anyway
+                cx.findings.lost(rb.and().map(Located::location).orElse(rb.location()), WriterCode.OPERATOR, "FFLL has no"
+                        + " AND " + and.name() + "; rule block '" + rb.name() + "' is written with AND MIN");
+                and = AndAlgorithm.MIN;
+            }
             // FFLL reads the line after the RULEBLOCK's name as the AND line and the next as the ACCU line, nothing
             // between them (an ACT line makes it refuse the program); it ANDs and activates with MIN whatever is written
             out.append(IN).append("AND: ").append(and.name()).append(";\n");

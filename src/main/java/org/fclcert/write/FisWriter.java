@@ -91,6 +91,8 @@ public final class FisWriter implements DialectWriter {
         final List<Variable> inputs;
         final List<Variable> outputs;
         Boolean sugeno;
+        /** Whether the output being written has the other kind of terms than the system's Type (a loss said). */
+        boolean misfit;
         Located<DefuzzificationMethod> method;
         Located<AccumulationMethod> accumulation;
         final List<FisRule> rules = new ArrayList<>();
@@ -241,6 +243,7 @@ public final class FisWriter implements DialectWriter {
             if (sugeno == null) {
                 sugeno = singletons;
             } else if (sugeno != singletons) {
+                misfit = true;
                 cx.findings.lost(d.location(), WriterCode.STRUCTURE, FIS + "'s Type is one for the whole system: '"
                         + v.name() + "' has " + (singletons ? "singletons" : "fuzzy sets") + " where an earlier output"
                         + " has " + (singletons ? "fuzzy sets" : "singletons"));
@@ -277,13 +280,22 @@ public final class FisWriter implements DialectWriter {
             }
             double[] span = cx.outputSpan(d);
             variable(v.name(), span, d.terms(), false, out);
+            misfit = false;
         }
 
         /** {@code 'trimf',[a b c]}: a term's FIS function, or the nearest one with the loss said. */
         private String function(Term t, boolean input) {
             MembershipFunction f = t.function();
+            if (misfit && Boolean.TRUE.equals(sugeno)) {
+                // a fuzzy set in a Sugeno system (its loss said): a constant keeps its place, as the Type requires
+                return "'constant',[0]";
+            }
             if (f instanceof MembershipFunction.Singleton s) {
                 String v = cx.numberText(s.value(), 0, WriterCode.POINT_VARIABLE, "singleton '" + t.name() + "'");
+                if (misfit) {
+                    double x = Double.parseDouble(v);
+                    return trapmf(x, x, x, x);
+                }
                 if (input) {
                     cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no singleton term of an input ('"
                             + t.name() + "'); written as a trapezoid of width 1");
@@ -299,7 +311,7 @@ public final class FisWriter implements DialectWriter {
                 return shape(t, n);
             }
             cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no computed term ('" + t.name() + "')");
-            return trapmf(0, 0, 0, 0);
+            return Boolean.TRUE.equals(sugeno) ? "'constant',[0]" : trapmf(0, 0, 0, 0);
         }
 
         private String shape(Term t, MembershipFunction.NamedShape n) {
@@ -317,7 +329,9 @@ public final class FisWriter implements DialectWriter {
             if (fis.isEmpty()) {
                 cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no " + n.kind().name().toLowerCase()
                         + " ('" + t.name() + "'); written as a trapezoid through its special points");
-                double[] s = n.kind().specialPoints(n.values());
+                // a falling shape lists its special points from right to left
+                double[] s = n.kind().specialPoints(n.values()).clone();
+                java.util.Arrays.sort(s);
                 return trapmf(s[0], s[s.length / 2], s[s.length / 2], s[s.length - 1]);
             }
             int[] order = fis.get().getValue();

@@ -13,6 +13,7 @@ import org.fclcert.model.Defuzzification;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.Fuzzification;
+import org.fclcert.model.Hedge;
 import org.fclcert.model.Located;
 import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Names;
@@ -255,8 +256,15 @@ public final class FuzzyliteWriter implements DialectWriter {
                 line.rule().name())).append(" then ");
         for (int i = 0; i < line.group().parts().size(); i++) {
             Subconclusion s = line.group().parts().get(i);
-            r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ")
-                    .append(cx.term(s.variable(), s.term().orElseThrow()));
+            r.append(i == 0 ? "" : " and ").append(cx.variable(s.variable())).append(" is ");
+            for (Hedge h : RuleLines.writtenHedges(line.group(), i)) {
+                r.append(h.word()).append(' ');
+            }
+            r.append(cx.term(s.variable(), s.term().orElseThrow()));
+            if (!s.hedges().isEmpty() && line.group().value() != 1) {
+                cx.findings.differs(s.location(), WriterCode.WEIGHT_BEFORE_ACTIVATION, "fuzzylite hedges the weighted"
+                        + " degree of rule " + line.rule().name() + ", h(w·d); fclcert weighs the hedged degree, w·h(d)");
+            }
             RuleLines.noteWeightBeforeActivation(cx, act, line, s, "fuzzylite");
         }
         line.group().weight().ifPresent(w -> r.append(" with ").append(w));

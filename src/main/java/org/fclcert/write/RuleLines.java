@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.fclcert.model.Condition;
+import org.fclcert.model.Hedge;
 import org.fclcert.model.ActivationMethod;
 import org.fclcert.model.Rule;
 import org.fclcert.model.RuleBlock;
@@ -32,6 +33,11 @@ final class RuleLines {
                     cx.findings.lost(s.location(), WriterCode.BARE_VARIABLE, "rule " + r.name() + " concludes the"
                             + " variable '" + s.variable() + "' itself (Table 9); " + cx.findings.library()
                             + " concludes only 'variable IS term': the subconclusion is left out");
+                } else if (!hedges && !s.hedges().isEmpty()) {
+                    cx.findings.lost(s.location(), WriterCode.HEDGE, "rule " + r.name() + ": " + cx.findings.library()
+                            + " has no hedges in a conclusion (" + s.hedges().stream().map(Hedge::word).toList()
+                            + " on '" + s.variable() + "'): the hedges are left out");
+                    parts.add(new Subconclusion(s.variable(), s.term(), s.weight(), s.location()));
                 } else {
                     parts.add(s);
                 }
@@ -46,7 +52,11 @@ final class RuleLines {
             List<BlockContext.WeightGroup> groups = cx.weightGroups(kept);
             split |= groups.size() > 1;
             for (BlockContext.WeightGroup g : groups) {
-                lines.add(new Line(r.name(), r, condition.get(), g));
+                List<BlockContext.WeightGroup> chains = hedgeChains(g);
+                split |= chains.size() > 1;
+                for (BlockContext.WeightGroup c : chains) {
+                    lines.add(new Line(r.name(), r, condition.get(), c));
+                }
             }
         }
         if (split) {
@@ -58,6 +68,40 @@ final class RuleLines {
             return numbered;
         }
         return lines;
+    }
+
+    /**
+     * fuzzylite applies a conclusion's hedges to the rule's degree itself, so they hold for every later subconclusion
+     * of the line too, and the model gives each subconclusion the whole list it is hedged by (its own hedges first).
+     * A line can say the list of a subconclusion only if the previous one's list ends it: the group is split where
+     * it does not (the same condition concluding each part: the same activations).
+     */
+    static List<BlockContext.WeightGroup> hedgeChains(BlockContext.WeightGroup g) {
+        List<BlockContext.WeightGroup> out = new ArrayList<>();
+        List<Subconclusion> chain = new ArrayList<>();
+        for (Subconclusion s : g.parts()) {
+            if (!chain.isEmpty() && !endsWith(s.hedges(), chain.get(chain.size() - 1).hedges())) {
+                out.add(new BlockContext.WeightGroup(List.copyOf(chain), g.weight(), g.value()));
+                chain.clear();
+            }
+            chain.add(s);
+        }
+        out.add(new BlockContext.WeightGroup(List.copyOf(chain), g.weight(), g.value()));
+        return out;
+    }
+
+    /**
+     * The hedges to write before the term of the line's subconclusion {@code i}: its list less the part the
+     * previous subconclusion of the line already applied to the degree (hedgeChains makes that part its end).
+     */
+    static List<Hedge> writtenHedges(BlockContext.WeightGroup line, int i) {
+        List<Hedge> all = line.parts().get(i).hedges();
+        int before = i == 0 ? 0 : line.parts().get(i - 1).hedges().size();
+        return all.subList(0, all.size() - before);
+    }
+
+    private static boolean endsWith(List<Hedge> list, List<Hedge> end) {
+        return list.size() >= end.size() && list.subList(list.size() - end.size(), list.size()).equals(end);
     }
 
     /**

@@ -278,6 +278,100 @@ class DialectWritersTest {
     }
 
     /**
+     * fuzzylite applies a conclusion's hedges to the rule's degree itself, so they also hedge every later
+     * subconclusion of the rule (its Consequent::modify). The model gives each subconclusion the whole list; the
+     * writer writes each hedge once, where it first applies. At a = 6 (checked with the fuzzylite 6.0 binary on this
+     * text: y 4.736842105, z 12.000000000): hi 0.6, lo 0.4; y's c gets very(0.6) = 0.36, so y = 3.6 / 0.76 =
+     * 4.7368…; z's d gets somewhat(very(0.6)) = 0.6, so z = 12 / 1.0 = 12 (somewhat(0.6) alone would give 13.19).
+     * jFuzzyLogic and MATLAB's FIS have no hedges in conclusions: each is a named loss; FFLL refuses AND EPROD.
+     */
+    @Test
+    void conclusionHedgesAreWrittenOnceWhereFuzzyliteAppliesThem() throws Exception {
+        String text = """
+                FUNCTION_BLOCK hc
+                VAR_INPUT
+                  a: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                  z: REAL;
+                END_VAR
+                FUZZIFY a
+                  RANGE := (0 .. 10);
+                  TERM lo := (0, 1) (10, 0);
+                  TERM hi := (0, 0) (10, 1);
+                END_FUZZIFY
+                DEFUZZIFY y
+                  RANGE := (-1 .. 11);
+                  TERM e := 0;
+                  TERM c := 10;
+                  METHOD : COGS;
+                  ACCU : MAX;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                DEFUZZIFY z
+                  RANGE := (-1 .. 21);
+                  TERM f := 0;
+                  TERM d := 20;
+                  METHOD : COGS;
+                  ACCU : MAX;
+                  DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK r
+                  AND : EPROD;
+                  ACT : MIN;
+                  RULE 1 : if a is hi then y is very c and z is somewhat d
+                  RULE 2 : if a is lo then y is e and z is f
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = Analysis.analyze(DialectReaders.reader(Dialect.FUZZYLITE), "hc.fcl", text);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics()));
+        for (Dialect d : List.of(Dialect.FUZZYLITE, Dialect.FLL)) {
+            Written w = DialectWriters.writer(d).write(p);
+            assertTrue(w.exact(), w.notExpressible()::toString);
+            assertTrue(w.text().contains("if a is hi then y is very c and z is somewhat d\n"), w.text());
+            RoundTrip rt = DialectWriters.readBackAndCompare(p, w);
+            assertTrue(rt.equal(), rt.summary());
+            FunctionBlockInstance back = Evaluator.load(rt.readBack().orElseThrow()).newInstance();
+            back.set("a", 6);
+            back.evaluate();
+            assertEquals(3.6 / 0.76, back.get("y"), 1e-15);
+            assertEquals(12.0, back.get("z"), 1e-14);
+        }
+        for (Dialect d : List.of(Dialect.JFUZZYLOGIC, Dialect.FIS)) {
+            Written w = DialectWriters.writer(d).write(p);
+            assertTrue(w.notExpressible().stream().anyMatch(x -> x.code().equals("FCL-X105")
+                    && x.location().line() == 33 && x.message().contains("no hedges in a conclusion ([somewhat, very]"
+                    + " on 'z')")), d + " " + w.notExpressible());
+        }
+        Written ffll = DialectWriters.writer(Dialect.FFLL).write(p);
+        assertTrue(ffll.notExpressible().stream().anyMatch(x -> x.code().equals("FCL-X107")
+                && x.message().contains("FFLL has no AND EPROD")), ffll.notExpressible().toString());
+        assertTrue(DialectWriters.readBackAndCompare(p, ffll).readBack().isPresent(), ffll.text());
+    }
+
+    /** Hedge lists that do not chain (each subconclusion's list must end with the one before it) split the line. */
+    @Test
+    void conclusionHedgesThatDoNotChainSplitTheLine() {
+        org.fclcert.model.SourceLocation at = new org.fclcert.model.SourceLocation("h", 1, 1);
+        java.util.function.BiFunction<String, List<org.fclcert.model.Hedge>, org.fclcert.model.Subconclusion> s =
+                (v, h) -> new org.fclcert.model.Subconclusion(v, java.util.Optional.of("t"), java.util.Optional.empty(), h, at);
+        var very = org.fclcert.model.Hedge.VERY;
+        var somewhat = org.fclcert.model.Hedge.SOMEWHAT;
+        BlockContext.WeightGroup g = new BlockContext.WeightGroup(List.of(s.apply("u", List.of(very)),
+                s.apply("v", List.of(somewhat, very)), s.apply("w", List.of(somewhat)), s.apply("x", List.of())),
+                java.util.Optional.empty(), 1.0);
+        List<BlockContext.WeightGroup> chains = RuleLines.hedgeChains(g);
+        assertEquals(List.of(List.of("u", "v"), List.of("w"), List.of("x")),
+                chains.stream().map(c -> c.parts().stream().map(org.fclcert.model.Subconclusion::variable).toList()).toList());
+        assertEquals(List.of(very), RuleLines.writtenHedges(chains.get(0), 0));
+        assertEquals(List.of(somewhat), RuleLines.writtenHedges(chains.get(0), 1));
+        assertEquals(List.of(somewhat), RuleLines.writtenHedges(chains.get(1), 0));
+        assertEquals(List.of(), RuleLines.writtenHedges(chains.get(2), 0));
+    }
+
+    /**
      * fuzzylite's Einstein ACT/ACCU and Tsukamoto's method: its writer says them (read back, equal on the grid);
      * jFuzzyLogic and FFLL cannot, and name each loss where it was written.
      */
