@@ -12,6 +12,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ReferenceTrace;
 import org.fclcert.model.Feature;
 
 /**
@@ -32,6 +33,8 @@ import org.fclcert.model.Feature;
 public final class Causes {
     /** A relative error up to this is "small": the size of the error of a sampled defuzzification. */
     static final double SMALL = 0.01;
+    /** A rule degree up to this is "faint": fuzzylite's firing tolerance (its fuzzylite::macheps). */
+    static final double FAINT = 1e-6;
     /** What a group shows of the message it quotes. */
     static final int SHOWN = 200;
 
@@ -264,7 +267,24 @@ public final class Causes {
         if (worst == 0) {
             return Optional.empty();
         }
+        if (worst <= SMALL) {
+            Optional<ReferenceTrace.RuleDegree> faint = faintRule(c);
+            if (faint.isPresent()) {
+                return Optional.of("small deviation where a rule fired at a degree of at most 1e-6 (as from a"
+                        + " library that does not fire a rule below a tolerance, as fuzzylite's 1e-6)");
+            }
+        }
         return Optional.of(worst <= SMALL ? "small deviation (relative error at most 1 %, as from sampling)"
                 : "wrong value");
+    }
+
+    /**
+     * A rule the reference fired at the failing step with a degree above 0 but at most {@link #FAINT}: a library
+     * that treats such degrees as 0 (fuzzylite and jfuzzylite compare with 1e-6) gives another value there.
+     */
+    static Optional<ReferenceTrace.RuleDegree> faintRule(CaseResult c) {
+        ReferenceTrace t = c.evidence().reference();
+        return t == null ? Optional.empty()
+                : t.rules().stream().filter(r -> r.degree() > 0 && r.degree() <= FAINT).findFirst();
     }
 }

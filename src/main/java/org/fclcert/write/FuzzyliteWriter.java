@@ -212,6 +212,13 @@ public final class FuzzyliteWriter implements DialectWriter {
                     + " SShape, ZShape and Concave terms wrongly in Tsukamoto's method (fixed in fuzzylite 7): its '"
                     + name + "' differs from fclcert's");
         }
+        if (m == DefuzzificationMethod.TSUKAMOTO && d.terms().stream().anyMatch(t -> t.function()
+                instanceof MembershipFunction.NamedShape s && s.kind() == ShapeKind.SIGMOID)) {
+            // measured on O-TSUKAMOTO-002 (pyfuzzylite 8.0.6 answers z = Infinity where fclcert gives the RANGE's end)
+            cx.findings.differs(d.method().get().location(), WriterCode.TSUKAMOTO_INVERSE, "a Sigmoid never reaches"
+                    + " degree 1 or 0, so at those degrees Tsukamoto's method has no point on it: fclcert takes the end of"
+                    + " the RANGE of '" + name + "', pyfuzzylite 8 gives an infinite value");
+        }
         if (m == DefuzzificationMethod.COGS || m == DefuzzificationMethod.TSUKAMOTO) {
             for (Term t : d.terms()) {
                 if (cx.conclusions(d.variable(), t.name()) > 1) {

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import org.fclcert.harness.CaseResult;
 import org.fclcert.harness.CaseStatus;
+import org.fclcert.harness.ReferenceTrace;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -112,6 +113,21 @@ class CausesTest {
         assertEquals("wrong value: E-COG (METHOD CoG, centre of gravity): small deviation (relative error at most 1 %,"
                 + " as from sampling)", cause(failed("E-COG-001", "step 1 of 1: y = 40.2 where 40 is expected",
                 Map.of("y", 40.0), Map.of("y", 40.2))));
+        // the same size of error, where the reference fired a rule at 8.3e-8 (O-SHAPE-BELL-001 against fuzzylite 6.0,
+        // whose tolerance drops it): that is the cause to show, not sampling; at 2e-6 the rule is no faint one
+        CaseResult bell = failed("O-SHAPE-BELL-001", "step 4 of 11: y = 1.0 where 0.999999917346057 is expected",
+                Map.of("y", 0.999999917346057), Map.of("y", 1.0));
+        for (double degree : new double[] {8.265394302320317E-8, 2e-6}) {
+            ReferenceTrace trace = new ReferenceTrace(4, List.of(new ReferenceTrace.RuleDegree("r", "1", 1, List.of()),
+                    new ReferenceTrace.RuleDegree("r", "2", degree, List.of("y IS low"))), List.of());
+            CaseResult.Evidence e = bell.evidence();
+            CaseResult traced = new CaseResult(bell.plan(), bell.verdict(), new CaseResult.Evidence(e.step(),
+                    e.mismatch(), e.error(), e.maxError(), trace), bell.export(), bell.setup(), null, null);
+            assertEquals("wrong value: O-SHAPE-BELL (named shape: generalised bell (gbell, Bell)): small deviation "
+                    + (degree < 1e-6 ? "where a rule fired at a degree of at most 1e-6 (as from a library that does not"
+                    + " fire a rule below a tolerance, as fuzzylite's 1e-6)" : "(relative error at most 1 %, as from"
+                    + " sampling)"), cause(traced));
+        }
         assertEquals("wrong value: E-COG (METHOD CoG, centre of gravity): NaN where a value is expected", cause(failed(
                 "E-COG-002", "step 1 of 1: y = NaN where 40 is expected", Map.of("y", 40.0), Map.of("y", Double.NaN))));
     }
