@@ -306,6 +306,48 @@ class JFuzzyLogicDialectTest {
         return Iuts.open(JFuzzyLogic.spec(), IutOptions.defaults().withTimeout(Duration.ofSeconds(20)));
     }
 
+    /**
+     * RANGE in FUZZIFY: jFuzzyLogic's grammar refuses it ("mismatched input 'RANGE' expecting END_FUZZIFY"), so
+     * fclcert's reader of its dialect does too, at the RANGE; without it the same program loads in both.
+     */
+    @Test
+    void rangeInFuzzifyIsRefusedAsJFuzzyLogicRefusesIt() throws Exception {
+        String text = """
+                FUNCTION_BLOCK t
+                VAR_INPUT
+                    x : REAL;
+                END_VAR
+                VAR_OUTPUT
+                    y : REAL;
+                END_VAR
+                // jFuzzyLogic
+                FUZZIFY x
+                    RANGE := (0 .. 10);
+                    TERM lo := (0, 1) (10, 0);
+                END_FUZZIFY
+                DEFUZZIFY y
+                    TERM a := 5;
+                    METHOD : COGS;
+                    DEFAULT := 0;
+                END_DEFUZZIFY
+                RULEBLOCK r
+                    AND : MIN;
+                    ACCU : MAX;
+                    RULE 1 : IF x IS lo THEN y IS a;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = Analysis.analyze(DialectReaders.reader(Dialect.JFUZZYLOGIC), "p.fcl", text);
+        assertTrue(a.diagnostics().stream().anyMatch(d -> d.isError() && d.code().equals("FCL-S306")
+                && d.location().line() == 10 && d.location().column() == 5), a.diagnostics()::toString);
+        String without = text.replace("    RANGE := (0 .. 10);\n", "");
+        try (ImplementationUnderTest iut = open()) {
+            assertFalse(iut.load(text) instanceof LoadOutcome.Loaded, "jFuzzyLogic refuses RANGE in FUZZIFY");
+            assertTrue(iut.load(without) instanceof LoadOutcome.Loaded, "jFuzzyLogic loads it without");
+        }
+        read(without);
+    }
+
     /** The implied universes fclcert reads are the ones jFuzzyLogic defuzzifies over. */
     @Test
     void impliedUniversesAgreeWithJFuzzyLogicsSampledCog() throws Exception {

@@ -498,6 +498,10 @@ final class DialectParser {
             try {
                 if (isKeyword(t, "TERM")) {
                     terms.add(this.terms.term(TermContext.INPUT));
+                } else if (isKeyword(t, "RANGE") && !dialect.rangeInFuzzify()) {
+                    error(t, DialectCode.NOT_IN_DIALECT, library + " takes no RANGE in FUZZIFY (only in DEFUZZIFY);"
+                            + " give the input's RANGE after its declaration in VAR_INPUT");
+                    throw new Skip();
                 } else if (isKeyword(t, "RANGE")) {
                     // an input's RANGE has no effect on evaluation; kept for the conversion to standard FCL
                     declaredRange = range();

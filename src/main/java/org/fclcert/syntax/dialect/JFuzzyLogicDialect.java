@@ -82,6 +82,13 @@ final class JFuzzyLogicDialect extends LibraryDialect {
     }
 
     @Override
+    boolean rangeInFuzzify() {
+        // measured: the jFuzzyLogic jar refuses it before or after the terms ("mismatched input 'RANGE' expecting
+        // END_FUZZIFY"); an input's RANGE goes after its declaration in VAR_INPUT
+        return false;
+    }
+
+    @Override
     boolean rangeAfterDeclaration() {
         return true;
     }

@@ -50,6 +50,11 @@ abstract class LibraryDialect {
         return false;
     }
 
+    /** Whether a FUZZIFY block takes {@code RANGE := (lo .. hi);} (jFuzzyLogic's grammar does not). */
+    boolean rangeInFuzzify() {
+        return true;
+    }
+
     /** A statement of a FUZZIFY block other than TERM and RANGE; false when the dialect has none there. */
     boolean fuzzifyStatement(DialectParser p, Token t) {
         return false;
