@@ -37,25 +37,13 @@ final class SetBuilder {
      * no degree, never a vertex of an earlier evaluation (conformance/EQUIVALENT-MUTANTS.md, "stale scratch").
      */
     double[] px = new double[32];
-    /** Whether the last {@link #build} took the sweep (for its differential test). */
-    boolean swept;
     double[] py = new double[32];
     int np;
 
     /** Builds the vertices over [lo, hi]; leaves none when nothing was added or the interval is empty. */
     void build(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
         np = 0;
-        swept = false;
         buildVertices(accu, lo, hi, cx, cy, shapes);
-        Arrays.fill(py, np, Math.min(py.length, np + 2), 0.0);
-    }
-
-    /** {@link #build} by the general construction only, never the sweep (the sweep's differential test). */
-    void buildGeneral(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
-        np = 0;
-        if (act.n > 0 && lo < hi) {
-            generalVertices(accu, lo, hi, cx, cy, shapes);
-        }
         Arrays.fill(py, np, Math.min(py.length, np + 2), 0.0);
     }
 
@@ -64,19 +52,6 @@ final class SetBuilder {
         if (act.n == 0 || !(lo < hi)) {
             return;
         }
-        if (accu == AccumulationMethod.MAX && sweepMax(lo, hi, cx, cy, shapes)) {
-            swept = true;
-            return;
-        }
-        generalVertices(accu, lo, hi, cx, cy, shapes);
-    }
-
-    /**
-     * The general construction: every breakpoint of every contribution sorted, every contribution's degrees at
-     * every breakpoint, then the accumulation there and between.
-     */
-    private void generalVertices(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy,
-            Shape[] shapes) {
         breakpoints(lo, hi, cx, cy, shapes);
         activatedValues(cx, cy, shapes);
         accumulateAtBreakpoints(accu);
@@ -100,148 +75,6 @@ final class SetBuilder {
         }
     }
 
-    /** Per contribution, for the sweep: its next point and next crossing, and its right limit at the last breakpoint. */
-    private int[] sp = new int[4];
-    private int[] sc = new int[4];
-    private double[] sr = new double[4];
-
-    /**
-     * MAX over MIN or PROD activations (Table 4), the common case, by a sweep that emits exactly what
-     * {@link #generalVertices} emits, in the same order, bit for bit (SetBuilderSweepTest): the breakpoints are
-     * taken in increasing order from each contribution's points and crossings (no sort), each contribution's
-     * degrees there by {@link #limits}, and the envelope computed only between breakpoints where two or more
-     * contributions are not 0. A line that is 0 at both ends never overtakes one that is not (degrees are not
-     * negative), so leaving it out changes no corner. Returns false, having emitted nothing, where it does not
-     * apply: another t-norm, a negative or NaN level or weight, or more breakpoints than the general sort's
-     * insertion sort takes (whose order of -0.0 and 0.0 the sweep keeps).
-     */
-    private boolean sweepMax(double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
-        int n = act.n;
-        if (crossStart.length < n) {
-            crossStart = new int[2 * n];
-            crossEnd = new int[2 * n];
-        }
-        if (sp.length < n) {
-            sp = new int[2 * n];
-            sc = new int[2 * n];
-            sr = new double[2 * n];
-        }
-        ensureLines(n);
-        nc = 0;
-        int events = 2;
-        for (int j = 0; j < n; j++) {
-            if (act.norm[j] != null || !(act.level[j] >= 0) || !(act.weight[j] >= 0)) {
-                return false;
-            }
-            int s = act.shape[j];
-            int m = shapes[s].n;
-            if (act.prod[j]) {
-                crossStart[j] = crossEnd[j] = nc;
-            } else {
-                clipCrossings(j, cx[s], cy[s], m, act.level[j], lo, hi);
-            }
-            events += m;
-            sp[j] = 0;
-            sc[j] = crossStart[j];
-        }
-        if (events + nc > 32) {
-            return false;
-        }
-        double u = lo;
-        limitsAll(u, cx, cy, shapes);
-        emitRaw(u, sweepV);
-        if (sweepR != sweepV) {
-            emitRaw(u, sweepR);
-        }
-        while (true) {
-            double next = hi;
-            for (int j = 0; j < n; j++) {
-                int s = act.shape[j];
-                double[] x = cx[s];
-                int m = shapes[s].n;
-                int q = sp[j];
-                while (q < m && x[q] <= u) {
-                    q++;
-                }
-                if (q < m && x[q] < next) {
-                    next = x[q];
-                }
-                int c = sc[j];
-                while (c < crossEnd[j] && crossU[c] <= u) {
-                    c++;
-                }
-                if (c < crossEnd[j] && crossU[c] < next) {
-                    next = crossU[c];
-                }
-            }
-            for (int j = 0; j < n; j++) {
-                ga[j] = sr[j];
-            }
-            limitsAll(next, cx, cy, shapes);
-            int lines = 0;
-            for (int j = 0; j < n; j++) {
-                double l = gb[j];
-                if (ga[j] != 0 || l != 0) {
-                    ga[lines] = ga[j];
-                    gb[lines++] = l;
-                }
-            }
-            if (lines > 1) {
-                envelope(u, next, lines, n);
-            }
-            emitRaw(next, sweepL);
-            if (sweepV != sweepL) {
-                emitRaw(next, sweepV);
-            }
-            if (next == hi) {
-                return true;
-            }
-            if (sweepR != sweepV) {
-                emitRaw(next, sweepR);
-            }
-            u = next;
-        }
-    }
-
-    /** Set by {@link #limitsAll}: the accumulated (MAX) left limit, value and right limit at one breakpoint. */
-    private double sweepL;
-    private double sweepV;
-    private double sweepR;
-
-    /**
-     * Every contribution's degrees at u (the next breakpoint of the sweep): the left limits into gb, the right
-     * limits into sr, their maxima (from 0, as {@link #accumulateAtBreakpoints}) into sweepL, sweepV, sweepR.
-     */
-    private void limitsAll(double u, double[][] cx, double[][] cy, Shape[] shapes) {
-        double l = 0;
-        double v = 0;
-        double r = 0;
-        for (int j = 0; j < act.n; j++) {
-            int s = act.shape[j];
-            double[] x = cx[s];
-            int m = shapes[s].n;
-            int p = sp[j];
-            while (p < m && x[p] < u) {
-                p++;
-            }
-            sp[j] = p;
-            int c = sc[j];
-            while (c < crossEnd[j] && crossU[c] < u) {
-                c++;
-            }
-            sc[j] = c;
-            limits(j, x, cy[s], m, p, c < crossEnd[j] && crossU[c] == u, u);
-            gb[j] = limL;
-            sr[j] = limR;
-            l = Math.max(l, limL);
-            v = Math.max(v, limV);
-            r = Math.max(r, limR);
-        }
-        sweepL = l;
-        sweepV = v;
-        sweepR = r;
-    }
-
     private void breakpoints(double lo, double hi, double[][] cx, double[][] cy, Shape[] shapes) {
         nb = 0;
         nc = 0;
@@ -262,9 +95,6 @@ final class SetBuilder {
             }
             if (!act.prod[j]) {
                 clipCrossings(j, x, y, n, act.level[j], lo, hi);
-                for (int c = crossStart[j]; c < crossEnd[j]; c++) {
-                    addBreakpoint(crossU[c]);
-                }
             } else {
                 crossStart[j] = crossEnd[j] = nc;
             }
@@ -305,33 +135,26 @@ final class SetBuilder {
     private void clipCrossings(int j, double[] x, double[] y, int n, double level, double lo, double hi) {
         crossStart[j] = nc;
         for (int i = 0; i + 1 < n; i++) {
-            double u = clipCrossing(x[i], y[i], x[i + 1], y[i + 1], level);
-            if (u > lo && u < hi) {
-                if (nc == crossU.length) {
-                    crossU = Arrays.copyOf(crossU, 2 * nc);
+            double y0 = y[i];
+            double y1 = y[i + 1];
+            if ((y0 - level) * (y1 - level) < 0 && x[i + 1] > x[i]) {
+                double u = x[i] + (x[i + 1] - x[i]) * (level - y0) / (y1 - y0);
+                if (!(u < x[i + 1])) {
+                    u = Math.nextDown(x[i + 1]);
                 }
-                crossU[nc++] = u;
+                if (!(u > x[i])) {
+                    u = Math.nextUp(x[i]);
+                }
+                if (u > lo && u < hi && u > x[i] && u < x[i + 1]) {
+                    addBreakpoint(u);
+                    if (nc == crossU.length) {
+                        crossU = Arrays.copyOf(crossU, 2 * nc);
+                    }
+                    crossU[nc++] = u;
+                }
             }
         }
         crossEnd[j] = nc;
-    }
-
-    /**
-     * Where the level crosses the segment from (x0, y0) to (x1, y1) strictly, or NaN: one ulp inside the segment
-     * when the crossing rounds onto an end, so that the piece beyond stays a plateau.
-     */
-    private static double clipCrossing(double x0, double y0, double x1, double y1, double level) {
-        if (!((y0 - level) * (y1 - level) < 0 && x1 > x0)) {
-            return Double.NaN;
-        }
-        double u = x0 + (x1 - x0) * (level - y0) / (y1 - y0);
-        if (!(u < x1)) {
-            u = Math.nextDown(x1);
-        }
-        if (!(u > x0)) {
-            u = Math.nextUp(x0);
-        }
-        return u > x0 && u < x1 ? u : Double.NaN;
     }
 
     private void addBreakpoint(double u) {
@@ -371,54 +194,36 @@ final class SetBuilder {
                 while (c < crossEnd[j] && crossU[c] < u) {
                     c++;
                 }
-                if (limits(j, x, y, n, p, c < crossEnd[j] && crossU[c] == u, u)) {
-                    jump[i] = true;
+                double v;
+                if (c < crossEnd[j] && crossU[c] == u) {
+                    v = act.level[j]; // a clip crossing: the term's degree is the level, exactly
+                } else if (p < n && x[p] == u) {
+                    if (p + 1 < n && x[p + 1] == u) {
+                        // a jump: left limit, value and right limit differ
+                        int q = p;
+                        v = y[p];
+                        while (q + 1 < n && x[q + 1] == u) {
+                            v = Math.max(v, y[++q]);
+                        }
+                        cv[base + i] = act.activate(j, v);
+                        cl[base + i] = act.activate(j, y[p]);
+                        cr[base + i] = act.activate(j, y[q]);
+                        jump[i] = true;
+                        continue;
+                    }
+                    v = y[p];
+                } else if (p == 0 || p == n) {
+                    v = y[p == 0 ? 0 : n - 1];
+                } else {
+                    v = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
                 }
-                cv[base + i] = limV;
-                cl[base + i] = limL;
-                cr[base + i] = limR;
+                // left limit, value and right limit are the one degree: activated once
+                double a = act.activate(j, v);
+                cv[base + i] = a;
+                cl[base + i] = a;
+                cr[base + i] = a;
             }
         }
-    }
-
-    /** Set by {@link #limits}: contribution j's activated left limit, value and right limit at one abscissa. */
-    private double limL;
-    private double limV;
-    private double limR;
-
-    /**
-     * Contribution j's activated degrees at u into {@link #limL}, {@link #limV}, {@link #limR}; p is the first
-     * point with x[p] &ge; u. Returns whether they differ (a jump of the term at u).
-     */
-    private boolean limits(int j, double[] x, double[] y, int n, int p, boolean atCrossing, double u) {
-        double v;
-        if (atCrossing) {
-            v = act.level[j]; // a clip crossing: the term's degree is the level, exactly
-        } else if (p < n && x[p] == u) {
-            if (p + 1 < n && x[p + 1] == u) {
-                // a jump: left limit, value and right limit differ
-                int q = p;
-                v = y[p];
-                while (q + 1 < n && x[q + 1] == u) {
-                    v = Math.max(v, y[++q]);
-                }
-                limV = act.activate(j, v);
-                limL = act.activate(j, y[p]);
-                limR = act.activate(j, y[q]);
-                return true;
-            }
-            v = y[p];
-        } else if (p == 0 || p == n) {
-            v = y[p == 0 ? 0 : n - 1];
-        } else {
-            v = Pwl.interpolate(x[p - 1], y[p - 1], x[p], y[p], u);
-        }
-        // left limit, value and right limit are the one degree: activated once
-        double a = act.activate(j, v);
-        limV = a;
-        limL = a;
-        limR = a;
-        return false;
     }
 
     /** MAX keeps the maximum; BSUM and NSUM keep the plain sum here (bounded or normalised later). */
@@ -459,13 +264,7 @@ final class SetBuilder {
 
     private void interior(int i, AccumulationMethod accu) {
         if (accu == AccumulationMethod.MAX && act.n > 1) {
-            // one contribution is its own envelope: no crossing
-            ensureLines(act.n);
-            for (int j = 0; j < act.n; j++) {
-                ga[j] = cr[j * nb + i];
-                gb[j] = cl[j * nb + i + 1];
-            }
-            envelope(bx[i], bx[i + 1], act.n, act.n);
+            envelope(i);        // one contribution is its own envelope: no crossing
         } else if (accu == AccumulationMethod.BSUM) {
             double s0 = aR[i];
             double s1 = aL[i + 1];
@@ -475,47 +274,38 @@ final class SetBuilder {
         }
     }
 
-    /** The lines of {@link #envelope}: line k goes from ga[k] at the interval's left end to gb[k] at its right. */
-    private double[] ga = new double[4];
-    private double[] gb = new double[4];
-
-    private void ensureLines(int n) {
-        if (ga.length < n) {
-            ga = new double[2 * n];
-            gb = new double[2 * n];
-        }
-    }
-
     /**
-     * The corners of the upper envelope of the m lines in ga/gb over (a, b), the activated sets there:
-     * walk from the left, always switching to the line that overtakes the current one first, at most
-     * {@code steps} times.
+     * The corners of the upper envelope of the activated sets, all linear on (bx[i], bx[i+1]):
+     * walk from the left, always switching to the line that overtakes the current one first.
      */
-    private void envelope(double a, double b, int m, int steps) {
-        double w = b - a;
+    private void envelope(int i) {
+        double a = bx[i];
+        double w = bx[i + 1] - a;
         int cur = 0;
-        for (int j = 1; j < m; j++) {
-            if (ga[j] > ga[cur] || ga[j] == ga[cur] && gb[j] > gb[cur]) {
+        for (int j = 1; j < act.n; j++) {
+            int at = j * nb;
+            int best = cur * nb;
+            if (cr[at + i] > cr[best + i] || cr[at + i] == cr[best + i] && cl[at + i + 1] > cl[best + i + 1]) {
                 cur = j;
             }
         }
         double t0 = 0;
-        for (int step = 0; step < steps; step++) {
-            double fa = ga[cur];
-            double fb = gb[cur];
+        for (int steps = 0; steps < act.n; steps++) {
+            double fa = cr[cur * nb + i];
+            double fb = cl[cur * nb + i + 1];
             double f0 = fa + (fb - fa) * t0;
             double bestT = 1;
             int next = -1;
-            for (int j = 0; j < m; j++) {
-                double g0 = ga[j];
-                double g1 = gb[j];
-                double d1 = fb - g1;
+            for (int j = 0; j < act.n; j++) {
+                double ga = cr[j * nb + i];
+                double gb = cl[j * nb + i + 1];
+                double d1 = fb - gb;
                 if (j == cur || d1 >= 0) {
                     continue;
                 }
-                double d0 = Math.max(0, f0 - (g0 + (g1 - g0) * t0));
+                double d0 = Math.max(0, f0 - (ga + (gb - ga) * t0));
                 double t = t0 + (1 - t0) * d0 / (d0 - d1);
-                if (t < bestT || t == bestT && next >= 0 && g1 > gb[next]) {
+                if (t < bestT || t == bestT && next >= 0 && gb > cl[next * nb + i + 1]) {
                     bestT = t;
                     next = j;
                 }
