@@ -70,6 +70,10 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 name(cx, v.name(), v.location());
                 // jFuzzyLogic's grammar has the type REAL only; fclcert computes REAL and LREAL alike
                 out.append(IN).append(cx.variable(v.name())).append(" : REAL;\n");
+                // jFuzzyLogic takes an input's RANGE after its declaration (its grammar refuses one in FUZZIFY)
+                fb.fuzzification(v.name()).flatMap(Fuzzification::declaredRange).ifPresent(r -> out.append(IN)
+                        .append("RANGE := (").append(LibraryText.number(r.min())).append(" .. ")
+                        .append(LibraryText.number(r.max())).append(");\n"));
                 if (v.type().isInteger()) {
                     cx.findings.lost(v.location(), WriterCode.TYPE, "jFuzzyLogic declares"
                             + " REAL variables only; '" + v.name() + "' is written as REAL, so the rounding of a "
@@ -83,10 +87,6 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 + " block; it is left out (fclcert gives it no meaning)"));
         for (Fuzzification f : fb.fuzzifications()) {
             out.append("FUZZIFY ").append(cx.variable(f.variable())).append('\n');
-            // jFuzzyLogic's grammar refuses RANGE in FUZZIFY (before or after the terms); it has no effect here
-            f.declaredRange().ifPresent(r -> cx.findings.differs(f.location(), WriterCode.LEFT_OUT, "jFuzzyLogic reads"
-                    + " no RANGE in FUZZIFY; the RANGE of input '" + f.variable() + "' is left out (it has no effect on"
-                    + " evaluation)"));
             double[] span = cx.inputSpan(f);
             for (Term t : f.terms()) {
                 term(cx, t, span, out);

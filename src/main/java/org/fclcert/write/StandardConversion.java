@@ -398,7 +398,8 @@ public final class StandardConversion {
             String why = options.approximatePoints() == 0
                     ? "standard FCL has only points and singletons; --approximate-points N approximates it"
                     : over == null ? owner + " has no finite RANGE to approximate over"
-                            + (owner.startsWith("input") ? " (write RANGE := (lo .. hi); in its FUZZIFY block)" : "")
+                            + (owner.startsWith("input") ? " (give it a RANGE := (lo .. hi);: fuzzylite's in its FUZZIFY block,"
+                                    + " jFuzzyLogic's after its declaration in VAR_INPUT)" : "")
                     : "its slope is unbounded, so no error bound holds for points";
             if (a == null) {
                 a = ShapePoints.approximate(shape, fallbackLo(shape), fallbackHi(shape), 2);

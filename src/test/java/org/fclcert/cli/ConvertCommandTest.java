@@ -74,7 +74,7 @@ class ConvertCommandTest {
                 "examples/jfuzzylogic/tipper.fcl");
         assertEquals(0, with.exitCode(), with.err());
         assertEquals("", with.out());
-        assertTrue(with.err().contains("tipper.fcl:16:5: warning FCL-X002: O-SHAPE-GAUSSIAN: approximated, largest"
+        assertTrue(with.err().contains("tipper.fcl:17:5: warning FCL-X002: O-SHAPE-GAUSSIAN: approximated, largest"
                 + " membership error at most "), with.err());
         assertTrue(with.err().contains("5 approximated, 0 not expressible"), with.err());
         assertTrue(Cli.read(out).startsWith("FUNCTION_BLOCK tipper\n"));
@@ -115,7 +115,7 @@ class ConvertCommandTest {
         Cli j = Cli.run("features", "--dialect", "jfuzzylogic", "examples/jfuzzylogic/fan.fcl");
         assertTrue(j.out().matches("(?s).*\\n  O-METHOD-COGF +jFuzzyLogic's 'COGF', read as CoG +at 31:14\\n.*"),
                 j.out());
-        assertTrue(j.out().matches("(?s).*\\n  O-INPUT-RANGE .* at 15:5\\n.*"), j.out());
+        assertTrue(j.out().matches("(?s).*\\n  O-DECLARATION-RANGE .* at 7:5\\n.*"), j.out());
     }
 
     /**

@@ -17,6 +17,8 @@ import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.syntax.dialect.DialectReaders;
+import org.fclcert.write.DialectWriters;
+import org.fclcert.write.Written;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -346,6 +348,19 @@ class JFuzzyLogicDialectTest {
             assertTrue(iut.load(without) instanceof LoadOutcome.Loaded, "jFuzzyLogic loads it without");
         }
         read(without);
+
+        // where jFuzzyLogic takes an input's RANGE: after its declaration; fclcert reads it there, and writes it there
+        String declared = without.replace("    x : REAL;\n", "    x : REAL;\n    RANGE := (0 .. 10);\n");
+        Program p = read(declared);
+        assertEquals(List.of(0.0, 10.0), p.functionBlocks().get(0).fuzzification("x").orElseThrow().declaredRange()
+                .map(r -> List.of(r.min().value(), r.max().value())).orElseThrow());
+        Written w = DialectWriters.writer(Dialect.JFUZZYLOGIC).write(p);
+        assertTrue(w.text().contains("    x : REAL;\n    RANGE := (0 .. 10);\n"), w.text());
+        assertTrue(w.differences().isEmpty(), w.differences()::toString);
+        try (ImplementationUnderTest iut = open()) {
+            assertTrue(iut.load(declared) instanceof LoadOutcome.Loaded, "jFuzzyLogic loads a RANGE after x's declaration");
+            assertTrue(iut.load(w.text()) instanceof LoadOutcome.Loaded, "jFuzzyLogic loads what fclcert writes");
+        }
     }
 
     /** The implied universes fclcert reads are the ones jFuzzyLogic defuzzifies over. */

@@ -516,6 +516,10 @@ final class DialectParser {
                 next();
             }
         }
+        if (declaredRange.isEmpty()) {
+            // jFuzzyLogic gives an input's RANGE after its declaration in VAR_INPUT, not here
+            declaredRange = Optional.ofNullable(declaredRanges.get(org.fclcert.model.Names.key(variable)));
+        }
         fuzzifications.add(new Fuzzification(variable, Repeated.terms(this, variable, terms, dialect.firstOfRepeatedTerms()),
                 at(start), declaredRange));
     }

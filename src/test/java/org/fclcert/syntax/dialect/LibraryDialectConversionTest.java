@@ -90,7 +90,7 @@ class LibraryDialectConversionTest {
     void everyConstructOfTheExactSamplesHasOneFinding() {
         StandardConversion.Result fan = new StandardConversion().convert(read(new JFuzzyLogicReader(),
                 "examples/jfuzzylogic/fan.fcl"));
-        assertEquals(List.of("O-COMMENT-STYLE", "O-INPUT-RANGE", "O-SHAPE-TRAPEZOID", "O-SHAPE-TRIANGLE",
+        assertEquals(List.of("O-COMMENT-STYLE", "O-DECLARATION-RANGE", "O-SHAPE-TRAPEZOID", "O-SHAPE-TRIANGLE",
                 "O-SHAPE-TRAPEZOID", "O-SHAPE-TRIANGLE", "O-SHAPE-TRIANGLE", "O-SHAPE-TRAPEZOID", "O-METHOD-COGF",
                 "O-COMMENT-STYLE"), ids(fan, Kind.Exact.class));
         StandardConversion.Result parking = new StandardConversion().convert(read(new FuzzyliteReader(),

@@ -66,12 +66,16 @@ class LibraryDialectReadersTest {
                 .term("excellent").orElseThrow().function()).parameters().stream().map(l -> l.value()).toList());
         assertEquals(List.of(25.0, 10.0), ((MembershipFunction.NamedShape) fb.defuzzification("tip").orElseThrow()
                 .term("generous").orElseThrow().function()).parameters().stream().map(l -> l.value()).toList());
+        // jFuzzyLogic's input RANGE stands after the declaration in VAR_INPUT; the reader gives it to the FUZZIFY block
+        assertEquals(List.of(0.0, 10.0), fb.fuzzification("service").orElseThrow().declaredRange()
+                .map(r -> List.of(r.min().value(), r.max().value())).orElseThrow());
+        assertTrue(fb.fuzzification("food").orElseThrow().declaredRange().isEmpty());
         assertEquals(AccumulationMethod.PROBOR, fb.ruleBlocks().get(0).accumulation().orElseThrow().value());
         assertEquals(DefuzzificationMethod.COG, fb.defuzzification("tip").orElseThrow().method().orElseThrow().value());
         assertEquals(List.of(
                 "O-COMMENT-STYLE@1:1",
                 "O-SHAPE-GAUSSIAN@16:5", "O-SHAPE-BELL@17:5", "O-SHAPE-SIGMOID@18:5",
-                "O-INPUT-RANGE@15:5".replace("@15:5", "@15:5"),
+                "O-DECLARATION-RANGE@7:5",
                 "O-SHAPE-TRIANGLE@22:5", "O-SHAPE-TRAPEZOID@23:5",
                 "O-SHAPE-TRIANGLE@28:5", "O-SHAPE-GAUSSIAN@29:5", "O-SHAPE-COSINE@30:5", "O-METHOD-COGF@31:14",
                 "O-ACCU-PROBOR@38:5", "O-COMMENT-STYLE@39:5").stream().sorted(LibraryDialectReadersTest::byPlace).toList(),
@@ -187,7 +191,7 @@ class LibraryDialectReadersTest {
         assertEquals(List.of(), fl.giveaways(valve));
         List<String> j = jfl.giveaways(resource("jfuzzylogic/tipper.fcl")).stream()
                 .map(g -> g.construct() + "@" + g.line()).toList();
-        assertEquals(List.of("'/* */' comment@1", "shape 'gauss'@16", "shape 'gbell'@17", "shape 'sigm'@18",
+        assertEquals(List.of("'/* */' comment@1", "RANGE in a VAR section@7", "shape 'gauss'@16", "shape 'gbell'@17", "shape 'sigm'@18",
                 "shape 'trian'@22", "shape 'trape'@23", "shape 'trian'@28", "shape 'gauss'@29", "shape 'cosine'@30",
                 "'COGF'@31", "'PROBOR'@38", "'//' comment@39"), j);
         List<String> f = fl.giveaways(resource("fuzzylite/obstacle.fcl")).stream()
