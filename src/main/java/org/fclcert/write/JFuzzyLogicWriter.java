@@ -151,7 +151,9 @@ public final class JFuzzyLogicWriter implements DialectWriter {
                 case BELL: return LibraryText.shape("gbell", n, new int[] {1, 2, 0});
                 case SIGMOID: return LibraryText.shape("sigm", n, new int[] {1, 0});
                 case SIGMOID_DIFFERENCE: return LibraryText.shape("dsigm", n, new int[] {1, 0, 2, 3});
-                case COSINE: return LibraryText.shape("cosine", n, new int[] {1, 0});
+                // jFuzzyLogic's cosine takes half the support, then the centre (ShapeNames.JFUZZYLOGIC)
+                case COSINE: return "cosine " + LibraryText.number(n.parameters().get(1).value() / 2) + " "
+                        + LibraryText.number(n.parameters().get(0));
                 default: break;
             }
         }

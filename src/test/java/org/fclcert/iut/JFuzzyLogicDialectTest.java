@@ -363,6 +363,78 @@ class JFuzzyLogicDialectTest {
         }
     }
 
+    /**
+     * Each smooth shape as jFuzzyLogic computes it: two terms per output, clipped at complementary degrees and cut
+     * by the RANGE, so a wrong parameter order or scale moves the CoG. The cosine's first parameter is half its
+     * support (fclcert read it as the whole support until 2026-12-04: 0.02 to 0.2 off on O-SHAPE-COSINE-081).
+     */
+    @Test
+    void smoothShapesAreJFuzzyLogicsOwn() throws Exception {
+        String text = """
+                FUNCTION_BLOCK smooth
+                VAR_INPUT
+                    x : REAL;
+                END_VAR
+                VAR_OUTPUT
+                    c : REAL;
+                    g : REAL;
+                    b : REAL;
+                    s : REAL;
+                    d : REAL;
+                END_VAR
+                FUZZIFY x
+                    TERM lo := (0, 1) (10, 0);
+                    TERM hi := (0, 0) (10, 1);
+                END_FUZZIFY
+                DEFUZZIFY c
+                    TERM p := cosine 2 1;
+                    TERM q := cosine 3 6;
+                    METHOD : COG;
+                    DEFAULT := 0;
+                    RANGE := (0 .. 10);
+                END_DEFUZZIFY
+                DEFUZZIFY g
+                    TERM p := gauss 1 2;
+                    TERM q := gauss 8 1;
+                    METHOD : COG;
+                    DEFAULT := 0;
+                    RANGE := (0 .. 10);
+                END_DEFUZZIFY
+                DEFUZZIFY b
+                    TERM p := gbell 2 3 1;
+                    TERM q := gbell 1 2 7;
+                    METHOD : COG;
+                    DEFAULT := 0;
+                    RANGE := (0 .. 10);
+                END_DEFUZZIFY
+                DEFUZZIFY s
+                    TERM p := sigm -2 3;
+                    TERM q := sigm 1 6;
+                    METHOD : COG;
+                    DEFAULT := 0;
+                    RANGE := (0 .. 10);
+                END_DEFUZZIFY
+                DEFUZZIFY d
+                    TERM p := dsigm 3 1 2 4;
+                    TERM q := dsigm 1 5 4 8;
+                    METHOD : COG;
+                    DEFAULT := 0;
+                    RANGE := (0 .. 10);
+                END_DEFUZZIFY
+                RULEBLOCK r
+                    AND : MIN;
+                    ACT : MIN;
+                    ACCU : MAX;
+                    RULE 1 : IF x IS lo THEN c IS p, g IS p, b IS p, s IS p, d IS p;
+                    RULE 2 : IF x IS hi THEN c IS q, g IS q, b IS q, s IS q, d IS q;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        try (ImplementationUnderTest iut = open()) {
+            assertEquals(5 * 11, compare(iut, text, steps(Map.of("x", new double[] {0, 10}), 11), List.of()));
+        }
+    }
+
     /** The implied universes fclcert reads are the ones jFuzzyLogic defuzzifies over. */
     @Test
     void impliedUniversesAgreeWithJFuzzyLogicsSampledCog() throws Exception {

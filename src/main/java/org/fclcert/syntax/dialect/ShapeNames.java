@@ -46,6 +46,12 @@ final class ShapeNames {
             for (int i = 0; i < order.length; i++) {
                 out[i] = written.get(order[i]);
             }
+            if (kind == ShapeKind.COSINE && this == JFUZZYLOGIC) {
+                // jFuzzyLogic's first parameter is half the support (measured with its jar: 'cosine 4 3' is 0.31
+                // at 0.5 and 5.5, 0 only beyond -1 and 7); fclcert's width is the whole support
+                Literal half = out[1];
+                out[1] = new Literal(2 * half.value(), half.integral(), half.location());
+            }
             return List.of(out);
         }
     }
@@ -56,7 +62,7 @@ final class ShapeNames {
     /**
      * jFuzzyLogic: {@code trian a b c}, {@code trape a b c d}, {@code gauss mean sd}, {@code gauss2 ...},
      * {@code gbell width slope center}, {@code sigm gain center}, {@code dsigm gain1 center1 gain2 center2},
-     * {@code cosine width center}; {@code singletons}, {@code singleton}, {@code piece_wise_linear},
+     * {@code cosine halfWidth center} (its support is center ± halfWidth); {@code singletons}, {@code singleton}, {@code piece_wise_linear},
      * {@code freeform} and {@code function} are its special forms.
      */
     static final Table JFUZZYLOGIC = new Table(Map.of(

@@ -61,10 +61,10 @@ class LibraryDialectReadersTest {
                 .term("good").orElseThrow().function();
         assertEquals(ShapeKind.BELL, bell.kind());
         assertEquals(List.of(5.0, 2.0, 4.0), bell.parameters().stream().map(l -> l.value()).toList());
-        // sigm 2 8 is gain 2, centre 8; cosine 10 25 is width 10, centre 25
+        // sigm 2 8 is gain 2, centre 8; cosine 10 25 is half-width 10, centre 25: support 15 to 35, width 20
         assertEquals(List.of(8.0, 2.0), ((MembershipFunction.NamedShape) fb.fuzzification("service").orElseThrow()
                 .term("excellent").orElseThrow().function()).parameters().stream().map(l -> l.value()).toList());
-        assertEquals(List.of(25.0, 10.0), ((MembershipFunction.NamedShape) fb.defuzzification("tip").orElseThrow()
+        assertEquals(List.of(25.0, 20.0), ((MembershipFunction.NamedShape) fb.defuzzification("tip").orElseThrow()
                 .term("generous").orElseThrow().function()).parameters().stream().map(l -> l.value()).toList());
         // jFuzzyLogic's input RANGE stands after the declaration in VAR_INPUT; the reader gives it to the FUZZIFY block
         assertEquals(List.of(0.0, 10.0), fb.fuzzification("service").orElseThrow().declaredRange()
