@@ -68,6 +68,11 @@ final class DirectParser {
     /** The current token (comments are skipped, after the pre-scan's check of them). */
     private Token t;
     private int type;
+    /**
+     * Set just before declining where the text is surely not in Fcl.g4's language: a rule whose conclusion is
+     * followed by RULE or END_RULEBLOCK, not by its ';'.
+     */
+    private boolean surelyInvalid;
     /** Parenthesis depth exactly as {@link TokenPreScan} counts it (reset at ';' outside OPTIONS). */
     private int depth;
     private boolean inOptions;
@@ -89,23 +94,33 @@ final class DirectParser {
         return program(sourceName, new FclTokenSource(body, sourceName), options, diagnostics);
     }
 
-    /** A program read from a text, with the tokens {@link CommentPlaces} needs to place its comments. */
-    record Read(Program program, List<Token> aroundComments) {
+    /**
+     * What {@link #read} gives: a program read from a text, with the tokens {@link CommentPlaces} needs to place its
+     * comments; or, when it declined ({@code program} null), whether it declined where Fcl.g4 has no way on either
+     * ({@link #surelyInvalid}), so that the text has a syntax error and ANTLR's fast SLL pass would only fail.
+     */
+    record Read(Program program, List<Token> aroundComments, boolean surelyInvalid) {
+        static final Read DECLINED = new Read(null, null, false);
+        static final Read INVALID = new Read(null, null, true);
+
+        boolean declined() {
+            return program == null;
+        }
     }
 
     /**
      * {@link #program(String, String, ReaderOptions, ReaderDiagnostics)}, keeping the tokens around the text's
      * comments as they pass, so that the comments are placed without lexing the text again.
      */
-    static Optional<Read> read(String sourceName, String body, ReaderOptions options,
-            ReaderDiagnostics diagnostics) {
+    static Read read(String sourceName, String body, ReaderOptions options, ReaderDiagnostics diagnostics) {
+        DirectParser parser = new DirectParser(new FclTokenSource(body, sourceName), sourceName, options,
+                diagnostics);
         try {
-            DirectParser parser = new DirectParser(new FclTokenSource(body, sourceName), sourceName, options,
-                    diagnostics);
             parser.aroundComments = new ArrayList<>();
-            return Optional.of(new Read(parser.program(), parser.aroundComments));
+            return new Read(parser.program(), parser.aroundComments, false);
         } catch (RuntimeException declinedOrUnforeseen) {
-            return Optional.empty();    // as program(...) below
+            // as program(...) below; only a decline marked as such says more
+            return declinedOrUnforeseen == Decline.INSTANCE && parser.surelyInvalid ? Read.INVALID : Read.DECLINED;
         }
     }
 
@@ -510,7 +525,16 @@ final class DirectParser {
         Condition condition = condition();
         skip(FclLexer.THEN);
         List<Subconclusion> conclusion = conclusion();
-        skip(FclLexer.SEMI);
+        if (type != FclLexer.SEMI) {
+            // Fcl.g4's fuzzyRule ends 'THEN conclusion SEMI', and a conclusion read up to here can go on only with
+            // ',', IS, WITH or a name or number after WITH (which conclusion() would have taken): RULE and
+            // END_RULEBLOCK, keywords that are never names, leave the grammar no way on, so the text has a syntax
+            // error whatever follows. (This parser takes a subset of the grammar, token by token the same way, and
+            // sees the tokens the pre-scan would hand the grammar: it declines at any token the pre-scan changes.)
+            surelyInvalid = type == FclLexer.RULE || type == FclLexer.END_RULEBLOCK;
+            throw Decline.INSTANCE;
+        }
+        next();
         return new Rule(name, condition, conclusion, at(start));
     }
 

@@ -108,22 +108,37 @@ final class ModelBuilder {
     /**
      * Has the parser hand each rule, function block item and declaration it completes to this builder, which
      * builds it at once and drops its subtree, as long as {@code whole} says the parse has not had to
-     * recover from an error (until then every part it completes is whole).
+     * recover from an error (until then every part it completes is whole). Once it has recovered, the tree is
+     * never built ({@code whole} does not turn true again, and the reader then builds the repaired text's program,
+     * not this tree): each part is only dropped as it completes, the very subtrees dropped above, so that the rest
+     * of a large program after a mistake is not held as a tree for nothing. The error messages still see each
+     * dropped part as such ({@code SyntaxMessages.describeElement}).
      */
     void buildWhile(FclParser parser, java.util.function.BooleanSupplier whole) {
         parser.ruleParsed = ctx -> {
             if (whole.getAsBoolean()) {
                 buildEarly(ctx);
+            } else {
+                ctx.children = null;
             }
         };
         parser.itemParsed = ctx -> {
             if (whole.getAsBoolean()) {
                 buildItemEarly(ctx);
+            } else if (ctx.children != null) {
+                // after a recovery an item may hold error nodes beside its block: drop every block's subtree
+                for (org.antlr.v4.runtime.tree.ParseTree child : ctx.children) {
+                    if (child instanceof ParserRuleContext block) {
+                        block.children = null;
+                    }
+                }
             }
         };
         parser.declarationParsed = ctx -> {
             if (whole.getAsBoolean()) {
                 buildDeclarationEarly(ctx);
+            } else {
+                ctx.children = null;
             }
         };
     }

@@ -19,8 +19,9 @@ import org.fclcert.model.SourceLocation;
  * <p>A text without errors, written as 5.4 writes FCL, is read by the {@link DirectParser} straight into the
  * model. A text it declines goes through the stages: lex; pre-scan the tokens (lexical mistakes, nesting
  * depth, the Annex D errata); parse, first with the fast SLL prediction and, only if that fails, again with
- * full LL and error recovery; report keywords used as names; build the model. Every mistake becomes a located diagnostic; the
- * reader never throws and never prints. Thread-safe: it keeps no state between calls.
+ * full LL and error recovery (straight with LL where the direct parser declined at a syntax error, a rule
+ * without its ';', where SLL could only fail); report keywords used as names; build the model. Every mistake
+ * becomes a located diagnostic; the reader never throws and never prints. Thread-safe: it keeps no state between calls.
  */
 public final class StrictReader implements FclReader {
     /**
@@ -95,16 +96,18 @@ public final class StrictReader implements FclReader {
             ReaderOptions options, boolean directPath) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
+        boolean sll = true;
         if (directPath && options.tokenFilter() == ReaderOptions.TokenFilter.NONE) {
             // most texts have no error: read those without a parse tree, the rest as below
             ReaderDiagnostics.Mark mark = diagnostics.mark();
             // its tokens around the comments are kept, so that placing the comments needs no second lexing
-            Optional<DirectParser.Read> direct = DirectParser.read(sourceName, body, options, diagnostics);
-            if (direct.isPresent()) {
-                return new Outcome(Optional.of(direct.get().program()), Optional.empty(),
-                        direct.get().aroundComments());
+            DirectParser.Read direct = DirectParser.read(sourceName, body, options, diagnostics);
+            if (!direct.declined()) {
+                return new Outcome(Optional.of(direct.program()), Optional.empty(), direct.aroundComments());
             }
             diagnostics.rollback(mark);
+            // where it declined at a syntax error (a rule's ';' missing), ANTLR's SLL pass could only fail
+            sll = !direct.surelyInvalid();
         }
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
@@ -128,17 +131,18 @@ public final class StrictReader implements FclReader {
         if (scan.tooDeep() || diagnostics.tooMany()) {
             return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
+        boolean trySll = sll;
         if (scan.maxDepth() <= SHALLOW_NESTING) {
-            return parseAndBuild(sourceName, scan, diagnostics, options, directPath);
+            return parseAndBuild(sourceName, scan, diagnostics, options, directPath, trySll);
         }
-        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options, directPath));
+        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options, directPath, trySll));
     }
 
     private static Outcome parseAndBuild(String sourceName, TokenPreScan.Result scan,
-            ReaderDiagnostics diagnostics, ReaderOptions options, boolean directPath) {
+            ReaderDiagnostics diagnostics, ReaderOptions options, boolean directPath, boolean sll) {
         ReservedNames reservedNames = new ReservedNames();
         ModelBuilder builder = new ModelBuilder(sourceName, diagnostics, options);
-        Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder);
+        Parsed parsed = parse(scan.tokens(), diagnostics, reservedNames, builder, sll);
         reservedNames.report(diagnostics);
         if (parsed.tree() == null) {
             return Outcome.NONE;    // stopped after too many errors
@@ -192,40 +196,46 @@ public final class StrictReader implements FclReader {
         return result;
     }
 
-    /** SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. */
+    /**
+     * SLL first (fast, correct for valid input); on a syntax error, full LL with recovery and messages. Without
+     * {@code sll} (the direct parser found a syntax error), only the second: the first pass would fail and its
+     * diagnostics and early-built parts be taken back, so the outcome is the same.
+     */
     private static Parsed parse(TokenTable table, ReaderDiagnostics diagnostics, ReservedNames reservedNames,
-            ModelBuilder builder) {
-        FclParser parser = new FclParser(new TableTokenStream(table));
+            ModelBuilder builder, boolean sll) {
+        if (sll) {
+            FclParser parser = new FclParser(new TableTokenStream(table));
+            parser.removeErrorListeners();
+            parser.keywordName = reservedNames;
+            parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
+            parser.setErrorHandler(new BailErrorStrategy());
+            // this pass stops at the first error, so every rule, item and declaration it completes is whole:
+            // build each at once and drop its subtree, so that a large program's trees are never all held
+            builder.buildWhile(parser, () -> true);
+            ReaderDiagnostics.Mark mark = diagnostics.mark();
+            try {
+                return new Parsed(parser.program(), true, List.of());
+            } catch (ParseCancellationException e) {
+                diagnostics.rollback(mark);   // the second pass reports everything again
+                builder.forgetEarly();        // what the first pass built belongs to its abandoned tree
+                reservedNames.reset();
+            }
+        }
+        List<Token> tokens = table.toList();
+        FclParser parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
         parser.removeErrorListeners();
         parser.keywordName = reservedNames;
-        parser.getInterpreter().setPredictionMode(PredictionMode.SLL);
-        parser.setErrorHandler(new BailErrorStrategy());
-        // this pass stops at the first error, so every rule, item and declaration it completes is whole: build
-        // each at once and drop its subtree, so that a large program's trees are never all held
-        builder.buildWhile(parser, () -> true);
-        ReaderDiagnostics.Mark mark = diagnostics.mark();
+        parser.getInterpreter().setPredictionMode(PredictionMode.LL);
+        FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
+        parser.setErrorHandler(strategy);
+        // what this pass completes before its first recovery is whole too (a large program with a
+        // mistake near its end then holds little more tree than one without)
+        builder.buildWhile(parser, () -> !strategy.recovered());
         try {
-            return new Parsed(parser.program(), true, List.of());
-        } catch (ParseCancellationException e) {
-            diagnostics.rollback(mark);   // the second pass reports everything again
-            builder.forgetEarly();        // what the first pass built belongs to its abandoned tree
-            List<Token> tokens = table.toList();
-            parser = new FclParser(new CommonTokenStream(new ListTokenSource(tokens)));
-            parser.removeErrorListeners();
-            reservedNames.reset();
-            parser.keywordName = reservedNames;
-            parser.getInterpreter().setPredictionMode(PredictionMode.LL);
-            FclErrorStrategy strategy = new FclErrorStrategy(diagnostics, tokens);
-            parser.setErrorHandler(strategy);
-            // what this pass completes before its first recovery is whole too (a large program with a
-            // mistake near its end then holds little more tree than one without)
-            builder.buildWhile(parser, () -> !strategy.recovered());
-            try {
-                FclParser.ProgramContext tree = parser.program();
-                return new Parsed(tree, !strategy.recovered(), tokens);
-            } catch (FclErrorStrategy.StopReading stop) {
-                return new Parsed(null, false, tokens);
-            }
+            FclParser.ProgramContext tree = parser.program();
+            return new Parsed(tree, !strategy.recovered(), tokens);
+        } catch (FclErrorStrategy.StopReading stop) {
+            return new Parsed(null, false, tokens);
         }
     }
 }

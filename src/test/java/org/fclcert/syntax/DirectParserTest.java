@@ -158,6 +158,78 @@ class DirectParserTest {
         assertNoFailures();
     }
 
+    /**
+     * Where the fast path declines at a rule whose ';' is missing before the next RULE or END_RULEBLOCK, it says
+     * the text surely has a syntax error, and the reader skips ANTLR's SLL pass: on every project text with each
+     * rule's ';' (up to 20 a text) dropped in turn, the full pipeline (which tries SLL first) indeed has an error,
+     * and the reader with the skip gives exactly what it gives. Drops elsewhere are not marked.
+     */
+    @Test
+    void aRuleWithoutItsSemicolonSkipsTheSllPassWithTheSameResult() throws IOException {
+        int marked = 0;
+        for (String text : projectTexts()) {
+            List<Token> tokens = new ArrayList<>();
+            FclTokenSource lexer = new FclTokenSource(text, "m");
+            for (Token t = lexer.nextToken(); t.getType() != Token.EOF; t = lexer.nextToken()) {
+                tokens.add(t);
+            }
+            int dropped = 0;
+            for (int i = 0; i + 1 < tokens.size() && dropped < 20; i++) {
+                if (tokens.get(i).getType() != FclLexer.SEMI) {
+                    continue;
+                }
+                String without = text.substring(0, tokens.get(i).getStartIndex())
+                        + text.substring(tokens.get(i).getStopIndex() + 1);
+                boolean ruleEnd = tokens.get(i + 1).getType() == FclLexer.RULE
+                        || tokens.get(i + 1).getType() == FclLexer.END_RULEBLOCK;
+                for (ReaderOptions options : OPTIONS) {
+                    DirectParser.Read read = DirectParser.read("t.fcl", without, options,
+                            new ReaderDiagnostics("t.fcl"));
+                    if (read.surelyInvalid()) {
+                        marked++;
+                        assertTrue(read.declined());
+                        assertTrue(new StrictReader(options, false).read("t.fcl", without).hasErrors(), without);
+                    }
+                }
+                if (ruleEnd) {
+                    dropped++;
+                    compareOnAllOptions(without);
+                }
+            }
+        }
+        assertNoFailures();
+        assertTrue(marked > 1000, marked + " texts marked as surely invalid");
+    }
+
+    /** The rule without its ';' in a small text: marked, and the diagnostics the full pipeline gives. */
+    @Test
+    void aMissingSemicolonIsReportedAsWithoutTheSkip() {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM low := (0, 1) (10, 0); END_FUZZIFY
+                DEFUZZIFY y TERM a := 2; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r ACCU : MAX;
+                RULE 1 : IF x IS low THEN y IS a
+                RULE 2 : IF x IS low THEN y IS a;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        assertTrue(DirectParser.read("t.fcl", text, ReaderOptions.STRICT, new ReaderDiagnostics("t.fcl"))
+                .surelyInvalid());
+        // the one error, a malformed conclusion (FCL-S027, 5.2.4; the rule had its condition and THEN): line 7,
+        // column 33, just after the 'a' that ends the rule, where its ';' was due
+        ReadResult read = new StrictReader(ReaderOptions.STRICT, true).read("t.fcl", text);
+        assertEquals(List.of("7:33 ERROR FCL-S027"), read.diagnostics().stream()
+                .map(d -> d.location().line() + ":" + d.location().column() + " " + d.severity() + " "
+                        + d.diagnosticCode().code()).toList());
+        assertTrue(read.repaired().isPresent());
+        assertEquals(2, read.repaired().get().functionBlocks().get(0).ruleBlocks().get(0).rules().size());
+        compareOnAllOptions(text);
+        assertNoFailures();
+    }
+
     /** The three draft forms common in real files are read directly, with the full pipeline's warnings. */
     @Test
     void readsTheCommonDraftFormsWithTheSameWarnings() {

@@ -232,6 +232,35 @@ class SyntaxDiagnosticsTest {
         assertEquals(List.of("FCL-S024@7:20", "FCL-S024@9:18"), codes(text));
     }
 
+    /**
+     * After the parser has recovered from a first error, the rules, items and declarations it completes are dropped
+     * as they complete (ModelBuilder.buildWhile: the tree is never built then); a later message still names such a
+     * part by what it is: rule 3 and the VAR section below were completed after the recovery at rule 1.
+     */
+    @Test
+    void laterMessagesNamePartsCompletedAfterARecovery() {
+        String text = """
+                FUNCTION_BLOCK f
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM low := (0, 1) (10, 0); END_FUZZIFY
+                DEFUZZIFY y TERM a := 2; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY
+                RULEBLOCK r ACCU : MAX;
+                RULE 1 : IF x IS low THEN y IS a
+                RULE 2 : IF x IS low THEN y IS a;
+                RULE 3 : IF x IS low THEN y IS a; 7
+                END_RULEBLOCK
+                VAR x2 : REAL; END_VAR q
+                END_FUNCTION_BLOCK
+                """;
+        List<Diagnostic> all = diagnostics(text);
+        assertEquals(List.of("FCL-S027@7:33", "FCL-S019@9:35", "FCL-S034@11:24"), codes(text));
+        assertEquals("expected 'END_RULEBLOCK', 'AND', 'OR', 'ACT', 'ACCU' or 'RULE' after the rule (5.2.4),"
+                + " found '7'", all.get(1).message());
+        assertTrue(all.get(2).message().endsWith(
+                "or END_FUNCTION_BLOCK after the VAR section (5.2.1, 5.4), found 'q'"), all.get(2).message());
+    }
+
     @Test
     void errorsAreCappedWithOneSummary() {
         StringBuilder body = new StringBuilder("VAR_INPUT\n");
