@@ -264,6 +264,12 @@ public final class FisWriter implements DialectWriter {
             if (!singletons) {
                 cx.findings.differs(m.location(), WriterCode.SAMPLED, "Octave computes " + m.value().keyword() + " of '"
                         + v.name() + "' from 101 samples of its Range (fuzzylite 6 from 100), not exactly");
+                if (m.value() == DefuzzificationMethod.COA) {
+                    // measured: defuzz.m of 0.4.6 ends its bisector with 'crisp_x = midpoint', the sample's index
+                    cx.findings.differs(m.location(), WriterCode.NOT_A_POSITION, "the Octave fuzzy-logic-toolkit 0.4.6's"
+                            + " bisector returns the number of the sample where the area of '" + v.name() + "' halves"
+                            + " (1 to 101), not its position; MATLAB and fuzzylite return the position");
+                }
             }
             Located<AccumulationMethod> a = accu == null ? new Located<>(AccumulationMethod.MAX, d.location()) : accu;
             if (singletons && a.value() != AccumulationMethod.SUM && d.terms().stream()

@@ -35,7 +35,9 @@ public enum WriterCode implements DiagnosticCode {
     NOT_LOADED("FCL-X208", "a construct the library is known not to load"),
     VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x"),
     TSUKAMOTO_INVERSE("FCL-X210", "the library inverts a term otherwise in Tsukamoto's method (fuzzylite 6.0: SShape,"
-            + " ZShape, Concave; pyfuzzylite 8: a Sigmoid at degree 1 or 0)");
+            + " ZShape, Concave; pyfuzzylite 8: a Sigmoid at degree 1 or 0)"),
+    NOT_A_POSITION("FCL-X211", "the library's defuzzification returns something other than a position on the output's"
+            + " range (the Octave fuzzy-logic-toolkit 0.4.6's bisector: the number of a sample)");
 
     private final Entry entry;
 

@@ -165,6 +165,32 @@ class OctaveFltIutTest {
         }
     }
 
+    /**
+     * The known difference FCL-X211, measured: the toolkit's bisector (CoA) returns the number of the sample where
+     * the area halves, not its position. Over RANGE 0..100 its 101 samples are 0, 1, ..., 100, so sample number
+     * n sits at n - 1: the answer is an integer one above the centre of area, to within a sample. (At x below 5 the
+     * small term holds more than half the area, so the point that halves it is unique; at x = 5 any point of the
+     * gap between the terms halves it, and the toolkit answers 61, fclcert the gap's middle, 50.)
+     */
+    @Test
+    void itsBisectorReturnsTheNumberOfASampleNotItsPosition() throws Exception {
+        String coa = MAMDANI.replace("METHOD : COG;", "METHOD : CoA;");
+        Written w = DialectWriters.writer(Dialect.FIS).write(program(coa));
+        assertTrue(w.differences().stream().anyMatch(d -> d.code().equals("FCL-X211")), w.differences()::toString);
+        FunctionBlockInstance reference = Evaluator.load(program(coa)).newInstance("heater");
+        try (ImplementationUnderTest iut = Iuts.open("octave-flt", OPTIONS)) {
+            iut.hello();
+            assertEquals(new LoadOutcome.Loaded(List.of("heater")), iut.load(w.text()));
+            for (double x : new double[] {1.0, 2.5, 4.0}) {
+                reference.setInputs(x);
+                reference.evaluate();
+                double y = iut.eval(null, Map.of("x", x)).get("y");
+                assertEquals(Math.rint(y), y, 0.0, "a sample's number at x = " + x);
+                assertEquals(reference.output(0), y - 1, 1.0, "one above the centre of area at x = " + x);
+            }
+        }
+    }
+
     @Test
     void textThatIsNoFisIsRejectedWithReadfissMessage() throws Exception {
         try (ImplementationUnderTest iut = Iuts.open("octave-flt", OPTIONS)) {
