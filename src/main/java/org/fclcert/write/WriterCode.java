@@ -35,7 +35,9 @@ public enum WriterCode implements DiagnosticCode {
     NOT_LOADED("FCL-X208", "a construct the library is known not to load"),
     VERTICAL_EDGE("FCL-X209", "the library gives a vertical edge of a term another degree at its x"),
     TSUKAMOTO_INVERSE("FCL-X210", "the library inverts a term otherwise in Tsukamoto's method (fuzzylite 6.0: SShape,"
-            + " ZShape, Concave; pyfuzzylite 8: a Sigmoid at degree 1 or 0)");
+            + " ZShape, Concave; pyfuzzylite 8: a Sigmoid at degree 1 or 0)"),
+    SHAPE_FORMULA("FCL-X211", "the library computes a named shape by another formula (the Octave toolkit 0.4.6's dsigmf:"
+            + " 0 where fuzzylite takes the absolute difference)");
 
     private final Entry entry;
 
