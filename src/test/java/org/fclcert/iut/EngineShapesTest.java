@@ -30,11 +30,13 @@ import org.junit.jupiter.api.io.TempDir;
  * Every named membership function of FIS and FLL as the engines themselves compute it, against fclcert's reading of
  * the same text (reader, model, evaluator: the degrees of the input's terms in an evaluation's trace). FIS: Octave's
  * fuzzy-logic-toolkit reads the file ({@code readfis}) and evaluates each term with {@code evalmf}; FLL: pyfuzzylite
- * 8.0.6 imports the file ({@code FllImporter}) and evaluates each term's {@code membership}. Each shape with several
- * parameter sets (asymmetric, reversed, overlapping), each at 50 grid points plus the integers −12…12 (where most
- * breakpoints lie), to 1e-9. Where an engine computes otherwise on purpose, the test asserts that difference as
- * worked out from the engine's own source (named at the assertion). Skipped outside CI when Octave with the toolkit
- * or pyfuzzylite is missing (scripts/ensure-octave, scripts/ensure-pyfuzzylite); with CI set, their absence fails.
+ * 8.0.6 imports the file ({@code FllImporter}) and evaluates each term's {@code membership}; and fuzzylite 6.0's own
+ * reading of FIS (its command line's FisImporter, exporting FLL for pyfuzzylite), fuzzylite's additions included.
+ * Each shape with several parameter sets (asymmetric, reversed, touching corners), each at 50 grid points plus the
+ * integers −12…12 (where most breakpoints lie), to 1e-9. Where an engine computes otherwise on purpose, the test asserts that difference as
+ * worked out from the engine's own source (named at the assertion). Skipped outside CI when Octave with the toolkit,
+ * pyfuzzylite or fuzzylite is missing (scripts/ensure-octave, scripts/ensure-pyfuzzylite, scripts/ensure-fuzzylite);
+ * with CI set, their absence fails.
  */
 class EngineShapesTest {
     private static final double TOLERANCE = 1e-9;
@@ -318,18 +320,66 @@ class EngineShapesTest {
         String text = fll(FLL_TERMS);
         Path file = dir.resolve("shapes.fll");
         Files.writeString(file, text, StandardCharsets.UTF_8);
+        double[][] theirs = pyfuzzylite(python, file, FLL_TERMS.size(), x, dir);
+        double[][] ours = fclcert(new FllReader(), "shapes.fll", text, FLL_TERMS.size(), x);
+        Compared c = compare(FLL_TERMS, theirs, ours, x, "pyfuzzylite", Map.of());
+        System.out.println("pyfuzzylite membership: " + FLL_TERMS.size() + " terms, " + c.points()
+                + " points, largest difference " + c.max() + " " + c.worst());
+        assertEquals(FLL_TERMS.size() * x.length, c.points());
+    }
+    /** pyfuzzylite's membership of each term of input x of the FLL file, at each point: [term][point]. */
+    private static double[][] pyfuzzylite(Path python, Path fll, int terms, double[] x, Path dir) throws Exception {
         Path script = dir.resolve("shapes.py");
         Files.writeString(script, "import sys\nimport fuzzylite as fl\n"
                 + "engine = fl.FllImporter().from_string(open(sys.argv[1]).read())\n"
                 + "xs = [float(v) for v in '" + list(x) + "'.split()]\n"
                 + "for t in engine.input_variable('x').terms:\n"
                 + "    print(' '.join(repr(float(t.membership(v))) for v in xs))\n", StandardCharsets.UTF_8);
-        double[][] theirs = run(List.of(python.toString(), script.toString(), file.toString()), FLL_TERMS.size(),
-                x.length);
-        double[][] ours = fclcert(new FllReader(), "shapes.fll", text, FLL_TERMS.size(), x);
-        Compared c = compare(FLL_TERMS, theirs, ours, x, "pyfuzzylite", Map.of());
-        System.out.println("pyfuzzylite membership: " + FLL_TERMS.size() + " terms, " + c.points()
-                + " points, largest difference " + c.max() + " " + c.worst());
-        assertEquals(FLL_TERMS.size() * x.length, c.points());
+        return run(List.of(python.toString(), script.toString(), fll.toString()), terms, x.length);
+    }
+
+    /** fuzzylite's own FIS functions, beyond MATLAB's (its FisImporter's names; Octave has none of them). */
+    private static final List<String[]> FUZZYLITE_FIS_TERMS = List.of(
+            new String[] {"rampmf", "-4 6"}, new String[] {"rampmf", "5 -3"}, new String[] {"rectmf", "-3 4"},
+            new String[] {"concavemf", "1 6"}, new String[] {"concavemf", "4 -2"},
+            new String[] {"cosinemf", "2 7"}, new String[] {"cosinemf", "-5 3"},
+            new String[] {"spikemf", "1 4"}, new String[] {"spikemf", "-2 0.5"},
+            new String[] {"discretemf", "-10 0 -2 1 5 0.3 12 0"});
+
+    /**
+     * fuzzylite 6.0's own reading of FIS (its FisImporter, through its command line, exporting FLL, whose terms
+     * pyfuzzylite then evaluates) is fclcert's: every MATLAB function above and fuzzylite's additions, dsigmf
+     * included (|f1 − f2| on both sides). Parameters have at most three decimals, which fuzzylite's FLL keeps.
+     */
+    @Test
+    void fuzzylitesReadingOfFisIsFclcerts(@TempDir Path dir) throws Exception {
+        Path binary = Path.of("/usr/bin/fuzzylite");
+        if (!Files.isExecutable(binary)) {
+            if (System.getenv("CI") != null) {
+                fail("CI is set but fuzzylite is not installed (scripts/ensure-fuzzylite installs it)");
+            }
+            assumeTrue(false, "fuzzylite is not installed (scripts/ensure-fuzzylite)");
+        }
+        Pyfuzzylite.assumeInstalled();
+        Path python = PyfuzzyliteIut.defaultPython().orElseThrow();
+        List<String[]> terms = new ArrayList<>(FIS_TERMS);
+        terms.addAll(FUZZYLITE_FIS_TERMS);
+        double[] x = points();
+        String text = fis(terms);
+        Path file = dir.resolve("shapes.fis");
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        Path fll = dir.resolve("shapes.fll");
+        Process p = new ProcessBuilder(binary.toString(), "-i", file.toString(), "-if", "fis", "-o", fll.toString(),
+                "-of", "fll").redirectErrorStream(true).redirectInput(ProcessBuilder.Redirect.from(Path.of("/dev/null")
+                .toFile())).start();
+        String said = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "fuzzylite did not end");
+        assertTrue(Files.isRegularFile(fll), said);
+        double[][] theirs = pyfuzzylite(python, fll, terms.size(), x, dir);
+        double[][] ours = fclcert(new FisReader(), "shapes.fis", text, terms.size(), x);
+        Compared c = compare(terms, theirs, ours, x, "fuzzylite FIS", Map.of());
+        System.out.println("fuzzylite 6 FisImporter + pyfuzzylite membership: " + terms.size() + " FIS functions, "
+                + c.points() + " points, largest difference " + c.max() + " " + c.worst());
+        assertEquals(terms.size() * x.length, c.points());
     }
 }
