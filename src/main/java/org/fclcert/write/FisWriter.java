@@ -341,7 +341,7 @@ public final class FisWriter implements DialectWriter {
                         + " b is no integer");
             }
             if (n.kind() == ShapeKind.SIGMOID_DIFFERENCE) {
-                double[] worst = sigmoidsCrossing(n.values());
+                double[] worst = FisReader.dsigmfClamped(n.values());
                 if (worst[1] > 1e-9) {
                     cx.findings.differs(t.location(), WriterCode.SHAPE_FORMULA, "sigmoid difference '" + t.name()
                             + "': where its right sigmoid exceeds its left one (by up to "
@@ -356,32 +356,6 @@ public final class FisWriter implements DialectWriter {
                 written[order[k]] = p.get(k);
             }
             return "'" + fis.get().getKey() + "'," + list(written);
-        }
-
-        /**
-         * Where a sigmoid difference (canonical: left, rising, falling, right) has f2 &gt; f1, which the Octave toolkit's
-         * dsigmf clamps to 0 (its dsigmf.m: max (0, min (1, f1 - f2))): {x, the largest f2 - f1}, {NaN, 0} when none.
-         * f2 &gt; f1 exactly where falling·(x - right) &gt; rising·(x - left), a half-line unless the slopes are equal;
-         * both sigmoids are within e^-40 of 0 or 1 farther than 40 / slope from their inflections, so the window
-         * below holds every difference above 1e-17.
-         */
-        private static double[] sigmoidsCrossing(double[] q) {
-            double slope = Math.min(Math.abs(q[1]), Math.abs(q[2]));
-            if (!(slope > 0)) {
-                return new double[] {Double.NaN, 0};
-            }
-            double lo = Math.min(q[0], q[3]) - 40 / slope;
-            double hi = Math.max(q[0], q[3]) + 40 / slope;
-            double[] worst = {Double.NaN, 0};
-            for (int i = 0; i <= 8000; i++) {
-                double x = lo + (hi - lo) * i / 8000;
-                double d = ShapeKind.SIGMOID.degree(new double[] {q[3], q[2]}, x)
-                        - ShapeKind.SIGMOID.degree(new double[] {q[0], q[1]}, x);
-                if (d > worst[1]) {
-                    worst = new double[] {x, d};
-                }
-            }
-            return worst;
         }
 
         /** Points as trimf or trapmf when they are a triangle, a trapezoid or a shoulder of degrees 0 and 1. */

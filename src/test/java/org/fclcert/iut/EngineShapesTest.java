@@ -307,6 +307,12 @@ class EngineShapesTest {
         }
         assertEquals(0.5 - 1 / (1 + Math.exp(8)), ours[ds][at], 1e-12);
         assertEquals(0.0, theirs[ds][at]);
+        // and fclcert's reader says so (FCL-W316) for that term only: 3 -4 1.5 5 differs by less than 1e-9
+        List<String> said = Analysis.analyze(new FisReader(), "shapes.fis", text).diagnostics().stream()
+                .filter(d -> d.code().equals("FCL-W316")).map(d -> d.message()).toList();
+        assertEquals(1, said.size(), said.toString());
+        assertTrue(said.get(0).startsWith("dsigmf 't" + (ds + 1) + "' of 'x': read as fuzzylite reads it, |f1 - f2|;"
+                + " where its second sigmoid exceeds its first (by up to 0.730 at 0.4"), said.toString());
         System.out.println("Octave evalmf: " + FIS_TERMS.size() + " membership functions, " + c.points()
                 + " points, largest difference " + c.max() + " (dsigmf against Octave's clamped formula) " + c.worst());
         assertEquals(FIS_TERMS.size() * x.length, c.points());
