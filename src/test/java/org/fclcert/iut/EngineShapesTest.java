@@ -21,6 +21,8 @@ import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.Trace;
 import org.fclcert.model.Program;
 import org.fclcert.syntax.FclReader;
+import org.fclcert.write.DialectWriters;
+import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.syntax.dialect.FisReader;
 import org.fclcert.syntax.dialect.FllReader;
 import org.junit.jupiter.api.Test;
@@ -32,6 +34,8 @@ import org.junit.jupiter.api.io.TempDir;
  * fuzzy-logic-toolkit reads the file ({@code readfis}) and evaluates each term with {@code evalmf}; FLL: pyfuzzylite
  * 8.0.6 imports the file ({@code FllImporter}) and evaluates each term's {@code membership}; and fuzzylite 6.0's own
  * reading of FIS (its command line's FisImporter, exporting FLL for pyfuzzylite), fuzzylite's additions included.
+ * Octave and pyfuzzylite also evaluate what fclcert's FIS and FLL writers write of the program read (what
+ * {@code --present-as fis|fll} sends them).
  * Each shape with several parameter sets (asymmetric, reversed, touching corners), each at 50 grid points plus the
  * integers −12…12 (where most breakpoints lie), to 1e-9. Where an engine computes otherwise on purpose, the test asserts that difference as
  * worked out from the engine's own source (named at the assertion). Skipped outside CI when Octave with the toolkit,
@@ -265,11 +269,7 @@ class EngineShapesTest {
         all.addAll(FIS_REFUSED);
         Path file = dir.resolve("shapes.fis");
         Files.writeString(file, fis(all), StandardCharsets.UTF_8);
-        Path script = dir.resolve("shapes.m");
-        Files.writeString(script, "pkg load fuzzy-logic-toolkit\nfis = readfis('" + file + "');\nx = [" + list(x)
-                + "];\nfor k = 1:numel(fis.input(1).mf)\n  mf = fis.input(1).mf(k);\n"
-                + "  printf('%.17g ', evalmf(x, mf.params, mf.type)); printf('\\n');\nend\n", StandardCharsets.UTF_8);
-        double[][] theirs = run(List.of("octave-cli", "-q", "--no-gui", script.toString()), all.size(), x.length);
+        double[][] theirs = octave(file, all.size(), x, dir);
         // what fclcert refuses, Octave computes by the formula 1 / (1 + |(x − c)/a|^(2b)) (gbellmf.m)
         Analysis refused = Analysis.analyze(new FisReader(), "refused.fis", fis(FIS_REFUSED));
         assertEquals(List.of("t1", "t2"), refused.diagnostics().stream().filter(d -> d.code().equals("FCL-C041"))
@@ -313,6 +313,11 @@ class EngineShapesTest {
         assertEquals(1, said.size(), said.toString());
         assertTrue(said.get(0).startsWith("dsigmf 't" + (ds + 1) + "' of 'x': read as fuzzylite reads it, |f1 - f2|;"
                 + " where its second sigmoid exceeds its first (by up to 0.730 at 0.4"), said.toString());
+        // fclcert's FIS writer, on the program read, gives Octave the same functions (FisWriter's order is the reader's)
+        Path again = dir.resolve("written.fis");
+        Files.writeString(again, written(new FisReader(), text, Dialect.FIS), StandardCharsets.UTF_8);
+        Compared w = compare(FIS_TERMS, octave(again, FIS_TERMS.size(), x, dir), ours, x, "Octave (written)", deviations);
+        assertEquals(FIS_TERMS.size() * x.length, w.points());
         System.out.println("Octave evalmf: " + FIS_TERMS.size() + " membership functions, " + c.points()
                 + " points, largest difference " + c.max() + " (dsigmf against Octave's clamped formula) " + c.worst());
         assertEquals(FIS_TERMS.size() * x.length, c.points());
@@ -329,6 +334,12 @@ class EngineShapesTest {
         double[][] theirs = pyfuzzylite(python, file, FLL_TERMS.size(), x, dir);
         double[][] ours = fclcert(new FllReader(), "shapes.fll", text, FLL_TERMS.size(), x);
         Compared c = compare(FLL_TERMS, theirs, ours, x, "pyfuzzylite", Map.of());
+        // fclcert's FLL writer, on the program read, gives pyfuzzylite the same terms
+        Path again = dir.resolve("written.fll");
+        Files.writeString(again, written(new FllReader(), text, Dialect.FLL), StandardCharsets.UTF_8);
+        Compared w = compare(FLL_TERMS, pyfuzzylite(python, again, FLL_TERMS.size(), x, dir), ours, x,
+                "pyfuzzylite (written)", Map.of());
+        assertEquals(FLL_TERMS.size() * x.length, w.points());
         System.out.println("pyfuzzylite membership: " + FLL_TERMS.size() + " terms, " + c.points()
                 + " points, largest difference " + c.max() + " " + c.worst());
         assertEquals(FLL_TERMS.size() * x.length, c.points());
@@ -387,5 +398,19 @@ class EngineShapesTest {
         System.out.println("fuzzylite 6 FisImporter + pyfuzzylite membership: " + terms.size() + " FIS functions, "
                 + c.points() + " points, largest difference " + c.max() + " " + c.worst());
         assertEquals(terms.size() * x.length, c.points());
+    }
+    /** Octave's evalmf of each membership function of input 1 of the FIS file as readfis reads it: [term][point]. */
+    private static double[][] octave(Path fis, int terms, double[] x, Path dir) throws Exception {
+        Path script = dir.resolve("shapes.m");
+        Files.writeString(script, "pkg load fuzzy-logic-toolkit\nfis = readfis('" + fis + "');\nx = [" + list(x)
+                + "];\nfor k = 1:numel(fis.input(1).mf)\n  mf = fis.input(1).mf(k);\n"
+                + "  printf('%.17g ', evalmf(x, mf.params, mf.type)); printf('\\n');\nend\n", StandardCharsets.UTF_8);
+        return run(List.of("octave-cli", "-q", "--no-gui", script.toString()), terms, x.length);
+    }
+
+    /** What fclcert's writer for the dialect writes of the program fclcert reads from the text. */
+    private static String written(FclReader reader, String text, Dialect to) {
+        Program program = Analysis.analyze(reader, "shapes", text).program().orElseThrow();
+        return DialectWriters.writer(to).write(program).text();
     }
 }
