@@ -319,7 +319,8 @@ class EngineShapesTest {
         Compared w = compare(FIS_TERMS, octave(again, FIS_TERMS.size(), x, dir), ours, x, "Octave (written)", deviations);
         assertEquals(FIS_TERMS.size() * x.length, w.points());
         System.out.println("Octave evalmf: " + FIS_TERMS.size() + " membership functions, " + c.points()
-                + " points, largest difference " + c.max() + " (dsigmf against Octave's clamped formula) " + c.worst());
+                + " points, largest difference " + c.max() + " (dsigmf against Octave's clamped formula), written by FisWriter "
+                + w.max() + " " + c.worst());
         assertEquals(FIS_TERMS.size() * x.length, c.points());
     }
 
@@ -341,7 +342,7 @@ class EngineShapesTest {
                 "pyfuzzylite (written)", Map.of());
         assertEquals(FLL_TERMS.size() * x.length, w.points());
         System.out.println("pyfuzzylite membership: " + FLL_TERMS.size() + " terms, " + c.points()
-                + " points, largest difference " + c.max() + " " + c.worst());
+                + " points, largest difference " + c.max() + ", written by FllWriter " + w.max() + " " + c.worst());
         assertEquals(FLL_TERMS.size() * x.length, c.points());
     }
     /** pyfuzzylite's membership of each term of input x of the FLL file, at each point: [term][point]. */
