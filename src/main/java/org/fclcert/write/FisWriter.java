@@ -340,6 +340,22 @@ public final class FisWriter implements DialectWriter {
                 java.util.Arrays.sort(s);
                 return trapmf(s[0], s[s.length / 2], s[s.length / 2], s[s.length - 1]);
             }
+            if (n.kind() == ShapeKind.BELL && p.get(2) != Math.rint(p.get(2))) {
+                // are_mf_params.m of the toolkit: gbellmf's b must be an integer (MATLAB takes any b)
+                cx.findings.differs(t.location(), WriterCode.NOT_LOADED, "bell '" + t.name() + "' has slope "
+                        + LibraryText.number(p.get(2)) + ": the Octave fuzzy-logic-toolkit 0.4.6 refuses a gbellmf whose"
+                        + " b is no integer");
+            }
+            if (n.kind() == ShapeKind.SIGMOID_DIFFERENCE) {
+                double[] worst = FisReader.dsigmfClamped(n.values());
+                if (worst[1] > 1e-9) {
+                    cx.findings.differs(t.location(), WriterCode.SHAPE_FORMULA, "sigmoid difference '" + t.name()
+                            + "': where its right sigmoid exceeds its left one (by up to "
+                            + String.format(java.util.Locale.ROOT, "%.3g", worst[1]) + " at " + String.format(
+                            java.util.Locale.ROOT, "%.4g", worst[0]) + "), Octave's dsigmf gives 0, fuzzylite and fclcert"
+                            + " |f1 - f2|");
+                }
+            }
             int[] order = fis.get().getValue();
             double[] written = new double[order.length];
             for (int k = 0; k < order.length; k++) {

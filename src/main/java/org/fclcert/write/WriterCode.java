@@ -37,7 +37,9 @@ public enum WriterCode implements DiagnosticCode {
     TSUKAMOTO_INVERSE("FCL-X210", "the library inverts a term otherwise in Tsukamoto's method (fuzzylite 6.0: SShape,"
             + " ZShape, Concave; pyfuzzylite 8: a Sigmoid at degree 1 or 0)"),
     NOT_A_POSITION("FCL-X211", "the library's defuzzification returns something other than a position on the output's"
-            + " range (the Octave fuzzy-logic-toolkit 0.4.6's bisector: the number of a sample)");
+            + " range (the Octave fuzzy-logic-toolkit 0.4.6's bisector: the number of a sample)"),
+    SHAPE_FORMULA("FCL-X212", "the library computes a named shape by another formula (the Octave toolkit 0.4.6's dsigmf:"
+            + " 0 where fuzzylite takes the absolute difference)");
 
     private final Entry entry;
 

@@ -133,4 +133,55 @@ class FisWriterTest {
         assertEquals("FCL-X109", losses(twice).get(0));
         assertTrue(twice.notExpressible().get(0).message().contains("names input 'x' twice"));
     }
+    /**
+     * What the Octave toolkit computes otherwise for named shapes it has (measured against it in EngineShapesTest):
+     * its dsigmf clamps f1 - f2 at 0 where fuzzylite, and fclcert's reading, take |f1 - f2| (left 2, rising 2,
+     * falling 0.5, right -2: f2 - f1 peaks at 0.72991 near x = 0.4794, found by a golden-section search in Python);
+     * equal slopes with left below right never cross; and its gbellmf refuses a b that is no integer.
+     */
+    @Test
+    void octavesOwnFormulasOfDsigmfAndGbellmfAreSaid() {
+        String fcl = """
+                FUNCTION_BLOCK shapes
+                VAR_INPUT
+                  x: REAL;
+                END_VAR
+                VAR_OUTPUT
+                  y: REAL;
+                END_VAR
+                FUZZIFY x
+                  RANGE := (-10.000 .. 10.000);
+                  TERM d := SigmoidDifference 2.000 2.000 0.500 -2.000;
+                  TERM e := SigmoidDifference 2.000 3.000 3.000 7.000;
+                  TERM b := Bell 5.000 2.000 2.500;
+                  TERM c := Bell 5.000 2.000 3.000;
+                END_FUZZIFY
+                DEFUZZIFY y
+                  RANGE := (0.000 .. 1.000);
+                  TERM one := 1.000;
+                  METHOD : COGS;
+                  ACCU : MAX;
+                  DEFAULT := nan;
+                END_DEFUZZIFY
+                RULEBLOCK rules
+                  RULE 1 : if x is d then y is one
+                  RULE 2 : if x is e then y is one
+                  RULE 3 : if x is b then y is one
+                  RULE 4 : if x is c then y is one
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """;
+        Analysis a = Analysis.analyze(new org.fclcert.syntax.dialect.FuzzyliteReader(), "s.fcl", fcl);
+        Program p = a.program().orElseThrow(() -> new AssertionError(a.diagnostics().toString()));
+        Written w = DialectWriters.writer(Dialect.FIS).write(p);
+        assertTrue(w.text().contains("MF1='d':'dsigmf',[2 2 0.5 -2]"), w.text());
+        assertTrue(w.text().contains("MF3='b':'gbellmf',[2 2.5 5]"), w.text());
+        List<String> said = w.differences().stream().filter(d -> d.code().equals("FCL-X212")
+                || d.message().contains("gbellmf")).map(d -> d.code() + " " + d.message()).toList();
+        assertEquals(2, said.size(), said.toString());
+        assertTrue(said.get(0).startsWith("FCL-X212 sigmoid difference 'd': where its right sigmoid exceeds its left one"
+                + " (by up to 0.730 at 0.4"), said.toString());
+        assertEquals("FCL-X208 bell 'b' has slope 2.5: the Octave fuzzy-logic-toolkit 0.4.6 refuses a gbellmf whose b is"
+                + " no integer", said.get(1));
+    }
 }

@@ -105,7 +105,10 @@ public enum DialectCode implements DiagnosticCode {
                     + " rules concluding one term by AggMethod)"),
     FIS_HEDGE("FCL-W315", Severity.WARNING, "Table 10",
             "a hedge in a FIS rule that Octave evaluates otherwise than fuzzylite (read as fuzzylite): 'extremely' (.3)"
-                    + " Octave cubes; a hedge in a consequent Octave applies to the output's term, not the rule's degree");
+                    + " Octave cubes; a hedge in a consequent Octave applies to the output's term, not the rule's degree"),
+    FIS_DSIGMF("FCL-W316", Severity.WARNING, "Table 10",
+            "a FIS dsigmf whose second sigmoid exceeds its first somewhere, read as fuzzylite (the absolute difference):"
+                    + " the Octave toolkit gives 0 there");
 
     private final Entry entry;
 

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.fclcert.model.ShapeKind;
 import org.fclcert.syntax.ReadResult;
 
 /**
@@ -88,6 +89,33 @@ public final class FisReader implements DialectReader {
     public static Optional<Map.Entry<String, int[]>> fisShape(String fuzzylite) {
         return SHAPES.entrySet().stream().filter(e -> e.getValue().fuzzylite().equals(fuzzylite)
                 && e.getValue().order() != null).findFirst().map(e -> Map.entry(e.getKey(), e.getValue().order().clone()));
+    }
+
+    /**
+     * Where a sigmoid difference (fclcert's canonical parameters: left, rising, falling, right) has f2 &gt; f1, which
+     * the Octave toolkit 0.4.6's dsigmf bounds to 0 (its dsigmf.m: max (0, min (1, f1 - f2))) while fuzzylite, and
+     * this reader, take |f1 - f2|: {x, the largest f2 - f1}, {NaN, 0} where there is none. f2 &gt; f1 exactly where
+     * falling·(x - right) &gt; rising·(x - left), a half-line unless the slopes are equal; both sigmoids are within
+     * e^-40 of 0 or 1 farther than 40 / slope from their inflections, so the window searched (8000 steps) holds
+     * every difference above 1e-17.
+     */
+    public static double[] dsigmfClamped(double[] q) {
+        double slope = q.length == 4 ? Math.min(Math.abs(q[1]), Math.abs(q[2])) : Double.NaN;
+        if (!(slope > 0) || !Double.isFinite(q[0]) || !Double.isFinite(q[3])) {
+            return new double[] {Double.NaN, 0};
+        }
+        double lo = Math.min(q[0], q[3]) - 40 / slope;
+        double hi = Math.max(q[0], q[3]) + 40 / slope;
+        double[] worst = {Double.NaN, 0};
+        for (int i = 0; i <= 8000; i++) {
+            double x = lo + (hi - lo) * i / 8000;
+            double d = ShapeKind.SIGMOID.degree(new double[] {q[3], q[2]}, x)
+                    - ShapeKind.SIGMOID.degree(new double[] {q[0], q[1]}, x);
+            if (d > worst[1]) {
+                worst = new double[] {x, d};
+            }
+        }
+        return worst;
     }
 
     private static Optional<String> inverse(Map<String, String> names, String fcl) {
@@ -392,6 +420,19 @@ public final class FisReader implements DialectReader {
             t.error(i, DialectCode.SYNTAX, "'" + m.group(3) + "' takes " + shape.order().length + " parameters, '"
                     + m.group(2) + "' has " + numbers.size());
             return;
+        }
+        if (m.group(3).equals("dsigmf")) {
+            double[] q = new double[4];
+            for (int k = 0; k < 4; k++) {
+                q[k] = Double.parseDouble(numbers.get(shape.order()[k]).replace("inf", "Infinity").replace("nan", "NaN"));
+            }
+            double[] worst = dsigmfClamped(q);
+            if (worst[1] > 1e-9) {
+                t.warn(i, DialectCode.FIS_DSIGMF, "dsigmf '" + m.group(2) + "' of '" + variable + "': read as fuzzylite"
+                        + " reads it, |f1 - f2|; where its second sigmoid exceeds its first (by up to "
+                        + String.format(Locale.ROOT, "%.3g", worst[1]) + " at " + String.format(Locale.ROOT, "%.4g",
+                        worst[0]) + ") the Octave toolkit gives 0");
+            }
         }
         StringBuilder b = new StringBuilder("TERM ").append(name).append(" := ").append(shape.fuzzylite());
         for (int k = 0; k < numbers.size(); k++) {
