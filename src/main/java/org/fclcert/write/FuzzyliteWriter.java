@@ -169,8 +169,10 @@ public final class FuzzyliteWriter implements DialectWriter {
             default -> a.name();
         }).append(";\n");
         if (a == AccumulationMethod.NSUM) {
-            cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite computes ACCU NSUM of '" + name
-                    + "' as BSUM");
+            // measured on the semantic axis: fuzzylite 6.0 fails E-ACCU-NSUM-002 and O-ACCU-NSUM-081 with BSUM's
+            // values, jfuzzylite 6.0.1 passes both and E-ACCU-NSUM-001 (its NormalizedSum normalises)
+            cx.findings.differs(accu.location(), WriterCode.NSUM, "fuzzylite 6.0 (the C++ library) computes ACCU NSUM"
+                    + " of '" + name + "' as BSUM (jfuzzylite 6.0.1 computes the standard's NSUM)");
         }
         Optional<DefaultValue> def = d.defaultValue();
         if (def.isPresent() && def.get() instanceof DefaultValue.Constant c) {

@@ -14,7 +14,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.fclcert.check.Analysis;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FunctionBlockInstance;
@@ -253,16 +252,7 @@ class EngineShapesTest {
 
     @Test
     void octavesMembershipFunctionsAreFclcertsReadingOfFis(@TempDir Path dir) throws Exception {
-        boolean cli = Stream.of(System.getenv().getOrDefault("PATH", "").split(":"))
-                .anyMatch(d -> !d.isEmpty() && Files.isExecutable(Path.of(d, "octave-cli")));
-        boolean toolkit = Files.isDirectory(Path.of("/usr/share/octave/packages")) && Stream.of(Path.of(
-                "/usr/share/octave/packages").toFile().list()).anyMatch(n -> n.startsWith("fuzzy-logic-toolkit-"));
-        if (!cli || !toolkit) {
-            if (System.getenv("CI") != null) {
-                fail("CI is set but octave-cli or the fuzzy-logic-toolkit is missing (scripts/ensure-octave installs them)");
-            }
-            assumeTrue(false, "octave-cli or the fuzzy-logic-toolkit is not installed (scripts/ensure-octave)");
-        }
+        OctaveFltIutTest.octave();
         double[] x = points();
         String text = fis(FIS_TERMS);
         List<String[]> all = new ArrayList<>(FIS_TERMS);
