@@ -21,10 +21,14 @@ def testcases = suite.getElementsByTagName('testcase')
 def nsumCases = (0..<testcases.length).collect { testcases.item(it) }
         .findAll { it.getAttribute('classname') == 'fclcert.E-ACCU-NSUM' }
 assert !nsumCases.isEmpty()
+// skipped as not claimed, or (a case written in a library's dialect, O-ACCU-NSUM-081) as not presentable to it
 assert nsumCases.every {
     def skipped = it.getElementsByTagName('skipped')
-    skipped.length == 1 && skipped.item(0).getAttribute('message').startsWith('not claimed: Vendor FCL')
+    skipped.length == 1 && ['not claimed: Vendor FCL', 'not presentable: '].any { p ->
+        skipped.item(0).getAttribute('message').startsWith(p) }
 }
+assert nsumCases.count { it.getElementsByTagName('skipped').item(0).getAttribute('message')
+        .startsWith('not claimed: Vendor FCL') } >= 5
 // the surefire-report plugin read the file unrenamed: its page counts every case and lists the feature classes
 def html = new File(basedir, 'target/reports/surefire.html')
 assert html.isFile() : 'surefire-report wrote no page'
