@@ -20,12 +20,13 @@ final class ShapeNames {
      *
      * @param shapes        name (key as matched) to kind
      * @param reorder       kind to the written position of each canonical parameter; absent: written canonically
+     * @param scale         kind to the factor each canonical parameter is the written one times; absent: 1
      * @param ignoreCase    whether names match in any case
      * @param otherNames    names the library defines that are not a {@link ShapeKind} (read by special forms,
      *                      or Takagi–Sugeno terms); they count as giveaways too
      */
-    record Table(Map<String, ShapeKind> shapes, Map<ShapeKind, int[]> reorder, boolean ignoreCase,
-            Set<String> otherNames) {
+    record Table(Map<String, ShapeKind> shapes, Map<ShapeKind, int[]> reorder, Map<ShapeKind, double[]> scale,
+            boolean ignoreCase, Set<String> otherNames) {
         Optional<ShapeKind> kind(String word) {
             return Optional.ofNullable(shapes.get(ignoreCase ? word.toLowerCase(Locale.ROOT) : word));
         }
@@ -39,18 +40,15 @@ final class ShapeNames {
         /** The parameters as written, in canonical order; a wrong count is kept as written (FCL-C040 reports it). */
         List<Literal> canonical(ShapeKind kind, List<Literal> written) {
             int[] order = reorder.get(kind);
-            if (order == null || written.size() != kind.arity()) {
+            double[] factor = scale.get(kind);
+            if (order == null && factor == null || written.size() != kind.arity()) {
                 return written;
             }
-            Literal[] out = new Literal[order.length];
-            for (int i = 0; i < order.length; i++) {
-                out[i] = written.get(order[i]);
-            }
-            if (kind == ShapeKind.COSINE && this == JFUZZYLOGIC) {
-                // jFuzzyLogic's first parameter is half the support (measured with its jar: 'cosine 4 3' is 0.31
-                // at 0.5 and 5.5, 0 only beyond -1 and 7); fclcert's width is the whole support
-                Literal half = out[1];
-                out[1] = new Literal(2 * half.value(), half.integral(), half.location());
+            Literal[] out = new Literal[written.size()];
+            for (int i = 0; i < out.length; i++) {
+                Literal l = written.get(order == null ? i : order[i]);
+                out[i] = factor == null || factor[i] == 1 ? l
+                        : new Literal(factor[i] * l.value(), l.integral() && factor[i] == Math.rint(factor[i]), l.location());
             }
             return List.of(out);
         }
@@ -71,6 +69,9 @@ final class ShapeNames {
             "dsigm", ShapeKind.SIGMOID_DIFFERENCE, "cosine", ShapeKind.COSINE),
             Map.of(ShapeKind.BELL, new int[] {2, 0, 1}, ShapeKind.SIGMOID, new int[] {1, 0},
                     ShapeKind.SIGMOID_DIFFERENCE, new int[] {1, 0, 2, 3}, ShapeKind.COSINE, new int[] {1, 0}),
+            // its cosine's first parameter is half the support (measured with its jar: 'cosine 4 3' is 0.31 at 0.5
+            // and 5.5, 0 only beyond -1 and 7); fclcert's width is the whole support
+            Map.of(ShapeKind.COSINE, new double[] {1, 2}),
             true, Set.of("singletons", "singleton", "function", "piece_wise_linear", "freeform"));
 
     /** fuzzylite: its class names, parameters in the canonical order (fclcert's order is fuzzylite's). */
@@ -84,6 +85,6 @@ final class ShapeNames {
             Map.entry("SShape", ShapeKind.S_SHAPE), Map.entry("ZShape", ShapeKind.Z_SHAPE),
             Map.entry("PiShape", ShapeKind.PI_SHAPE), Map.entry("Concave", ShapeKind.CONCAVE),
             Map.entry("Spike", ShapeKind.SPIKE)),
-            Map.of(), false, Set.of("Discrete", "Constant", "Linear", "Function", "Binary", "Aggregated",
+            Map.of(), Map.of(), false, Set.of("Discrete", "Constant", "Linear", "Function", "Binary", "Aggregated",
                     "Activated"));
 }
