@@ -33,6 +33,7 @@ import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.syntax.dialect.FisReader;
+import org.fclcert.syntax.dialect.ShapeNames;
 
 /**
  * Writes a program as MATLAB's FIS text ({@code .fis}) in the layout of MATLAB's and Octave's {@code writefis}, as
@@ -330,7 +331,7 @@ public final class FisWriter implements DialectWriter {
             if (n.kind() == ShapeKind.RAMP) {
                 return p.get(0) <= p.get(1) ? trapmf(p.get(0), p.get(1), FAR / 2, FAR) : trapmf(-FAR, -FAR / 2, p.get(1), p.get(0));
             }
-            Optional<Map.Entry<String, int[]>> fis = FisReader.fisShape(LibraryText.fuzzyliteShape(n.kind()))
+            Optional<Map.Entry<String, int[]>> fis = FisReader.fisShape(ShapeNames.fuzzylite(n.kind(), n.parameters()).name())
                     .filter(e -> OCTAVE_SHAPES.contains(e.getKey()));
             if (fis.isEmpty()) {
                 cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no " + n.kind().name().toLowerCase()

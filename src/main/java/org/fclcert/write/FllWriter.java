@@ -23,6 +23,7 @@ import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.syntax.dialect.Dialect;
 import org.fclcert.syntax.dialect.FllReader;
+import org.fclcert.syntax.dialect.ShapeNames;
 
 /**
  * Writes a program as fuzzylite's own format FLL ({@code .fll}), which fuzzylite 6 and pyfuzzylite 8 read: one
@@ -137,8 +138,7 @@ public final class FllWriter implements DialectWriter {
             }));
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
-            out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()
-                    .size())));
+            out.append(LibraryText.shape(ShapeNames.fuzzylite(n.kind(), n.parameters())));
         }
         out.append('\n');
     }

@@ -26,6 +26,7 @@ import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.ShapeNames;
 
 /**
  * Writes a program as fuzzylite 6 reads FCL, in the layout of fuzzylite's own exporter: two-space indentation,
@@ -140,8 +141,7 @@ public final class FuzzyliteWriter implements DialectWriter {
             }));
         } else {
             MembershipFunction.NamedShape n = (MembershipFunction.NamedShape) f;
-            out.append(LibraryText.shape(LibraryText.fuzzyliteShape(n.kind()), n, LibraryText.identity(n.parameters()
-                    .size())));
+            out.append(LibraryText.shape(ShapeNames.fuzzylite(n.kind(), n.parameters())));
         }
         out.append(";\n");
     }

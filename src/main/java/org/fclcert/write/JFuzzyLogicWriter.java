@@ -22,6 +22,7 @@ import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
 import org.fclcert.syntax.dialect.Dialect;
+import org.fclcert.syntax.dialect.ShapeNames;
 
 /**
  * Writes a program as jFuzzyLogic reads FCL: four-space indentation, {@code RANGE := (a .. b);}, terms as point
@@ -139,23 +140,11 @@ public final class JFuzzyLogicWriter implements DialectWriter {
         out.append(";\n");
     }
 
-    /** jFuzzyLogic's shape names; its parameter orders differ from fclcert's for gbell, sigm, dsigm and cosine. */
+    /** A shape jFuzzyLogic names (ShapeNames.JFUZZYLOGIC: its names, orders and cosine's half width), else points. */
     private static String shape(BlockContext cx, Term t, NamedShape n, double[] span) {
-        int arity = n.parameters().size();
-        if (arity == n.kind().arity()) {
-            switch (n.kind()) {
-                case TRIANGLE: return LibraryText.shape("trian", n, LibraryText.identity(3));
-                case TRAPEZOID: return LibraryText.shape("trape", n, LibraryText.identity(4));
-                case GAUSSIAN: return LibraryText.shape("gauss", n, LibraryText.identity(2));
-                case GAUSSIAN_PRODUCT: return LibraryText.shape("gauss2", n, LibraryText.identity(4));
-                case BELL: return LibraryText.shape("gbell", n, new int[] {1, 2, 0});
-                case SIGMOID: return LibraryText.shape("sigm", n, new int[] {1, 0});
-                case SIGMOID_DIFFERENCE: return LibraryText.shape("dsigm", n, new int[] {1, 0, 2, 3});
-                // jFuzzyLogic's cosine takes half the support, then the centre (ShapeNames.JFUZZYLOGIC)
-                case COSINE: return "cosine " + LibraryText.number(n.parameters().get(1).value() / 2) + " "
-                        + LibraryText.number(n.parameters().get(0));
-                default: break;
-            }
+        Optional<ShapeNames.Written> named = ShapeNames.jfuzzylogic(n.kind(), n.parameters());
+        if (named.isPresent() && n.parameters().size() == n.kind().arity()) {
+            return LibraryText.shape(named.get());
         }
         Optional<List<org.fclcert.model.Point>> exact = ShapePoints.exact(n);
         if (exact.isPresent()) {

@@ -16,6 +16,7 @@ import org.fclcert.model.ShapeKind;
 import org.fclcert.model.Term;
 import org.fclcert.model.Variable;
 import org.fclcert.model.VariableKind;
+import org.fclcert.syntax.dialect.ShapeNames;
 
 /** Spellings the library writers share: numbers, points, shape names. */
 final class LibraryText {
@@ -111,43 +112,13 @@ final class LibraryText {
         return out.toString();
     }
 
-    /** fuzzylite's class name of a shape; its parameter order is fclcert's. */
-    static String fuzzyliteShape(ShapeKind kind) {
-        return switch (kind) {
-            case TRIANGLE -> "Triangle";
-            case TRAPEZOID -> "Trapezoid";
-            case RECTANGLE -> "Rectangle";
-            case RAMP -> "Ramp";
-            case GAUSSIAN -> "Gaussian";
-            case GAUSSIAN_PRODUCT -> "GaussianProduct";
-            case BELL -> "Bell";
-            case SIGMOID -> "Sigmoid";
-            case SIGMOID_DIFFERENCE -> "SigmoidDifference";
-            case SIGMOID_PRODUCT -> "SigmoidProduct";
-            case COSINE -> "Cosine";
-            case S_SHAPE -> "SShape";
-            case Z_SHAPE -> "ZShape";
-            case PI_SHAPE -> "PiShape";
-            case CONCAVE -> "Concave";
-            case SPIKE -> "Spike";
-        };
-    }
-
-    /** A shape by name with its parameters. */
-    static String shape(String name, NamedShape shape, int[] order) {
-        StringBuilder out = new StringBuilder(name);
-        for (int i : order) {
-            out.append(' ').append(number(shape.parameters().get(i)));
+    /** A shape as its library writes it (ShapeNames: the one table of names, orders and scales). */
+    static String shape(ShapeNames.Written shape) {
+        StringBuilder out = new StringBuilder(shape.name());
+        for (Literal p : shape.parameters()) {
+            out.append(' ').append(number(p));
         }
         return out.toString();
-    }
-
-    static int[] identity(int n) {
-        int[] order = new int[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        return order;
     }
 
     /** The method keyword both libraries read (upper case; MoM is spelled MM, Tsukamoto's method is fuzzylite's COGS). */

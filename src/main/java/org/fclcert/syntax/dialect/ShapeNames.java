@@ -12,9 +12,14 @@ import org.fclcert.model.ShapeKind;
  * The one table of membership-function names the libraries write: for each library, its name of each
  * {@link ShapeKind} and the order it writes the parameters in. The readers read shapes from it and the
  * auto-detection counts its names as giveaways, so both always agree. jFuzzyLogic's names are matched
- * in any case ({@code TRIAN}, {@code GAUSS} are common in its users' files); fuzzylite's as written.
+ * in any case ({@code TRIAN}, {@code GAUSS} are common in its users' files); fuzzylite's as written. The
+ * writers write shapes from it too ({@link #jfuzzylogic}, {@link #fuzzylite}): a name or an order is kept once.
  */
-final class ShapeNames {
+public final class ShapeNames {
+    /** A shape as a library writes it: its name, then its parameters in the library's order and scale. */
+    public record Written(String name, List<Literal> parameters) {
+    }
+
     /**
      * One library's shape names.
      *
@@ -27,6 +32,13 @@ final class ShapeNames {
      */
     record Table(Map<String, ShapeKind> shapes, Map<ShapeKind, int[]> reorder, Map<ShapeKind, double[]> scale,
             boolean ignoreCase, Set<String> otherNames) {
+        Table {
+            // the writers need one name per kind
+            if (Set.copyOf(shapes.values()).size() != shapes.size()) {
+                throw new IllegalArgumentException("two names for one shape kind: " + shapes);
+            }
+        }
+
         Optional<ShapeKind> kind(String word) {
             return Optional.ofNullable(shapes.get(ignoreCase ? word.toLowerCase(Locale.ROOT) : word));
         }
@@ -52,6 +64,37 @@ final class ShapeNames {
             }
             return List.of(out);
         }
+
+        /** The inverse of {@link #canonical}: the library's name and written parameters; empty for a kind it lacks. */
+        Optional<Written> written(ShapeKind kind, List<Literal> canonical) {
+            Optional<String> name = shapes.entrySet().stream().filter(e -> e.getValue() == kind).map(Map.Entry::getKey)
+                    .findFirst();
+            if (name.isEmpty()) {
+                return Optional.empty();
+            }
+            int[] order = reorder.get(kind);
+            double[] factor = scale.get(kind);
+            if (order == null && factor == null || canonical.size() != kind.arity()) {
+                return Optional.of(new Written(name.get(), canonical));
+            }
+            Literal[] out = new Literal[canonical.size()];
+            for (int i = 0; i < out.length; i++) {
+                Literal l = canonical.get(i);
+                out[order == null ? i : order[i]] = factor == null || factor[i] == 1 ? l : Literal.of(l.value() / factor[i]);
+            }
+            return Optional.of(new Written(name.get(), List.of(out)));
+        }
+    }
+
+    /** jFuzzyLogic's writing of a shape given in canonical order; empty for a kind jFuzzyLogic has no name for. */
+    public static Optional<Written> jfuzzylogic(ShapeKind kind, List<Literal> canonical) {
+        return JFUZZYLOGIC.written(kind, canonical);
+    }
+
+    /** fuzzylite's writing of a shape given in canonical order (fuzzylite names every kind, in fclcert's order). */
+    public static Written fuzzylite(ShapeKind kind, List<Literal> canonical) {
+        return FUZZYLITE.written(kind, canonical).orElseThrow(() -> new IllegalStateException("no fuzzylite name for "
+                + kind));
     }
 
     private ShapeNames() {
