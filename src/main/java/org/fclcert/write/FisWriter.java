@@ -348,14 +348,8 @@ public final class FisWriter implements DialectWriter {
                         + " b is no integer");
             }
             if (n.kind() == ShapeKind.SIGMOID_DIFFERENCE) {
-                double[] worst = FisReader.dsigmfClamped(n.values());
-                if (worst[1] > 1e-9) {
-                    cx.findings.differs(t.location(), WriterCode.SHAPE_FORMULA, "sigmoid difference '" + t.name()
-                            + "': where its right sigmoid exceeds its left one (by up to "
-                            + String.format(java.util.Locale.ROOT, "%.3g", worst[1]) + " at " + String.format(
-                            java.util.Locale.ROOT, "%.4g", worst[0]) + "), Octave's dsigmf gives 0, fuzzylite and fclcert"
-                            + " |f1 - f2|");
-                }
+                FisReader.dsigmfDifference(n.values()).ifPresent(d -> cx.findings.differs(t.location(),
+                        WriterCode.SHAPE_FORMULA, "sigmoid difference '" + t.name() + "': " + d));
             }
             int[] order = fis.get().getValue();
             double[] written = new double[order.length];

@@ -118,6 +118,17 @@ public final class FisReader implements DialectReader {
         return worst;
     }
 
+    /**
+     * The one wording of that difference for the reader's warning and the writer's finding: empty where the two
+     * readings agree (the largest f2 - f1 at most 1e-9).
+     */
+    public static Optional<String> dsigmfDifference(double[] q) {
+        double[] worst = dsigmfClamped(q);
+        return worst[1] > 1e-9 ? Optional.of("where its second sigmoid exceeds its first (by up to "
+                + String.format(Locale.ROOT, "%.3g", worst[1]) + " at " + String.format(Locale.ROOT, "%.4g", worst[0])
+                + ") the Octave toolkit's dsigmf gives 0; fuzzylite and fclcert take |f1 - f2|") : Optional.empty();
+    }
+
     private static Optional<String> inverse(Map<String, String> names, String fcl) {
         return names.entrySet().stream().filter(e -> e.getValue().equals(fcl)).map(Map.Entry::getKey).findFirst();
     }
@@ -426,13 +437,8 @@ public final class FisReader implements DialectReader {
             for (int k = 0; k < 4; k++) {
                 q[k] = Double.parseDouble(numbers.get(shape.order()[k]).replace("inf", "Infinity").replace("nan", "NaN"));
             }
-            double[] worst = dsigmfClamped(q);
-            if (worst[1] > 1e-9) {
-                t.warn(i, DialectCode.FIS_DSIGMF, "dsigmf '" + m.group(2) + "' of '" + variable + "': read as fuzzylite"
-                        + " reads it, |f1 - f2|; where its second sigmoid exceeds its first (by up to "
-                        + String.format(Locale.ROOT, "%.3g", worst[1]) + " at " + String.format(Locale.ROOT, "%.4g",
-                        worst[0]) + ") the Octave toolkit gives 0");
-            }
+            dsigmfDifference(q).ifPresent(d -> t.warn(i, DialectCode.FIS_DSIGMF, "dsigmf '" + m.group(2) + "' of '"
+                    + variable + "' is read as fuzzylite reads it: " + d));
         }
         StringBuilder b = new StringBuilder("TERM ").append(name).append(" := ").append(shape.fuzzylite());
         for (int k = 0; k < numbers.size(); k++) {
