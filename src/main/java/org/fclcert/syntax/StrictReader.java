@@ -96,19 +96,19 @@ public final class StrictReader implements FclReader {
             ReaderOptions options, boolean directPath) {
         // a byte order mark is an encoding artefact, not text: columns on line 1 count without it
         String body = text.startsWith("\uFEFF") ? text.substring(1) : text;
-        boolean sll = true;
+        DirectParser.Read direct = null;
         if (directPath && options.tokenFilter() == ReaderOptions.TokenFilter.NONE) {
             // most texts have no error: read those without a parse tree, the rest as below
             ReaderDiagnostics.Mark mark = diagnostics.mark();
             // its tokens around the comments are kept, so that placing the comments needs no second lexing
-            DirectParser.Read direct = DirectParser.read(sourceName, body, options, diagnostics);
+            direct = DirectParser.read(sourceName, body, options, diagnostics);
             if (!direct.declined()) {
                 return new Outcome(Optional.of(direct.program()), Optional.empty(), direct.aroundComments());
             }
             diagnostics.rollback(mark);
-            // where it declined at a syntax error (a rule's ';' missing), ANTLR's SLL pass could only fail
-            sll = !direct.surelyInvalid();
         }
+        // where the direct parser declined at a syntax error (a rule's ';' missing), ANTLR's SLL pass could only fail
+        boolean sll = direct == null || !direct.surelyInvalid();
         // Fcl.g4's lexer rules, hand-written (FclTokenSource): the same tokens, several times faster
         FclTokenSource lexer = new FclTokenSource(body, sourceName);
         TokenSource source = lexer;
@@ -131,11 +131,10 @@ public final class StrictReader implements FclReader {
         if (scan.tooDeep() || diagnostics.tooMany()) {
             return Outcome.NONE;    // never hand the recursive parser a nesting it may not survive
         }
-        boolean trySll = sll;
         if (scan.maxDepth() <= SHALLOW_NESTING) {
-            return parseAndBuild(sourceName, scan, diagnostics, options, directPath, trySll);
+            return parseAndBuild(sourceName, scan, diagnostics, options, directPath, sll);
         }
-        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options, directPath, trySll));
+        return onDeepStack(() -> parseAndBuild(sourceName, scan, diagnostics, options, directPath, sll));
     }
 
     private static Outcome parseAndBuild(String sourceName, TokenPreScan.Result scan,
