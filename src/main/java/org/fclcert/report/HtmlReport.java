@@ -35,7 +35,7 @@ public final class HtmlReport {
             table{border-collapse:collapse;width:100%;background:#fff;margin:8px 0 16px}
             th,td{border:1px solid #dde1e6;padding:6px 9px;text-align:left;vertical-align:top}
             th{background:#eef1f5;font-weight:600}
-            .st{font-weight:600;white-space:nowrap;border-radius:4px;padding:1px 7px}
+            .st{font-weight:600;white-space:nowrap;border-radius:4px;padding:1px 7px}.st.note{white-space:normal}
             .realised,.passed{background:#dff3e3;color:#185c26}.partial{background:#fff1cc;color:#6d5200}
             .not-realised,.failed{background:#fadddd;color:#8a1c1c}.errored{background:#f3dcf5;color:#6a1b73}
             .not-tested,.not-determined,.skipped,.unsupported,.not-run{background:#eceff3;color:#555}
@@ -209,7 +209,7 @@ public final class HtmlReport {
                 .append("<th>How</th></tr>\n");
         for (org.fclcert.probe.DataCheckEntry d : r.dataCheckList()) {
             String flag = d.note().contains("NOT MET") || d.note().contains("WRONG") || d.note().contains("NON-CONFORMANT")
-                    ? " class=\"st failed\"" : "";
+                    ? " class=\"st failed note\"" : "";   // a sentence, not a badge: it wraps
             out.append("<tr><td>").append(Texts.html(d.item())).append("</td><td><b>")
                     .append(Texts.html(Texts.measured(d))).append("</b></td><td>").append(Texts.html(d.declared()))
                     .append("</td><td><span").append(flag).append('>').append(Texts.html(d.note()))

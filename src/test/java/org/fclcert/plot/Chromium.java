@@ -68,6 +68,40 @@ public final class Chromium {
         return image;
     }
 
+    /**
+     * What overflows a page to the right at {@code width} CSS pixels, as Chromium lays it out: the page's scroll
+     * width, then one line per element whose box ends past the viewport (at most 20). A page with no horizontal
+     * scrollbar gives just its width. The page is written to {@code dir} with a script appended that measures it.
+     */
+    public static List<String> overflow(Path dir, String name, String html, int width)
+            throws IOException, InterruptedException {
+        Path chromium = executable();
+        Path file = dir.resolve(name + ".html");
+        Files.writeString(file, html + "\n<script>(function(){var w=document.documentElement.clientWidth,o=[];"
+                + "document.querySelectorAll('body *').forEach(function(e){var r=e.getBoundingClientRect();"
+                + "if(r.right>w+1&&o.length<20)o.push(e.tagName+' '+Math.round(r.right)+' '+(e.textContent||'')"
+                + ".replace(/\\s+/g,' ').slice(0,80));});var p=document.createElement('pre');p.id='fclcert-overflow';"
+                + "p.textContent='width '+document.documentElement.scrollWidth+' of '+w+'\\n'+o.join('\\n');"
+                + "document.body.appendChild(p);})();</script>\n", StandardCharsets.UTF_8);
+        Path profile = Files.createTempDirectory(dir, "profile");
+        Path dom = dir.resolve(name + ".dom");
+        Process p = new ProcessBuilder(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
+                "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--user-data-dir=" + profile, "--force-device-scale-factor=1",
+                "--window-size=" + width + ",900", "--dump-dom", file.toUri().toString())
+                .redirectOutput(dom.toFile()).redirectError(dir.resolve(name + ".log").toFile()).start();
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            fail("Chromium did not finish laying out " + file + " in 120 s");
+        }
+        assertEquals(0, p.exitValue(), () -> "Chromium failed: " + read(dir.resolve(name + ".log")));
+        String out = Files.readString(dom, StandardCharsets.UTF_8);
+        int at = out.indexOf("<pre id=\"fclcert-overflow\">");
+        assertTrue(at >= 0, "the measuring script did not run");
+        String text = out.substring(at + "<pre id=\"fclcert-overflow\">".length(), out.indexOf("</pre>", at));
+        return List.of(text.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&").split("\n"));
+    }
+
     private static String read(Path log) {
         try {
             return Files.readString(log);

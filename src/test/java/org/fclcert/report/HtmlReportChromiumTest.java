@@ -51,6 +51,29 @@ class HtmlReportChromiumTest {
         return ReportBuilder.build(header, List.of(failed), List.of(), List.of(), Instant.EPOCH);
     }
 
+    /**
+     * Every committed report fits a 1280-pixel window: no horizontal scrollbar. Table 11's notes of a library that
+     * refuses every text are sentences of several hundred characters; set as a badge that never wraps, they made
+     * the page 3 500 to 5 600 pixels wide.
+     */
+    @Test
+    void everyCommittedReportFitsTheWindowsWidth() throws Exception {
+        List<Path> reports;
+        try (var dirs = java.nio.file.Files.list(Path.of("reports"))) {
+            reports = dirs.map(d -> d.resolve("report.html")).filter(java.nio.file.Files::isRegularFile).sorted()
+                    .toList();
+        }
+        assertTrue(reports.size() >= 7, "the committed reports: " + reports);
+        for (Path r : reports) {
+            // rendered from the report's model, so that a change of HtmlReport shows before the reports are regenerated
+            Report report = JsonReport.read(r.resolveSibling("report.json"));
+            List<String> over = Chromium.overflow(dir, r.getParent().getFileName().toString(), HtmlReport.render(report),
+                    1280);
+            assertEquals(1, over.size(), r + " is wider than the window: " + String.join("\n", over));
+            assertTrue(over.get(0).matches("width (\\d+) of \\1"), r + ": " + over);
+        }
+    }
+
     @Test
     void theFailingCaseIsOpenWithItsTraceAndItsAccumulatedSet() throws Exception {
         String html = HtmlReport.render(failingContinuousCase());
