@@ -120,6 +120,18 @@ final class Norms {
 
     // ----------------------------------------------------------------------------------------- error bounds
 
+    /**
+     * The sign of the exact x + y − 1 for two finite doubles: the rounded sum and its rounding error (Knuth's
+     * TwoSum, exact in binary floating point) tell it apart even where x + y rounds to 1. NMIN and NMAX choose by
+     * it; without it every exact degree summing to 1, and every NMAX with an exact 0 and a 1, left the double path.
+     */
+    static int sumAgainstOne(double x, double y) {
+        double s = x + y;
+        double yv = s - x;
+        double t = (x - (s - yv)) + (y - yv);
+        return s > 1.0 ? 1 : s < 1.0 ? -1 : t > 0 ? 1 : t < 0 ? -1 : 0;
+    }
+
     /** The bound of NOT: 1 − x is exact for x in [1/2, 1] (Sterbenz) and rounds once below. */
     static double notError(double x, double ex) {
         return x > 0 && x < 0.5 ? ex + R : ex;
@@ -140,6 +152,10 @@ final class Norms {
                 yield m == 1.0 && em == 0 ? Math.max(ex, ey) : m + em < 1.0 ? 0 : Double.POSITIVE_INFINITY;
             }
             case NMIN -> {
+                if (ex == 0 && ey == 0 && !Double.isNaN(x + y)) {
+                    // exact operands: the double's choice is exact when it agrees with the exact sum's
+                    yield x + y > 1.0 == sumAgainstOne(x, y) > 0 ? 0 : Double.POSITIVE_INFINITY;
+                }
                 double es = ex + ey + R;
                 yield x + y - es > 1.0 ? Math.max(ex, ey) : x + y + es <= 1.0 ? 0 : Double.POSITIVE_INFINITY;
             }
@@ -160,6 +176,9 @@ final class Norms {
                 yield m == 0 && em == 0 ? Math.max(ex, ey) : m - em > 0 ? 0 : Double.POSITIVE_INFINITY;
             }
             case NMAX -> {
+                if (ex == 0 && ey == 0 && !Double.isNaN(x + y)) {
+                    yield x + y < 1.0 == sumAgainstOne(x, y) < 0 ? 0 : Double.POSITIVE_INFINITY;
+                }
                 double es = ex + ey + R;
                 yield x + y + es < 1.0 ? Math.max(ex, ey) : x + y - es >= 1.0 ? 0 : Double.POSITIVE_INFINITY;
             }
