@@ -152,6 +152,9 @@ final class Norms {
                 yield m == 1.0 && em == 0 ? Math.max(ex, ey) : m + em < 1.0 ? 0 : Double.POSITIVE_INFINITY;
             }
             case NMIN -> {
+                if (x == 0 && ex == 0 || y == 0 && ey == 0) {
+                    yield 0;            // an exact 0 and a degree never sum past 1: exactly 0
+                }
                 if (ex == 0 && ey == 0 && !Double.isNaN(x + y)) {
                     // exact operands: the double's choice is exact when it agrees with the exact sum's
                     yield x + y > 1.0 == sumAgainstOne(x, y) > 0 ? 0 : Double.POSITIVE_INFINITY;
@@ -176,6 +179,13 @@ final class Norms {
                 yield m == 0 && em == 0 ? Math.max(ex, ey) : m - em > 0 ? 0 : Double.POSITIVE_INFINITY;
             }
             case NMAX -> {
+                // NMAX(0, d) = d and NMAX(1, d) = 1 for every degree d (an accumulation's first contribution)
+                if (x == 0 && ex == 0 || y == 0 && ey == 0) {
+                    yield x == 0 && ex == 0 ? ey : ex;
+                }
+                if (x == 1 && ex == 0 || y == 1 && ey == 0) {
+                    yield 0;
+                }
                 if (ex == 0 && ey == 0 && !Double.isNaN(x + y)) {
                     yield x + y < 1.0 == sumAgainstOne(x, y) < 0 ? 0 : Double.POSITIVE_INFINITY;
                 }

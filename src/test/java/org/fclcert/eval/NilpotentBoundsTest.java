@@ -50,6 +50,12 @@ class NilpotentBoundsTest {
         assertEquals(0.0, Norms.and(AndAlgorithm.NMIN, 0.5, a));
         assertEquals(Double.POSITIVE_INFINITY, Norms.andError(AndAlgorithm.NMIN, 0.5, 0, a, 0, 0.0));
         assertEquals(0.0, Norms.orError(OrAlgorithm.NMAX, 0.5, 0, a, 0, 1.0));
+        // an exact 0 or 1 beside a degree with a bound: NMIN(0, d) = 0, NMAX(0, d) = d, NMAX(1, d) = 1 for every
+        // degree d, so the other operand's bound (or none) is the result's
+        assertEquals(0.0, Norms.andError(AndAlgorithm.NMIN, 0, 0, 1.0, 1e-16, 0.0));
+        assertEquals(1e-16, Norms.orError(OrAlgorithm.NMAX, 0, 0, 1.0, 1e-16, 1.0));
+        assertEquals(3e-17, Norms.orError(OrAlgorithm.NMAX, 0.6, 3e-17, 0, 0, 0.6));
+        assertEquals(0.0, Norms.orError(OrAlgorithm.NMAX, 0.4, 1e-16, 1, 0, 1.0));
         // operands with bounds keep the interval test: within R + their bounds of 1 is undecided
         assertEquals(Double.POSITIVE_INFINITY, Norms.andError(AndAlgorithm.NMIN, 0.25, 1e-17, 0.75, 0, 0.0));
         assertEquals(Double.POSITIVE_INFINITY, Norms.orError(OrAlgorithm.NMAX, 0.25, 0, 0.75, 1e-17, 1.0));
