@@ -137,6 +137,22 @@ public final class FunctionBlockInstance {
     private boolean kernelPending = true;
     private long compiledEvaluations;
     /**
+     * The block's static filter once the kernel is in use (null when it does not cover the block): a step whose
+     * static tests all pass computes only the doubles ({@link StaticFilter#step}); its running bounds are computed
+     * when {@link #bound}, {@link #internals} or {@link #reset} asks ({@link #settleBounds}).
+     */
+    private StaticFilter staticFilter;
+    /** Its generated step (null: {@link StaticFilter#step} interprets it), for the tests to switch off. */
+    private StaticFilter.Step staticCode;
+    private double[] staticTd;
+    private double[] staticRd;
+    private double[] staticSd;
+    private double[] staticOut;
+    /** The inputs of the last step when the static filter decided it (its bounds not yet computed), else unused. */
+    private double[] staticInputs;
+    private boolean boundsPending;
+    private long staticEvaluations;
+    /**
      * The evaluation at which an instance takes its block's kernel: a step or a program evaluated only a few times
      * (certify's vectors, the fuzzer) stays with the interpreter and never pays for generating the class. The results
      * do not depend on it: the kernel's are the interpreter's bit for bit.
@@ -338,7 +354,15 @@ public final class FunctionBlockInstance {
             throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
         }
         for (int i = 0; i < values.length; i++) {
-            setInput(i, values[i]);
+            int slot = inputSlots[i];
+            double v = values[i];
+            // the common case without store's conversion: a REAL within its type's range; the representation
+            // distance is computed when a step needs it (refreshRepresentations)
+            if (!integerSlot[slot] && v >= slotMin[slot] && v <= slotMax[slot]) {
+                this.values[slot] = v;
+            } else {
+                setInput(i, v);
+            }
         }
     }
 
@@ -355,6 +379,7 @@ public final class FunctionBlockInstance {
      */
     public double bound(String output) throws EvaluationException {
         int slot = slot(output);
+        settleBounds();
         for (int i = 0; i < plan.outputs.length; i++) {
             if (plan.outputs[i].slot() == slot) {
                 return bounds[i];
@@ -398,7 +423,9 @@ public final class FunctionBlockInstance {
 
     /** Back to the state of a fresh instance: every variable at its declared initial value, else 0. */
     public void reset() {
+        settleBounds();
         System.arraycopy(plan.initialValues, 0, values, 0, values.length);
+        refreshRepresentations();
     }
 
     public void evaluate() throws EvaluationException {
@@ -414,6 +441,10 @@ public final class FunctionBlockInstance {
         if (kernelPending && evaluations > KERNEL_AFTER && filtered) {
             useKernel();
         }
+        if (staticFilter != null && trace == null && staticStep()) {
+            return;
+        }
+        boundsPending = false;
         if (!filtered) {
             evaluateInDoubles(trace);
             return;
@@ -456,15 +487,98 @@ public final class FunctionBlockInstance {
         if (compiled != null) {
             kernel = compiled.kernel();
             kernelOutputs = compiled.outputs();
+            staticFilter = plan.staticFilter();
+            if (staticFilter != null) {
+                staticCode = staticFilter.compiled;
+                staticTd = new double[staticFilter.terms];
+                staticRd = new double[staticFilter.rules];
+                staticSd = new double[staticFilter.maxOutputTerms];
+                staticOut = new double[staticFilter.outputSlot.length];
+                staticInputs = new double[inputSlots.length];
+            }
         }
         return kernel != null;
     }
 
+    /**
+     * A step decided by the static filter: the outputs stored, the bounds left for {@link #settleBounds}; false (and
+     * nothing changed) when a static test fails or an output would not fit its type, so that the step is evaluated
+     * with the running bounds.
+     */
+    private boolean staticStep() {
+        StaticFilter.Step code = staticCode;
+        if (!(code != null ? code.step(values, staticInputs)
+                : staticFilter.step(values, staticInputs, staticTd, staticRd, staticSd, staticOut))) {
+            return false;
+        }
+        boundsPending = true;
+        staticEvaluations++;
+        return true;
+    }
+
+    /**
+     * The running bounds of the last step when the static filter decided it: the step evaluated again from its
+     * inputs with the running bounds (the kernel's path; the same doubles), counters and the current inputs kept.
+     * The static bounds dominate the running ones, so the running bounds decide it too and give the same outputs;
+     * anything else is a fault of the static bounds and is reported as one.
+     */
+    private void settleBounds() {
+        if (!boundsPending) {
+            return;
+        }
+        boundsPending = false;
+        double[] current = new double[inputSlots.length];
+        for (int k = 0; k < inputSlots.length; k++) {
+            current[k] = values[inputSlots[k]];
+            values[inputSlots[k]] = staticInputs[k];
+        }
+        int[] slots = staticFilter.outputSlot;
+        double[] decided = new double[slots.length];
+        for (int i = 0; i < slots.length; i++) {
+            decided[i] = values[slots[i]];
+        }
+        long compiledBefore = compiledEvaluations;
+        undecided = false;
+        try {
+            evaluateInDoubles(null);
+        } catch (EvaluationException e) {
+            throw new IllegalStateException("the static filter decided a step the running bounds reject", e);
+        }
+        compiledEvaluations = compiledBefore;
+        for (int i = 0; i < slots.length; i++) {
+            if (undecided || Double.doubleToRawLongBits(decided[i]) != Double.doubleToRawLongBits(values[slots[i]])) {
+                throw new IllegalStateException("the static filter decided a step the running bounds do not ("
+                        + (undecided ? lastDecision : "output " + decided[i] + " against " + values[slots[i]]) + ")");
+            }
+        }
+        for (int k = 0; k < inputSlots.length; k++) {
+            values[inputSlots[k]] = current[k];
+        }
+        refreshRepresentations();
+    }
+
+    /**
+     * Evaluations the static filter decided: computed in doubles and compared with constant bounds only, their
+     * running bounds computed when asked (docs/semantics.md, "The static filter").
+     */
+    public long staticEvaluations() {
+        return staticEvaluations;
+    }
+
+    /** Every slot's representation distance from its current value (setInputs and the static filter leave them). */
+    private void refreshRepresentations() {
+        for (int i = 0; i < values.length; i++) {
+            valueRep[i] = representation(values[i]);
+        }
+    }
+
     /** Never takes the kernel: the interpreter alone (for the agreement tests). */
     void interpretOnly() {
+        settleBounds();
         kernelPending = false;
         kernel = null;
         kernelOutputs = null;
+        staticFilter = null;
     }
 
     /**
@@ -472,7 +586,7 @@ public final class FunctionBlockInstance {
      * interpreter's; see {@link #KERNEL_AFTER}).
      */
     public long compiledEvaluations() {
-        return compiledEvaluations;
+        return compiledEvaluations + staticEvaluations;
     }
 
     /** Whether the kernel computes output {@code index} whole (accumulation and defuzzification too). */
@@ -482,6 +596,7 @@ public final class FunctionBlockInstance {
 
     /** The term degrees and the contributions with their bounds, as the last evaluation left them (for the tests). */
     double[][] internals() {
+        settleBounds();
         return new double[][] {termDegrees.clone(), termErrors.clone(), contributionDegree.clone(),
             contributionWeight.clone(), contributionError.clone(), contributionDegreeError.clone(), bounds.clone()};
     }
@@ -521,6 +636,7 @@ public final class FunctionBlockInstance {
             trace.clear();
         }
         java.util.Arrays.fill(slotErrors, 0.0);
+        refreshRepresentations();
         for (int i = 0; i < plan.outputs.length; i++) {
             previous[i] = values[plan.outputs[i].slot()];
         }
