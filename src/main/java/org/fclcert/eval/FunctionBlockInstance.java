@@ -572,6 +572,16 @@ public final class FunctionBlockInstance {
         }
     }
 
+    /** The static filter in use, or null (for the tests). */
+    StaticFilter staticFilter() {
+        return staticFilter;
+    }
+
+    /** Runs the static filter's step as {@link StaticFilter#step} instead of its generated code (for the tests). */
+    void interpretStaticStep() {
+        staticCode = null;
+    }
+
     /** Never takes the kernel: the interpreter alone (for the agreement tests). */
     void interpretOnly() {
         settleBounds();

@@ -70,6 +70,12 @@ final class StaticFilter {
     private final double[][] singletonValue;
     /** Per output, per term: the static bound of its accumulated degree; per output: Σ of them (the CoGS test). */
     final double[][] singletonBound;
+    /** Per contribution (the plan's index): the static bound of w·d and of d (for the tests). */
+    final double[] contributionBound;
+    final double[] contributionDegreeBound;
+    /** Per contribution: its output and singleton term (for the tests). */
+    final int[] contributionOutput;
+    final int[] contributionSingleton;
     final double[] threshold;
     /** The step as generated code ({@link #compile}), or null when the block is too large for one method. */
     final Step compiled;
@@ -173,6 +179,10 @@ final class StaticFilter {
         singletonValue = new double[no][];
         singletonBound = new double[no][];
         threshold = new double[no];
+        contributionBound = new double[plan.contributionCount];
+        contributionDegreeBound = new double[plan.contributionCount];
+        contributionOutput = new int[plan.contributionCount];
+        contributionSingleton = new int[plan.contributionCount];
         for (int i = 0; i < no; i++) {
             OutputPlan o = plan.outputs[i];
             outputSlot[i] = o.slot();
@@ -198,6 +208,10 @@ final class StaticFilter {
                         aw * ruleMax[r]) + Double.MIN_NORMAL;
                 int t = o.contributionTerm()[k];
                 singletonBound[i][t] = Math.max(singletonBound[i][t], e);
+                contributionBound[c] = e;
+                contributionDegreeBound[c] = ruleBound[r];
+                contributionOutput[c] = i;
+                contributionSingleton[c] = t;
             }
             double sum = 0;
             for (int t = 0; t < n; t++) {
