@@ -429,7 +429,15 @@ public final class FunctionBlockInstance {
     }
 
     public void evaluate() throws EvaluationException {
-        evaluate(null);
+        StaticFilter.Step code = staticCode;
+        if (code != null && code.step(values, staticInputs)) {
+            // the lean path of a block the static filter decides: its generated step alone (see staticStep)
+            evaluations++;
+            staticEvaluations++;
+            boundsPending = true;
+            return;
+        }
+        evaluate(null, code == null);
     }
 
     /**
@@ -437,11 +445,16 @@ public final class FunctionBlockInstance {
      * decision is too close for the error bounds.
      */
     public void evaluate(Trace trace) throws EvaluationException {
+        evaluate(trace, true);
+    }
+
+    /** {@link #evaluate(Trace)}; {@code tryStatic} false when the static step has just failed on this step. */
+    private void evaluate(Trace trace, boolean tryStatic) throws EvaluationException {
         evaluations++;
         if (kernelPending && evaluations > KERNEL_AFTER && filtered) {
             useKernel();
         }
-        if (staticFilter != null && trace == null && staticStep()) {
+        if (tryStatic && staticFilter != null && trace == null && staticStep()) {
             return;
         }
         boundsPending = false;

@@ -288,36 +288,102 @@ final class StaticFilter {
             mv.visitVarInsn(DSTORE, rd + 2 * r);
         }
         Label undecided = new Label();
+        // a rule degree is not below +0 when its fold has no NOT (1 - d of a degree rounded above 1 is below 0)
+        boolean[] nonNegative = new boolean[rules];
+        for (int r = 0; r < rules; r++) {
+            nonNegative[r] = true;
+            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+                nonNegative[r] &= !ruleNot[j];
+            }
+        }
         for (int i = 0; i < outputSlot.length; i++) {
             int n = singletonValue[i].length;
-            for (int t = 0; t < n; t++) {
-                mv.visitInsn(DCONST_0);
-                mv.visitVarInsn(DSTORE, sd + 2 * t);
-            }
+            boolean[] written = new boolean[n];
             for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
                 int t = contributionTerm[k];
-                mv.visitVarInsn(DLOAD, sd + 2 * t);
-                mv.visitLdcInsn(contributionWeight[k]);
-                mv.visitVarInsn(DLOAD, rd + 2 * contributionRule[k]);
-                mv.visitInsn(DMUL);
-                mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", "max", "(DD)D", false);
+                double w = contributionWeight[k];
+                int r = contributionRule[k];
+                // Math.max(+0 or the term's degree so far, w·d); w·d for w = 1 is d itself. The first contribution
+                // of a term is Math.max(+0, w·d) = w·d when w·d is not below +0 (w >= +0, d >= +0)
+                boolean first = !written[t] && nonNegative[r] && w >= 0
+                        && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0);
+                if (!first) {
+                    if (written[t]) {
+                        mv.visitVarInsn(DLOAD, sd + 2 * t);
+                    } else {
+                        mv.visitInsn(DCONST_0);
+                    }
+                }
+                if (w == 1) {
+                    mv.visitVarInsn(DLOAD, rd + 2 * r);
+                } else {
+                    mv.visitLdcInsn(w);
+                    mv.visitVarInsn(DLOAD, rd + 2 * r);
+                    mv.visitInsn(DMUL);
+                }
+                if (!first) {
+                    mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", "max", "(DD)D", false);
+                }
                 mv.visitVarInsn(DSTORE, sd + 2 * t);
+                written[t] = true;
             }
-            mv.visitInsn(DCONST_0);
-            mv.visitVarInsn(DSTORE, num);
-            mv.visitInsn(DCONST_0);
-            mv.visitVarInsn(DSTORE, den);
             for (int t = 0; t < n; t++) {
-                mv.visitVarInsn(DLOAD, num);
-                mv.visitLdcInsn(singletonValue[i][t]);
+                if (!written[t]) {
+                    mv.visitInsn(DCONST_0);
+                    mv.visitVarInsn(DSTORE, sd + 2 * t);
+                }
+            }
+            // num = 0.0 + v0·sd0 + ...; den = 0.0 + sd0 + ... (sd >= +0 here whenever every rule has no NOT: see
+            // below). Only the additions that can change a bit are kept: the start 0.0 + x is x for x not -0.0, and
+            // a term v·sd with v = +0 adds +0 to a sum that is never -0.0
+            boolean allNonNegative = true;
+            for (boolean b : nonNegative) {
+                allNonNegative &= b;
+            }
+            for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+                allNonNegative &= contributionWeight[k] >= 0;
+            }
+            boolean numStarted = false;
+            boolean denStarted = false;
+            for (int t = 0; t < n; t++) {
+                double v = singletonValue[i][t];
+                boolean positiveV = v > 0 || v == 0 && Double.doubleToRawLongBits(v) == 0;
+                if (!allNonNegative || !(v == 0 && positiveV && numStarted)) {
+                    boolean lead = allNonNegative && positiveV && !numStarted;
+                    if (!lead) {
+                        if (numStarted) {
+                            mv.visitVarInsn(DLOAD, num);
+                        } else {
+                            mv.visitInsn(DCONST_0);
+                        }
+                    }
+                    mv.visitLdcInsn(v);
+                    mv.visitVarInsn(DLOAD, sd + 2 * t);
+                    mv.visitInsn(DMUL);
+                    if (!lead) {
+                        mv.visitInsn(DADD);
+                    }
+                    mv.visitVarInsn(DSTORE, num);
+                    numStarted = true;
+                }
+                boolean leadDen = allNonNegative && !denStarted;
+                if (!leadDen) {
+                    if (denStarted) {
+                        mv.visitVarInsn(DLOAD, den);
+                    } else {
+                        mv.visitInsn(DCONST_0);
+                    }
+                }
                 mv.visitVarInsn(DLOAD, sd + 2 * t);
-                mv.visitInsn(DMUL);
-                mv.visitInsn(DADD);
-                mv.visitVarInsn(DSTORE, num);
-                mv.visitVarInsn(DLOAD, den);
-                mv.visitVarInsn(DLOAD, sd + 2 * t);
-                mv.visitInsn(DADD);
+                if (!leadDen) {
+                    mv.visitInsn(DADD);
+                }
                 mv.visitVarInsn(DSTORE, den);
+                denStarted = true;
+            }
+            if (!numStarted) {
+                mv.visitInsn(DCONST_0);
+                mv.visitVarInsn(DSTORE, num);
             }
             // !(den > threshold): undecided (NaN compares as not greater)
             mv.visitVarInsn(DLOAD, den);
