@@ -280,8 +280,11 @@ final class StaticFilter {
                     if (ruleOp[r] == PROD) {
                         mv.visitInsn(DMUL);
                     } else {
-                        mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", ruleOp[r] == MIN ? "min" : "max", "(DD)D",
-                                false);
+                        // Math.min/max are the plain comparison's choice for operands neither NaN nor -0.0: the
+                        // terms' degrees are not (points' degrees in [0, 1], not -0.0; an interpolation is a sum of
+                        // products at least +0 over a positive width), nor MIN, MAX or PROD of them; 1 - d is not
+                        // -0.0 either, but may be below 0, and a PROD of it with +0 is -0.0: Math's after a NOT
+                        select(mv, ruleOp[r] == MIN, !plainSoFar(r, j + 1));
                     }
                 }
             }
@@ -322,7 +325,10 @@ final class StaticFilter {
                     mv.visitInsn(DMUL);
                 }
                 if (!first) {
-                    mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", "max", "(DD)D", false);
+                    // plain only where both are not below +0 (no -0.0: w·d of a non-negative w, d is +0 or above)
+                    select(mv, false, !(nonNegative[r] && w >= 0
+                            && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0)
+                            && !anyNegativeBefore(i, k, t, nonNegative)));
                 }
                 mv.visitVarInsn(DSTORE, sd + 2 * t);
                 written[t] = true;
@@ -539,6 +545,50 @@ final class StaticFilter {
             mv.visitLabel(next);
         }
         mv.visitLabel(store);
+    }
+
+    /**
+     * Math.min (min) or Math.max of the two doubles on the stack; as {@code a <= b ? a : b} (or {@code >=}) unless
+     * {@code general}: equal to Math's choice when neither is NaN nor -0.0.
+     */
+    private static void select(MethodVisitor mv, boolean min, boolean general) {
+        if (general) {
+            mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", min ? "min" : "max", "(DD)D", false);
+            return;
+        }
+        mv.visitMethodInsn(INVOKESTATIC, "org/fclcert/eval/StaticFilter", min ? "plainMin" : "plainMax", "(DD)D",
+                false);
+    }
+
+    /** Math.min for operands that are not NaN and not -0.0. */
+    static double plainMin(double a, double b) {
+        return a <= b ? a : b;
+    }
+
+    /** Math.max for operands that are not NaN and not -0.0. */
+    static double plainMax(double a, double b) {
+        return a >= b ? a : b;
+    }
+
+    /** Whether the fold of rule r before position j has no NOT (every degree there at least +0, not -0.0). */
+    private boolean plainSoFar(int r, int j) {
+        for (int q = ruleFrom[r]; q < j; q++) {
+            if (ruleNot[q]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether a contribution of output i before k on singleton term t may be below 0 or -0.0. */
+    private boolean anyNegativeBefore(int i, int k, int t, boolean[] nonNegative) {
+        for (int q = outFrom[i]; q < k; q++) {
+            if (contributionTerm[q] == t && !(nonNegative[contributionRule[q]] && contributionWeight[q] >= 0
+                    && Double.doubleToRawLongBits(contributionWeight[q]) != Double.doubleToRawLongBits(-0.0))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static void constant(MethodVisitor mv, double d, int into, Label store) {
