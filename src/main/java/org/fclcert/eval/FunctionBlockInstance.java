@@ -70,6 +70,9 @@ public final class FunctionBlockInstance {
     private final double[] slotErrors;
     /** The slot of each VAR_INPUT, in declaration order. */
     private final int[] inputSlots;
+    /** Per VAR_INPUT: its type's range, empty (+inf, -inf) for an integer type, for setInputs' lean path. */
+    private final double[] leanMin;
+    private final double[] leanMax;
     /** Per slot: its data type's integer flag and range, read by {@link #store} without the DataType. */
     private final boolean[] integerSlot;
     private final double[] slotMin;
@@ -152,6 +155,8 @@ public final class FunctionBlockInstance {
     private double[] staticInputs;
     private boolean boundsPending;
     private long staticEvaluations;
+    /** Steps of {@link #evaluate()}'s lean path (counted in evaluations and staticEvaluations, not in those fields). */
+    private long leanSteps;
     /**
      * The evaluation at which an instance takes its block's kernel: a step or a program evaluated only a few times
      * (certify's vectors, the fuzzer) stays with the interpreter and never pays for generating the class. The results
@@ -177,6 +182,13 @@ public final class FunctionBlockInstance {
             integerSlot[i] = plan.types[i].isInteger();
             slotMin[i] = plan.types[i].min();
             slotMax[i] = plan.types[i].max();
+        }
+        this.leanMin = new double[inputSlots.length];
+        this.leanMax = new double[inputSlots.length];
+        for (int i = 0; i < inputSlots.length; i++) {
+            boolean integer = integerSlot[inputSlots[i]];
+            leanMin[i] = integer ? Double.POSITIVE_INFINITY : slotMin[inputSlots[i]];
+            leanMax[i] = integer ? Double.NEGATIVE_INFINITY : slotMax[inputSlots[i]];
         }
         this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         this.termErrors = new double[termDegrees.length];
@@ -354,12 +366,11 @@ public final class FunctionBlockInstance {
             throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
         }
         for (int i = 0; i < values.length; i++) {
-            int slot = inputSlots[i];
             double v = values[i];
-            // the common case without store's conversion: a REAL within its type's range; the representation
-            // distance is computed when a step needs it (refreshRepresentations)
-            if (!integerSlot[slot] && v >= slotMin[slot] && v <= slotMax[slot]) {
-                this.values[slot] = v;
+            // the common case without store's conversion: a real within its type's range (an integer input has an
+            // empty range here); the representation distance is computed when a step needs it
+            if (v >= leanMin[i] && v <= leanMax[i]) {
+                this.values[inputSlots[i]] = v;
             } else {
                 setInput(i, v);
             }
@@ -390,7 +401,7 @@ public final class FunctionBlockInstance {
 
     /** Evaluations so far. */
     public long evaluations() {
-        return evaluations;
+        return evaluations + leanSteps;
     }
 
     /** Evaluations redone in exact arithmetic because a decision was too close for the error bounds. */
@@ -432,8 +443,7 @@ public final class FunctionBlockInstance {
         StaticFilter.Step code = staticCode;
         if (code != null && code.step(values, staticInputs)) {
             // the lean path of a block the static filter decides: its generated step alone (see staticStep)
-            evaluations++;
-            staticEvaluations++;
+            leanSteps++;
             boundsPending = true;
             return;
         }
@@ -575,7 +585,7 @@ public final class FunctionBlockInstance {
      * running bounds computed when asked (docs/semantics.md, "The static filter").
      */
     public long staticEvaluations() {
-        return staticEvaluations;
+        return staticEvaluations + leanSteps;
     }
 
     /** Every slot's representation distance from its current value (setInputs and the static filter leave them). */
@@ -609,7 +619,7 @@ public final class FunctionBlockInstance {
      * interpreter's; see {@link #KERNEL_AFTER}).
      */
     public long compiledEvaluations() {
-        return compiledEvaluations + staticEvaluations;
+        return compiledEvaluations + staticEvaluations + leanSteps;
     }
 
     /** Whether the kernel computes output {@code index} whole (accumulation and defuzzification too). */
