@@ -31,7 +31,9 @@ import org.fclcert.model.OrAlgorithm;
  *
  * <p>From its {@link #KERNEL_AFTER}th evaluation an instance of a block the compiled kernel covers runs
  * fuzzification, the rule blocks and singleton outputs as generated code ({@link KernelCompiler}) that computes
- * the same doubles and bounds as the code here, bit for bit; the decisions stay here.
+ * the same doubles and bounds as the code here, bit for bit; the decisions stay here. For a block whose outputs the
+ * kernel computes whole, the static filter ({@link StaticFilter}) decides most steps with constant bounds and the
+ * doubles alone; such a step's running bounds are computed when {@link #bound} (or {@link #reset}) asks.
  *
  * <p>Its size (about 1 400 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
  * here with its error bound and the decision points that read it, so that a bound and the decision it settles
