@@ -254,6 +254,17 @@ final class StaticFilter {
         init.visitInsn(RETURN);
         init.visitMaxs(0, 0);
         init.visitEnd();
+        // each term's degree in a small method of its own, so that the step stays under HotSpot's size for inlining
+        // a hot method (FreqInlineSize, 325 bytes) and the JIT inlines it, and the terms into it
+        for (int t = 0; t < terms; t++) {
+            MethodVisitor tm = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, "term" + t, "(D)D", null, null);
+            tm.visitCode();
+            term(tm, t, 0, 2);
+            tm.visitVarInsn(DLOAD, 2);
+            tm.visitInsn(DRETURN);
+            tm.visitMaxs(0, 0);
+            tm.visitEnd();
+        }
         MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "step", "([D[D)Z", null, null);
         mv.visitCode();
         // locals: this, values, out; u; then the term degrees, rule degrees, singleton degrees, num, den
@@ -265,7 +276,11 @@ final class StaticFilter {
         int den = num + 2;
         int result = den + 2;
         for (int t = 0; t < terms; t++) {
-            term(mv, t, u, td + 2 * t);
+            mv.visitVarInsn(ALOAD, 1);
+            push(mv, termSlot[t]);
+            mv.visitInsn(DALOAD);
+            mv.visitMethodInsn(INVOKESTATIC, self, "term" + t, "(D)D", false);
+            mv.visitVarInsn(DSTORE, td + 2 * t);
         }
         for (int r = 0; r < rules; r++) {
             for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
@@ -449,12 +464,8 @@ final class StaticFilter {
         }
     }
 
-    /** Pwl.degree (or a singleton's 1/0) of term t at values[slot], into local {@code into}. */
+    /** Pwl.degree (or a singleton's 1/0) of term t at local {@code u}, into local {@code into}. */
     private void term(MethodVisitor mv, int t, int u, int into) {
-        mv.visitVarInsn(ALOAD, 1);
-        push(mv, termSlot[t]);
-        mv.visitInsn(DALOAD);
-        mv.visitVarInsn(DSTORE, u);
         Label store = new Label();
         double[] x = termX[t];
         if (x == null) {
