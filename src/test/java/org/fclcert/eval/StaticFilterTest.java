@@ -80,6 +80,43 @@ class StaticFilterTest {
     }
 
     /**
+     * The running bounds of a statically decided step are those of its own inputs, whatever was set since: bound()
+     * after new inputs were set, and reset() (which settles them first and then refreshes the representation
+     * distances of the initial values), against an interpreted instance driven alike.
+     */
+    @Test
+    void boundsWhenAskedAreThoseOfTheStep() throws Exception {
+        LoadedProgram p = load(Files.readString(Path.of("examples", "valve.fcl")));
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        FunctionBlockInstance plain = p.newInstance();
+        plain.interpretOnly();
+        fb.setInputs(5.1, 60.3);
+        plain.setInputs(5.1, 60.3);
+        fb.evaluate();
+        plain.evaluate();
+        assertEquals(1, fb.staticEvaluations());
+        fb.setInputs(15, 75);                    // set, not evaluated: the bound asked is still (5.1, 60.3)'s
+        double b = plain.bound("valve");
+        assertTrue(b > 0 && b < 1e-12, "bound " + b);
+        assertEquals(b, fb.bound("valve"));
+        assertEquals(15.0, fb.get("temp"), "the inputs set since are kept");
+        fb.evaluate();
+        plain.setInputs(15, 75);
+        plain.evaluate();
+        assertEquals(plain.output(0), fb.output(0));
+        fb.reset();
+        plain.reset();
+        assertEquals(plain.bound("valve"), fb.bound("valve"), "reset keeps the last step's bound");
+        fb.evaluate();                          // temp 0, pressure 0 (no initial values): cold and low, inlet 100
+        plain.evaluate();
+        assertEquals(100.0, fb.output(0));
+        assertEquals(plain.output(0), fb.output(0));
+        assertEquals(plain.bound("valve"), fb.bound("valve"));
+        assertEquals(Arrays.toString(plain.state()), Arrays.toString(fb.state()));
+        assertEquals(3, fb.staticEvaluations());
+    }
+
+    /**
      * a IS A with A a ramp over (0, 2²⁰); b IS B with B a ramp 1e-10 wide at 0.1 (points not decimals in binary):
      * B's static bound is about 2·3·(ulp(0.1)/2)/1e-10 ≈ 4.2e-7, the threshold of the only singleton.
      */
