@@ -35,7 +35,7 @@ import org.fclcert.model.OrAlgorithm;
  * kernel computes whole, the static filter ({@link StaticFilter}) decides most steps with constant bounds and the
  * doubles alone; such a step's running bounds are computed when {@link #bound} (or {@link #reset}) asks.
  *
- * <p>Its size (about 1 400 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
+ * <p>Its size (about 1 600 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
  * here with its error bound and the decision points that read it, so that a bound and the decision it settles
  * cannot drift apart; the operators' formulas themselves are in {@link Norms}, the exact arithmetic in
  * {@link ExactInstance}.
