@@ -106,6 +106,19 @@ final class BlockPlan {
     private KernelCompiler.Compiled kernel;
     private boolean kernelTried;
 
+    private StaticFilter staticFilter;
+    private boolean staticTried;
+
+    /** The block's static filter (StaticFilter.build over the kernel's outputs), once; null when not covered. */
+    synchronized StaticFilter staticFilter() {
+        if (!staticTried) {
+            staticTried = true;
+            KernelCompiler.Compiled k = kernel();
+            staticFilter = k == null ? null : StaticFilter.build(this, k.outputs());
+        }
+        return staticFilter;
+    }
+
     /** The block's compiled kernel, generated once and shared by its instances; null when the plan is not covered. */
     synchronized KernelCompiler.Compiled kernel() {
         if (!kernelTried) {

@@ -31,9 +31,11 @@ import org.fclcert.model.OrAlgorithm;
  *
  * <p>From its {@link #KERNEL_AFTER}th evaluation an instance of a block the compiled kernel covers runs
  * fuzzification, the rule blocks and singleton outputs as generated code ({@link KernelCompiler}) that computes
- * the same doubles and bounds as the code here, bit for bit; the decisions stay here.
+ * the same doubles and bounds as the code here, bit for bit; the decisions stay here. For a block whose outputs the
+ * kernel computes whole, the static filter ({@link StaticFilter}) decides most steps with constant bounds and the
+ * doubles alone; such a step's running bounds are computed when {@link #bound} (or {@link #reset}) asks.
  *
- * <p>Its size (about 1 400 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
+ * <p>Its size (about 1 600 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
  * here with its error bound and the decision points that read it, so that a bound and the decision it settles
  * cannot drift apart; the operators' formulas themselves are in {@link Norms}, the exact arithmetic in
  * {@link ExactInstance}.
@@ -70,6 +72,9 @@ public final class FunctionBlockInstance {
     private final double[] slotErrors;
     /** The slot of each VAR_INPUT, in declaration order. */
     private final int[] inputSlots;
+    /** Per VAR_INPUT: its type's range, empty (+inf, -inf) for an integer type, for setInputs' lean path. */
+    private final double[] leanMin;
+    private final double[] leanMax;
     /** Per slot: its data type's integer flag and range, read by {@link #store} without the DataType. */
     private final boolean[] integerSlot;
     private final double[] slotMin;
@@ -137,6 +142,24 @@ public final class FunctionBlockInstance {
     private boolean kernelPending = true;
     private long compiledEvaluations;
     /**
+     * The block's static filter once the kernel is in use (null when it does not cover the block): a step whose
+     * static tests all pass computes only the doubles ({@link StaticFilter#step}); its running bounds are computed
+     * when {@link #bound}, {@link #internals} or {@link #reset} asks ({@link #settleBounds}).
+     */
+    private StaticFilter staticFilter;
+    /** Its generated step (null: {@link StaticFilter#step} interprets it), for the tests to switch off. */
+    private StaticFilter.Step staticCode;
+    private double[] staticTd;
+    private double[] staticRd;
+    private double[] staticSd;
+    private double[] staticOut;
+    /** The inputs of the last step when the static filter decided it (its bounds not yet computed), else unused. */
+    private double[] staticInputs;
+    private boolean boundsPending;
+    private long staticEvaluations;
+    /** Steps of {@link #evaluate()}'s lean path (counted in evaluations and staticEvaluations, not in those fields). */
+    private long leanSteps;
+    /**
      * The evaluation at which an instance takes its block's kernel: a step or a program evaluated only a few times
      * (certify's vectors, the fuzzer) stays with the interpreter and never pays for generating the class. The results
      * do not depend on it: the kernel's are the interpreter's bit for bit.
@@ -161,6 +184,13 @@ public final class FunctionBlockInstance {
             integerSlot[i] = plan.types[i].isInteger();
             slotMin[i] = plan.types[i].min();
             slotMax[i] = plan.types[i].max();
+        }
+        this.leanMin = new double[inputSlots.length];
+        this.leanMax = new double[inputSlots.length];
+        for (int i = 0; i < inputSlots.length; i++) {
+            boolean integer = integerSlot[inputSlots[i]];
+            leanMin[i] = integer ? Double.POSITIVE_INFINITY : slotMin[inputSlots[i]];
+            leanMax[i] = integer ? Double.NEGATIVE_INFINITY : slotMax[inputSlots[i]];
         }
         this.termDegrees = new double[plan.termShape.length + plan.chainedTerms];
         this.termErrors = new double[termDegrees.length];
@@ -338,7 +368,14 @@ public final class FunctionBlockInstance {
             throw new IllegalArgumentException(values.length + " values for " + inputSlots.length + " inputs");
         }
         for (int i = 0; i < values.length; i++) {
-            setInput(i, values[i]);
+            double v = values[i];
+            // the common case without store's conversion: a real within its type's range (an integer input has an
+            // empty range here); the representation distance is computed when a step needs it
+            if (v >= leanMin[i] && v <= leanMax[i]) {
+                this.values[inputSlots[i]] = v;
+            } else {
+                setInput(i, v);
+            }
         }
     }
 
@@ -355,6 +392,7 @@ public final class FunctionBlockInstance {
      */
     public double bound(String output) throws EvaluationException {
         int slot = slot(output);
+        settleBounds();
         for (int i = 0; i < plan.outputs.length; i++) {
             if (plan.outputs[i].slot() == slot) {
                 return bounds[i];
@@ -365,7 +403,7 @@ public final class FunctionBlockInstance {
 
     /** Evaluations so far. */
     public long evaluations() {
-        return evaluations;
+        return evaluations + leanSteps;
     }
 
     /** Evaluations redone in exact arithmetic because a decision was too close for the error bounds. */
@@ -398,11 +436,20 @@ public final class FunctionBlockInstance {
 
     /** Back to the state of a fresh instance: every variable at its declared initial value, else 0. */
     public void reset() {
+        settleBounds();
         System.arraycopy(plan.initialValues, 0, values, 0, values.length);
+        refreshRepresentations();
     }
 
     public void evaluate() throws EvaluationException {
-        evaluate(null);
+        StaticFilter.Step code = staticCode;
+        if (code != null && code.step(values, staticInputs)) {
+            // the lean path of a block the static filter decides: its generated step alone (see staticStep)
+            leanSteps++;
+            boundsPending = true;
+            return;
+        }
+        evaluate(null, code == null);
     }
 
     /**
@@ -410,10 +457,19 @@ public final class FunctionBlockInstance {
      * decision is too close for the error bounds.
      */
     public void evaluate(Trace trace) throws EvaluationException {
+        evaluate(trace, true);
+    }
+
+    /** {@link #evaluate(Trace)}; {@code tryStatic} false when the static step has just failed on this step. */
+    private void evaluate(Trace trace, boolean tryStatic) throws EvaluationException {
         evaluations++;
         if (kernelPending && evaluations > KERNEL_AFTER && filtered) {
             useKernel();
         }
+        if (tryStatic && staticFilter != null && trace == null && staticStep()) {
+            return;
+        }
+        boundsPending = false;
         if (!filtered) {
             evaluateInDoubles(trace);
             return;
@@ -456,15 +512,108 @@ public final class FunctionBlockInstance {
         if (compiled != null) {
             kernel = compiled.kernel();
             kernelOutputs = compiled.outputs();
+            staticFilter = plan.staticFilter();
+            if (staticFilter != null) {
+                staticCode = staticFilter.compiled;
+                staticTd = new double[staticFilter.terms];
+                staticRd = new double[staticFilter.rules];
+                staticSd = new double[staticFilter.maxOutputTerms];
+                staticOut = new double[staticFilter.outputSlot.length];
+                staticInputs = new double[inputSlots.length];
+            }
         }
         return kernel != null;
     }
 
+    /**
+     * A step decided by the static filter: the outputs stored, the bounds left for {@link #settleBounds}; false (and
+     * nothing changed) when a static test fails or an output would not fit its type, so that the step is evaluated
+     * with the running bounds.
+     */
+    private boolean staticStep() {
+        StaticFilter.Step code = staticCode;
+        if (!(code != null ? code.step(values, staticInputs)
+                : staticFilter.step(values, staticInputs, staticTd, staticRd, staticSd, staticOut))) {
+            return false;
+        }
+        boundsPending = true;
+        staticEvaluations++;
+        return true;
+    }
+
+    /**
+     * The running bounds of the last step when the static filter decided it: the step evaluated again from its
+     * inputs with the running bounds (the kernel's path; the same doubles), counters and the current inputs kept.
+     * The static bounds dominate the running ones, so the running bounds decide it too and give the same outputs;
+     * anything else is a fault of the static bounds and is reported as one.
+     */
+    private void settleBounds() {
+        if (!boundsPending) {
+            return;
+        }
+        boundsPending = false;
+        double[] current = new double[inputSlots.length];
+        for (int k = 0; k < inputSlots.length; k++) {
+            current[k] = values[inputSlots[k]];
+            values[inputSlots[k]] = staticInputs[k];
+        }
+        int[] slots = staticFilter.outputSlot;
+        double[] decided = new double[slots.length];
+        for (int i = 0; i < slots.length; i++) {
+            decided[i] = values[slots[i]];
+        }
+        long compiledBefore = compiledEvaluations;
+        undecided = false;
+        try {
+            evaluateInDoubles(null);
+        } catch (EvaluationException e) {
+            throw new IllegalStateException("the static filter decided a step the running bounds reject", e);
+        }
+        compiledEvaluations = compiledBefore;
+        for (int i = 0; i < slots.length; i++) {
+            if (undecided || Double.doubleToRawLongBits(decided[i]) != Double.doubleToRawLongBits(values[slots[i]])) {
+                throw new IllegalStateException("the static filter decided a step the running bounds do not ("
+                        + (undecided ? lastDecision : "output " + decided[i] + " against " + values[slots[i]]) + ")");
+            }
+        }
+        for (int k = 0; k < inputSlots.length; k++) {
+            values[inputSlots[k]] = current[k];
+        }
+        refreshRepresentations();
+    }
+
+    /**
+     * Evaluations the static filter decided: computed in doubles and compared with constant bounds only, their
+     * running bounds computed when asked (docs/semantics.md, "The static filter").
+     */
+    public long staticEvaluations() {
+        return staticEvaluations + leanSteps;
+    }
+
+    /** Every slot's representation distance from its current value (setInputs and the static filter leave them). */
+    private void refreshRepresentations() {
+        for (int i = 0; i < values.length; i++) {
+            valueRep[i] = representation(values[i]);
+        }
+    }
+
+    /** The static filter in use, or null (for the tests). */
+    StaticFilter staticFilter() {
+        return staticFilter;
+    }
+
+    /** Runs the static filter's step as {@link StaticFilter#step} instead of its generated code (for the tests). */
+    void interpretStaticStep() {
+        staticCode = null;
+    }
+
     /** Never takes the kernel: the interpreter alone (for the agreement tests). */
     void interpretOnly() {
+        settleBounds();
         kernelPending = false;
         kernel = null;
         kernelOutputs = null;
+        staticFilter = null;
     }
 
     /**
@@ -472,7 +621,7 @@ public final class FunctionBlockInstance {
      * interpreter's; see {@link #KERNEL_AFTER}).
      */
     public long compiledEvaluations() {
-        return compiledEvaluations;
+        return compiledEvaluations + staticEvaluations + leanSteps;
     }
 
     /** Whether the kernel computes output {@code index} whole (accumulation and defuzzification too). */
@@ -482,6 +631,7 @@ public final class FunctionBlockInstance {
 
     /** The term degrees and the contributions with their bounds, as the last evaluation left them (for the tests). */
     double[][] internals() {
+        settleBounds();
         return new double[][] {termDegrees.clone(), termErrors.clone(), contributionDegree.clone(),
             contributionWeight.clone(), contributionError.clone(), contributionDegreeError.clone(), bounds.clone()};
     }
@@ -521,6 +671,7 @@ public final class FunctionBlockInstance {
             trace.clear();
         }
         java.util.Arrays.fill(slotErrors, 0.0);
+        refreshRepresentations();
         for (int i = 0; i < plan.outputs.length; i++) {
             previous[i] = values[plan.outputs[i].slot()];
         }

@@ -95,6 +95,13 @@ public class PeerComparisonBenchmark {
             return fb.output(out);
         }
 
+        /** The evaluations so far: how many fell back to exact arithmetic, ran the kernel, the static filter decided. */
+        String counts() {
+            return fb.fallbacks() + " of " + fb.evaluations() + " evaluations redone in exact arithmetic; "
+                    + fb.compiledEvaluations() + " ran as the compiled kernel, " + fb.staticEvaluations()
+                    + " of them decided by the static filter";
+        }
+
         /** Runs the cycle a while before the exactness check at set-up (and to count the exact fallbacks). */
         Reference warm(double[][] cycle) throws EvaluationException {
             for (int k = 0; k < 2500; k++) {
@@ -148,9 +155,7 @@ public class PeerComparisonBenchmark {
             this.peer = peer;
             exactness(program, cycle, exact, ref, peer);
             // the reference's exact fallback is on: how many of the warm-up evaluations needed it
-            System.out.println("fallbacks: " + program + " " + ref.fb.fallbacks() + " of " + ref.fb.evaluations()
-                    + " evaluations redone in exact arithmetic; " + ref.fb.compiledEvaluations()
-                    + " ran as the compiled kernel");
+            System.out.println("fallbacks: " + program + " " + ref.counts());
         }
     }
 

@@ -46,11 +46,13 @@ class KernelAgreementTest {
         final AtomicLong compiledSteps = new AtomicLong();
         final AtomicLong wholeSteps = new AtomicLong();
         final AtomicLong fallbacks = new AtomicLong();
+        final AtomicLong staticSteps = new AtomicLong();
 
         @Override
         public String toString() {
             return programs + " programs (" + compiledPrograms + " compiled), " + steps + " steps (" + compiledSteps
-                    + " by the kernel, " + wholeSteps + " of them with every output compiled; "
+                    + " by the kernel, " + wholeSteps + " of them with every output compiled, " + staticSteps
+                    + " decided by the static filter; "
                     + (steps.get() - compiledSteps.get()) + " interpreted), " + fallbacks
                     + " fell back to exact arithmetic";
         }
@@ -96,6 +98,7 @@ class KernelAgreementTest {
             assertTrue(c.fallbacks.get() > 0, "no step fell back: the test cannot tell a decision: " + c);
         }
         assertTrue(decision.wholeSteps.get() + fuzz.wholeSteps.get() > 0, "no output compiled whole");
+        assertTrue(decision.staticSteps.get() + fuzz.staticSteps.get() > 0, "no step decided by the static filter");
     }
 
     /**
@@ -185,6 +188,7 @@ class KernelAgreementTest {
             }
         } finally {
             counts.fallbacks.addAndGet(compiled.fallbacks());
+            counts.staticSteps.addAndGet(compiled.staticEvaluations());
         }
         if (compiled.compiledEvaluations() != (covered ? compiled.evaluations() : 0)) {
             wrong.add("the kernel ran " + compiled.compiledEvaluations() + " of " + compiled.evaluations()

@@ -1,0 +1,802 @@
+package org.fclcert.eval;
+
+import org.fclcert.eval.BlockPlan.OutputPlan;
+import org.fclcert.eval.BlockPlan.RuleBlockPlan;
+import org.fclcert.eval.BlockPlan.SubconclusionPlan;
+import org.fclcert.model.AndAlgorithm;
+import org.fclcert.model.OrAlgorithm;
+import static org.objectweb.asm.Opcodes.*;
+
+import java.lang.invoke.MethodHandles;
+import org.objectweb.asm.ClassWriter;
+import org.objectweb.asm.Label;
+import org.objectweb.asm.MethodVisitor;
+
+/**
+ * The static filter of a block (the second half of Shewchuk's and CGAL's filtered predicates; docs/semantics.md,
+ * "The static filter"): error bounds computed once per plan, valid for every finite input, so that a step computes
+ * only the doubles and compares them with constants. Where every static test passes, the running bounds of
+ * {@link FunctionBlockInstance} would settle every decision too (each running bound is at most its static one), so
+ * the step's discrete outcome is the exact one and its doubles are the interpreter's; where a test fails the step is
+ * evaluated again with the running bounds (and, if still undecided, exactly).
+ *
+ * <p>It covers the blocks whose every output the compiled kernel computes whole (singleton terms, MAX accumulation,
+ * CoGS) and whose rules are one term or one AND (MIN, PROD) or OR (MAX) of terms, negated or not, with constant
+ * weights, over input terms of constant points with degrees in [0, 1]. The doubles are computed by the interpreter's
+ * operations in its order ({@link Pwl#degree}, the fold of {@code aggregateTerms}, w·d, {@code degreesPerTerm}'s MAX,
+ * {@code centreOfGravityForSingletons}), so they are the interpreter's bit for bit.
+ *
+ * <p>Its size (about 800 lines, above the project's 700) is earned: the static bounds, the step interpreted and the
+ * step generated sit side by side, so that every operation the generator leaves out or replaces can be read beside
+ * the argument that it cannot change a bit, and the bounds beside the running formulas they dominate.
+ *
+ * <p>The static bounds, each no smaller than the running bound {@link FunctionBlockInstance} computes for the same
+ * quantity at any finite input (every running bound is a sum and product of non-negative doubles, each operation
+ * monotonic, so the same expression on the largest operands bounds it):
+ * <ul>
+ * <li>a term of points: the largest bound of its pieces, where a sloped piece between x₀ and x₁ takes the running
+ * formula with the input's representation distance at its largest in [x₀, x₁], ulp(max(|x₀|, |x₁|))/2; a singleton
+ * term 0;</li>
+ * <li>MIN, MAX: the larger operand bound ({@code minError} and {@code maxError} never exceed it); PROD and w·d:
+ * {@code productError} on the operands' largest magnitudes, plus the smallest normal double (its underflow case);
+ * NOT: the operand's bound plus its rounding term;</li>
+ * <li>a singleton term's accumulated degree under MAX: the largest bound of its contributions; CoGS: undecided by the
+ * running bounds only when Σμ does not exceed Σe, so Σμ &gt; Σ (static bounds), summed in the same order, settles it
+ * (and implies that some term fired).</li>
+ * </ul>
+ */
+final class StaticFilter {
+    private static final int SINGLE = 0;
+    private static final int MIN = 1;
+    private static final int PROD = 2;
+    private static final int MAX = 3;
+    /** Slack on a largest magnitude: an interpolated degree may round a few ulps above its points' degrees. */
+    private static final double SLACK = 1 + 0x1.0p-40;
+
+    /** Per input term: its variable's slot, points (null for a singleton) and static bound. */
+    private final int[] termSlot;
+    private final double[][] termX;
+    private final double[][] termY;
+    private final double[] singletonAt;
+    final double[] termBound;
+    /** Per rule (all rule blocks): its operator and its terms ({@code ruleFrom}), negated or not. */
+    private final int[] ruleOp;
+    private final int[] ruleFrom;
+    private final int[] ruleTerm;
+    private final boolean[] ruleNot;
+    final double[] ruleBound;
+    /** Per output: its slot, its contributions ({@code outFrom}): rule, constant weight, term; its terms' values. */
+    final int[] outputSlot;
+    private final int[] outFrom;
+    private final int[] contributionRule;
+    private final double[] contributionWeight;
+    private final int[] contributionTerm;
+    private final double[][] singletonValue;
+    /** Per output, per term: the static bound of its accumulated degree; per output: Σ of them (the CoGS test). */
+    final double[][] singletonBound;
+    /** Per contribution (the plan's index): the static bound of w·d and of d (for the tests). */
+    final double[] contributionBound;
+    final double[] contributionDegreeBound;
+    /** Per contribution: its output and singleton term (for the tests). */
+    final int[] contributionOutput;
+    final int[] contributionSingleton;
+    final double[] threshold;
+    /** The step as generated code ({@link #compile}), or null when the block is too large for one method. */
+    final Step compiled;
+
+    /** {@link #step} written out for one plan: the same operations on the same operands, its numbers as constants. */
+    interface Step {
+        /** As {@link StaticFilter#step}, without the scratch arrays. */
+        boolean step(double[] values, double[] saved);
+    }
+
+    /** The VAR_INPUT slots in declaration order; per output its type's range. */
+    private final int[] inputSlot;
+    private final double[] outputMin;
+    private final double[] outputMax;
+    /** Scratch sizes. */
+    final int terms;
+    final int rules;
+    final int maxOutputTerms;
+
+    private StaticFilter(BlockPlan plan, int[][] rulesTerms, int[] ops, boolean[][] nots, int[] contributionRules,
+            double[] weights) {
+        int nt = plan.termShape.length;
+        this.terms = nt;
+        termSlot = plan.termVariableSlot.clone();
+        termX = new double[nt][];
+        termY = new double[nt][];
+        singletonAt = new double[nt];
+        termBound = new double[nt];
+        double[] termMax = new double[nt];
+        for (int t = 0; t < nt; t++) {
+            Shape s = plan.shapes[plan.termShape[t]];
+            if (s.singleton) {
+                singletonAt[t] = s.sortedX[0];
+                termMax[t] = 1;
+                continue;
+            }
+            termX[t] = s.sortedX;
+            termY[t] = s.sortedY;
+            termBound[t] = termBound(s.sortedX, s.sortedY);
+            double m = 0;
+            for (double y : s.sortedY) {
+                m = Math.max(m, y);
+            }
+            termMax[t] = m * SLACK;
+        }
+        int nr = ops.length;
+        this.rules = nr;
+        ruleOp = ops;
+        ruleFrom = new int[nr + 1];
+        int total = 0;
+        for (int r = 0; r < nr; r++) {
+            ruleFrom[r] = total;
+            total += rulesTerms[r].length;
+        }
+        ruleFrom[nr] = total;
+        ruleTerm = new int[total];
+        ruleNot = new boolean[total];
+        ruleBound = new double[nr];
+        double[] ruleMax = new double[nr];
+        for (int r = 0; r < nr; r++) {
+            double m = 0;
+            double e = 0;
+            for (int j = 0; j < rulesTerms[r].length; j++) {
+                int t = rulesTerms[r][j];
+                ruleTerm[ruleFrom[r] + j] = t;
+                ruleNot[ruleFrom[r] + j] = nots[r][j];
+                double mj = nots[r][j] ? SLACK : termMax[t];      // 1 - d of a degree in [0, 1 + tiny]
+                double ej = nots[r][j] ? termBound[t] + Norms.R : termBound[t];
+                if (j == 0) {
+                    m = mj;
+                    e = ej;
+                } else if (ops[r] == PROD) {
+                    e = Norms.productError(m, e, mj, ej, m * mj) + Double.MIN_NORMAL;
+                    m = m * mj * SLACK;
+                } else {
+                    e = Math.max(e, ej);
+                    m = Math.max(m, mj);
+                }
+            }
+            ruleBound[r] = e;
+            ruleMax[r] = m;
+        }
+        int no = plan.outputs.length;
+        outputSlot = new int[no];
+        inputSlot = plan.inputNames.stream().mapToInt(plan.slotByName::get).toArray();
+        outputMin = new double[no];
+        outputMax = new double[no];
+        outFrom = new int[no + 1];
+        int nc = 0;
+        int maxTerms = 0;
+        for (int i = 0; i < no; i++) {
+            outFrom[i] = nc;
+            nc += plan.outputs[i].contributions().length;
+            maxTerms = Math.max(maxTerms, plan.outputs[i].termShapes().length);
+        }
+        outFrom[no] = nc;
+        maxOutputTerms = maxTerms;
+        contributionRule = new int[nc];
+        contributionWeight = new double[nc];
+        contributionTerm = new int[nc];
+        singletonValue = new double[no][];
+        singletonBound = new double[no][];
+        threshold = new double[no];
+        contributionBound = new double[plan.contributionCount];
+        contributionDegreeBound = new double[plan.contributionCount];
+        contributionOutput = new int[plan.contributionCount];
+        contributionSingleton = new int[plan.contributionCount];
+        for (int i = 0; i < no; i++) {
+            OutputPlan o = plan.outputs[i];
+            outputSlot[i] = o.slot();
+            outputMin[i] = plan.types[o.slot()].min();
+            outputMax[i] = plan.types[o.slot()].max();
+            int n = o.termShapes().length;
+            singletonValue[i] = new double[n];
+            singletonBound[i] = new double[n];
+            for (int t = 0; t < n; t++) {
+                singletonValue[i][t] = plan.shapes[o.termShapes()[t]].sortedX[0];
+            }
+            int[] cs = o.contributions();
+            for (int k = 0; k < cs.length; k++) {
+                int c = cs[k];
+                int at = outFrom[i] + k;
+                int r = contributionRules[c];
+                double w = weights[c];
+                contributionRule[at] = r;
+                contributionWeight[at] = w;
+                contributionTerm[at] = o.contributionTerm()[k];
+                double aw = Math.abs(w);
+                double e = Norms.productError(aw, FunctionBlockInstance.representation(w), ruleMax[r], ruleBound[r],
+                        aw * ruleMax[r]) + Double.MIN_NORMAL;
+                int t = o.contributionTerm()[k];
+                singletonBound[i][t] = Math.max(singletonBound[i][t], e);
+                contributionBound[c] = e;
+                contributionDegreeBound[c] = ruleBound[r];
+                contributionOutput[c] = i;
+                contributionSingleton[c] = t;
+            }
+            double sum = 0;
+            for (int t = 0; t < n; t++) {
+                sum += singletonBound[i][t];
+            }
+            threshold[i] = sum;
+        }
+        compiled = compile();
+    }
+
+    // ------------------------------------------------------------------------------------------ generated step
+
+    /** A budget of bytecode for the one generated method, below HotSpot's 8 000-byte limit for compiling one. */
+    private static final int BUDGET = 6000;
+
+    /**
+     * {@link #step} as one generated method, its loops unrolled and every point, degree, weight, value and threshold
+     * a constant: per term Pwl.degree's branches (below, above, the first point at or above u: at it the largest
+     * degree of the points there, before it the interpolation ((x₁ − u)·y₀ + (u − x₀)·y₁)/(x₁ − x₀), a flat piece
+     * its degree), per rule the fold by Math.min, Math.max or a product, per output the MAX per term and CoGS's sums
+     * in {@link #step}'s order. Null when the estimate exceeds {@link #BUDGET}.
+     */
+    private Step compile() {
+        int cost = 0;
+        for (int t = 0; t < terms; t++) {
+            cost += 20 + (termX[t] == null ? 10 : 60 * termX[t].length);
+        }
+        cost += 20 * ruleTerm.length + 30 * contributionRule.length + 40 * maxOutputTerms * outputSlot.length;
+        if (cost > BUDGET) {
+            return null;
+        }
+        String self = "org/fclcert/eval/StaticStep";
+        ClassWriter cw = new ClassWriter(ClassWriter.COMPUTE_FRAMES | ClassWriter.COMPUTE_MAXS);
+        cw.visit(V17, ACC_FINAL | ACC_SUPER, self, null, "java/lang/Object",
+                new String[] {"org/fclcert/eval/StaticFilter$Step"});
+        MethodVisitor init = cw.visitMethod(0, "<init>", "()V", null, null);
+        init.visitCode();
+        init.visitVarInsn(ALOAD, 0);
+        init.visitMethodInsn(INVOKESPECIAL, "java/lang/Object", "<init>", "()V", false);
+        init.visitInsn(RETURN);
+        init.visitMaxs(0, 0);
+        init.visitEnd();
+        // each term's degree in a small method of its own, so that the step stays under HotSpot's size for inlining
+        // a hot method (FreqInlineSize, 325 bytes) and the JIT inlines it, and the terms into it
+        for (int t = 0; t < terms; t++) {
+            MethodVisitor tm = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, "term" + t, "(D)D", null, null);
+            tm.visitCode();
+            term(tm, t, 0, 2);
+            tm.visitVarInsn(DLOAD, 2);
+            tm.visitInsn(DRETURN);
+            tm.visitMaxs(0, 0);
+            tm.visitEnd();
+        }
+        MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "step", "([D[D)Z", null, null);
+        mv.visitCode();
+        // locals: this, values, out; u; then the term degrees, rule degrees, singleton degrees, num, den
+        int u = 3;
+        int td = 5;
+        int rd = td + 2 * terms;
+        int sd = rd + 2 * rules;
+        int num = sd + 2 * maxOutputTerms;
+        int den = num + 2;
+        int result = den + 2;
+        for (int t = 0; t < terms; t++) {
+            mv.visitVarInsn(ALOAD, 1);
+            push(mv, termSlot[t]);
+            mv.visitInsn(DALOAD);
+            mv.visitMethodInsn(INVOKESTATIC, self, "term" + t, "(D)D", false);
+            mv.visitVarInsn(DSTORE, td + 2 * t);
+        }
+        for (int r = 0; r < rules; r++) {
+            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+                if (ruleNot[j]) {
+                    mv.visitInsn(DCONST_1);
+                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
+                    mv.visitInsn(DSUB);
+                } else {
+                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
+                }
+                if (j > ruleFrom[r]) {
+                    if (ruleOp[r] == PROD) {
+                        mv.visitInsn(DMUL);
+                    } else {
+                        // Math.min/max are the plain comparison's choice for operands neither NaN nor -0.0: the
+                        // terms' degrees are not (points' degrees in [0, 1], not -0.0; an interpolation is a sum of
+                        // products at least +0 over a positive width), nor MIN, MAX or PROD of them; 1 - d is not
+                        // -0.0 either, but may be below 0, and a PROD of it with +0 is -0.0: Math's after a NOT
+                        select(mv, ruleOp[r] == MIN, !plainSoFar(r, j + 1));
+                    }
+                }
+            }
+            mv.visitVarInsn(DSTORE, rd + 2 * r);
+        }
+        Label undecided = new Label();
+        // a rule degree is not below +0 when its fold has no NOT (1 - d of a degree rounded above 1 is below 0)
+        boolean[] nonNegative = new boolean[rules];
+        for (int r = 0; r < rules; r++) {
+            nonNegative[r] = true;
+            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+                nonNegative[r] &= !ruleNot[j];
+            }
+        }
+        for (int i = 0; i < outputSlot.length; i++) {
+            int n = singletonValue[i].length;
+            boolean[] written = new boolean[n];
+            for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+                int t = contributionTerm[k];
+                double w = contributionWeight[k];
+                int r = contributionRule[k];
+                // Math.max(+0 or the term's degree so far, w·d); w·d for w = 1 is d itself. The first contribution
+                // of a term is Math.max(+0, w·d) = w·d when w·d is not below +0 (w >= +0, d >= +0)
+                boolean first = !written[t] && nonNegative[r] && w >= 0
+                        && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0);
+                if (!first) {
+                    if (written[t]) {
+                        mv.visitVarInsn(DLOAD, sd + 2 * t);
+                    } else {
+                        mv.visitInsn(DCONST_0);
+                    }
+                }
+                if (w == 1) {
+                    mv.visitVarInsn(DLOAD, rd + 2 * r);
+                } else {
+                    mv.visitLdcInsn(w);
+                    mv.visitVarInsn(DLOAD, rd + 2 * r);
+                    mv.visitInsn(DMUL);
+                }
+                if (!first) {
+                    // plain only where both are not below +0 (no -0.0: w·d of a non-negative w, d is +0 or above)
+                    select(mv, false, !(nonNegative[r] && w >= 0
+                            && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0)
+                            && !anyNegativeBefore(i, k, t, nonNegative)));
+                }
+                mv.visitVarInsn(DSTORE, sd + 2 * t);
+                written[t] = true;
+            }
+            for (int t = 0; t < n; t++) {
+                if (!written[t]) {
+                    mv.visitInsn(DCONST_0);
+                    mv.visitVarInsn(DSTORE, sd + 2 * t);
+                }
+            }
+            // num = 0.0 + v0·sd0 + ...; den = 0.0 + sd0 + ... (sd >= +0 here whenever every rule has no NOT: see
+            // below). Only the additions that can change a bit are kept: the start 0.0 + x is x for x not -0.0, and
+            // a term v·sd with v = +0 adds +0 to a sum that is never -0.0
+            boolean allNonNegative = true;
+            for (boolean b : nonNegative) {
+                allNonNegative &= b;
+            }
+            for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+                allNonNegative &= contributionWeight[k] >= 0;
+            }
+            boolean numStarted = false;
+            boolean denStarted = false;
+            for (int t = 0; t < n; t++) {
+                double v = singletonValue[i][t];
+                boolean positiveV = v > 0 || v == 0 && Double.doubleToRawLongBits(v) == 0;
+                if (!allNonNegative || !(v == 0 && positiveV && numStarted)) {
+                    boolean lead = allNonNegative && positiveV && !numStarted;
+                    if (!lead) {
+                        if (numStarted) {
+                            mv.visitVarInsn(DLOAD, num);
+                        } else {
+                            mv.visitInsn(DCONST_0);
+                        }
+                    }
+                    mv.visitLdcInsn(v);
+                    mv.visitVarInsn(DLOAD, sd + 2 * t);
+                    mv.visitInsn(DMUL);
+                    if (!lead) {
+                        mv.visitInsn(DADD);
+                    }
+                    mv.visitVarInsn(DSTORE, num);
+                    numStarted = true;
+                }
+                boolean leadDen = allNonNegative && !denStarted;
+                if (!leadDen) {
+                    if (denStarted) {
+                        mv.visitVarInsn(DLOAD, den);
+                    } else {
+                        mv.visitInsn(DCONST_0);
+                    }
+                }
+                mv.visitVarInsn(DLOAD, sd + 2 * t);
+                if (!leadDen) {
+                    mv.visitInsn(DADD);
+                }
+                mv.visitVarInsn(DSTORE, den);
+                denStarted = true;
+            }
+            if (!numStarted) {
+                mv.visitInsn(DCONST_0);
+                mv.visitVarInsn(DSTORE, num);
+            }
+            // !(den > threshold): undecided (NaN compares as not greater)
+            mv.visitVarInsn(DLOAD, den);
+            mv.visitLdcInsn(threshold[i]);
+            mv.visitInsn(DCMPL);
+            mv.visitJumpInsn(IFLE, undecided);
+            mv.visitVarInsn(DLOAD, num);
+            mv.visitVarInsn(DLOAD, den);
+            mv.visitInsn(DDIV);
+            mv.visitVarInsn(DSTORE, result + 2 * i);
+            // !(c >= min && c <= max): the running path reports it. Left out where every μ is at least +0 and the
+            // type's range holds twice the largest |v|: then |Σ v·μ / Σ μ| is at most max |v| times a few roundings
+            double largest = 0;
+            for (double v : singletonValue[i]) {
+                largest = Math.max(largest, Math.abs(v));
+            }
+            if (allNonNegative && 2 * largest <= outputMax[i] && -2 * largest >= outputMin[i]) {
+                continue;
+            }
+            mv.visitVarInsn(DLOAD, result + 2 * i);
+            mv.visitLdcInsn(outputMin[i]);
+            mv.visitInsn(DCMPL);
+            mv.visitJumpInsn(IFLT, undecided);
+            mv.visitVarInsn(DLOAD, result + 2 * i);
+            mv.visitLdcInsn(outputMax[i]);
+            mv.visitInsn(DCMPG);
+            mv.visitJumpInsn(IFGT, undecided);
+        }
+        for (int i = 0; i < outputSlot.length; i++) {
+            mv.visitVarInsn(ALOAD, 1);
+            push(mv, outputSlot[i]);
+            mv.visitVarInsn(DLOAD, result + 2 * i);
+            mv.visitInsn(DASTORE);
+        }
+        for (int k = 0; k < inputSlot.length; k++) {
+            mv.visitVarInsn(ALOAD, 2);
+            push(mv, k);
+            mv.visitVarInsn(ALOAD, 1);
+            push(mv, inputSlot[k]);
+            mv.visitInsn(DALOAD);
+            mv.visitInsn(DASTORE);
+        }
+        mv.visitInsn(ICONST_1);
+        mv.visitInsn(IRETURN);
+        mv.visitLabel(undecided);
+        mv.visitInsn(ICONST_0);
+        mv.visitInsn(IRETURN);
+        mv.visitMaxs(0, 0);
+        mv.visitEnd();
+        cw.visitEnd();
+        try {
+            MethodHandles.Lookup hidden = MethodHandles.lookup().defineHiddenClass(cw.toByteArray(), true);
+            return (Step) hidden.findConstructor(hidden.lookupClass(),
+                    java.lang.invoke.MethodType.methodType(void.class)).invoke();
+        } catch (Throwable e) {
+            throw new IllegalStateException("the static filter's step failed to load", e);
+        }
+    }
+
+    /** Pwl.degree (or a singleton's 1/0) of term t at local {@code u}, into local {@code into}. */
+    private void term(MethodVisitor mv, int t, int u, int into) {
+        Label store = new Label();
+        double[] x = termX[t];
+        if (x == null) {
+            Label miss = new Label();
+            mv.visitVarInsn(DLOAD, u);
+            mv.visitLdcInsn(singletonAt[t]);
+            mv.visitInsn(DCMPL);
+            mv.visitJumpInsn(IFNE, miss);
+            constant(mv, 1.0, into, store);
+            mv.visitLabel(miss);
+            constant(mv, 0.0, into, store);
+            mv.visitLabel(store);
+            return;
+        }
+        double[] y = termY[t];
+        int n = x.length;
+        Label notBelow = new Label();
+        mv.visitVarInsn(DLOAD, u);
+        mv.visitLdcInsn(x[0]);
+        mv.visitInsn(DCMPG);
+        mv.visitJumpInsn(IFGE, notBelow);       // NaN: not below, not above, no point: the last segment
+        constant(mv, y[0], into, store);
+        mv.visitLabel(notBelow);
+        Label notAbove = new Label();
+        mv.visitVarInsn(DLOAD, u);
+        mv.visitLdcInsn(x[n - 1]);
+        mv.visitInsn(DCMPL);
+        mv.visitJumpInsn(IFLE, notAbove);
+        constant(mv, y[n - 1], into, store);
+        mv.visitLabel(notAbove);
+        for (int i = 0; i < n; i++) {
+            if (i > 0 && x[i] == x[i - 1]) {
+                continue;   // the first of equal abscissas is found first
+            }
+            boolean last = x[i] == x[n - 1];
+            Label next = new Label();
+            if (!last) {
+                mv.visitVarInsn(DLOAD, u);
+                mv.visitLdcInsn(x[i]);
+                mv.visitInsn(DCMPG);
+                mv.visitJumpInsn(IFGT, next);
+            }
+            Label between = new Label();
+            if (i > 0) {
+                mv.visitVarInsn(DLOAD, u);
+                mv.visitLdcInsn(x[i]);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFNE, between);
+            }
+            double max = y[i];
+            for (int j = i + 1; j < n && x[j] == x[i]; j++) {
+                max = Math.max(max, y[j]);
+            }
+            constant(mv, max, into, store);
+            if (i > 0) {
+                mv.visitLabel(between);
+                if (y[i - 1] == y[i]) {
+                    constant(mv, y[i - 1], into, store);
+                } else {
+                    // ((x1 - u) * y0 + (u - x0) * y1) / (x1 - x0). Inside the piece both differences are above 0
+                    // and the degrees not below +0, so each product is at least +0: a product by a degree 0 is +0
+                    // and adds nothing (a + +0 = a for a >= +0), and one by a degree 1 is the difference itself,
+                    // so those operations are left out (the same double)
+                    double y0 = y[i - 1];
+                    double y1 = y[i];
+                    if (y0 != 0) {
+                        mv.visitLdcInsn(x[i]);
+                        mv.visitVarInsn(DLOAD, u);
+                        mv.visitInsn(DSUB);
+                        if (y0 != 1) {
+                            mv.visitLdcInsn(y0);
+                            mv.visitInsn(DMUL);
+                        }
+                    }
+                    if (y1 != 0) {
+                        mv.visitVarInsn(DLOAD, u);
+                        mv.visitLdcInsn(x[i - 1]);
+                        mv.visitInsn(DSUB);
+                        if (y1 != 1) {
+                            mv.visitLdcInsn(y1);
+                            mv.visitInsn(DMUL);
+                        }
+                    }
+                    if (y0 != 0 && y1 != 0) {
+                        mv.visitInsn(DADD);
+                    }
+                    mv.visitLdcInsn(x[i] - x[i - 1]);
+                    mv.visitInsn(DDIV);
+                    mv.visitVarInsn(DSTORE, into);
+                    mv.visitJumpInsn(GOTO, store);
+                }
+            }
+            if (last) {
+                break;
+            }
+            mv.visitLabel(next);
+        }
+        mv.visitLabel(store);
+    }
+
+    /**
+     * Math.min (min) or Math.max of the two doubles on the stack; as {@code a <= b ? a : b} (or {@code >=}) unless
+     * {@code general}: equal to Math's choice when neither is NaN nor -0.0.
+     */
+    private static void select(MethodVisitor mv, boolean min, boolean general) {
+        if (general) {
+            mv.visitMethodInsn(INVOKESTATIC, "java/lang/Math", min ? "min" : "max", "(DD)D", false);
+            return;
+        }
+        mv.visitMethodInsn(INVOKESTATIC, "org/fclcert/eval/StaticFilter", min ? "plainMin" : "plainMax", "(DD)D",
+                false);
+    }
+
+    /** Math.min for operands that are not NaN and not -0.0. */
+    static double plainMin(double a, double b) {
+        return a <= b ? a : b;
+    }
+
+    /** Math.max for operands that are not NaN and not -0.0. */
+    static double plainMax(double a, double b) {
+        return a >= b ? a : b;
+    }
+
+    /** Whether the fold of rule r before position j has no NOT (every degree there at least +0, not -0.0). */
+    private boolean plainSoFar(int r, int j) {
+        for (int q = ruleFrom[r]; q < j; q++) {
+            if (ruleNot[q]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether a contribution of output i before k on singleton term t may be below 0 or -0.0. */
+    private boolean anyNegativeBefore(int i, int k, int t, boolean[] nonNegative) {
+        for (int q = outFrom[i]; q < k; q++) {
+            if (contributionTerm[q] == t && !(nonNegative[contributionRule[q]] && contributionWeight[q] >= 0
+                    && Double.doubleToRawLongBits(contributionWeight[q]) != Double.doubleToRawLongBits(-0.0))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static void constant(MethodVisitor mv, double d, int into, Label store) {
+        mv.visitLdcInsn(d);
+        mv.visitVarInsn(DSTORE, into);
+        mv.visitJumpInsn(GOTO, store);
+    }
+
+    private static void push(MethodVisitor mv, int i) {
+        if (i <= 5) {
+            mv.visitInsn(ICONST_0 + i);
+        } else if (i <= Byte.MAX_VALUE) {
+            mv.visitIntInsn(BIPUSH, i);
+        } else if (i <= Short.MAX_VALUE) {
+            mv.visitIntInsn(SIPUSH, i);
+        } else {
+            mv.visitLdcInsn(i);
+        }
+    }
+
+    /**
+     * The largest running bound of {@code FunctionBlockInstance.degree} on a constant shape of points over every
+     * finite input: at or outside a point the point's representation distance; inside a sloped piece the running
+     * formula with the input's distance at its largest there.
+     */
+    static double termBound(double[] x, double[] y) {
+        int n = x.length;
+        double b = 0;
+        for (int i = 0; i < n; i++) {
+            b = Math.max(b, FunctionBlockInstance.representation(y[i]));
+        }
+        for (int i = 1; i < n; i++) {
+            if (x[i] == x[i - 1]) {
+                continue;
+            }
+            double e = Math.max(FunctionBlockInstance.representation(y[i - 1]),
+                    FunctionBlockInstance.representation(y[i]));
+            if (y[i - 1] != y[i]) {
+                double uRep = 0.5 * Math.ulp(Math.max(Math.abs(x[i - 1]), Math.abs(x[i])));
+                double shift = uRep + FunctionBlockInstance.representation(x[i - 1])
+                        + FunctionBlockInstance.representation(x[i]);
+                double width = x[i] - x[i - 1];
+                e = 4 * shift < width ? e + Math.abs(y[i] - y[i - 1]) * 2 * shift / width + 2 * Norms.R
+                        : Double.POSITIVE_INFINITY;
+            }
+            b = Math.max(b, e);
+        }
+        return b;
+    }
+
+    /**
+     * The block's static filter, or null when it is not covered: every output computed whole by the kernel
+     * ({@code kernelOutputs}), conditions of one term or one AND/OR of terms under MIN, PROD or MAX, constant
+     * weights, input terms of constant points with degrees in [0, 1] (not −0.0).
+     */
+    static StaticFilter build(BlockPlan plan, boolean[] kernelOutputs) {
+        for (boolean b : kernelOutputs) {
+            if (!b) {
+                return null;
+            }
+        }
+        if (plan.chainedTerms != 0 || plan.valueTermShape != null) {
+            return null;
+        }
+        for (int t = 0; t < plan.termShape.length; t++) {
+            Shape s = plan.shapes[plan.termShape[t]];
+            if (!s.constant || s.kind != null || s.computed != null) {
+                return null;
+            }
+            for (double y : s.sortedY) {
+                if (!(y >= 0 && y <= 1) || Double.doubleToRawLongBits(y) == Double.doubleToRawLongBits(-0.0)) {
+                    return null;
+                }
+            }
+        }
+        java.util.List<int[]> terms = new java.util.ArrayList<>();
+        java.util.List<boolean[]> nots = new java.util.ArrayList<>();
+        java.util.List<Integer> ops = new java.util.ArrayList<>();
+        int[] contributionRules = new int[plan.contributionCount];
+        java.util.Arrays.fill(contributionRules, -1);
+        double[] weights = new double[plan.contributionCount];
+        for (RuleBlockPlan rb : plan.ruleBlocks) {
+            if (rb.bareTargetSlots().length != 0) {
+                return null;
+            }
+            for (int r = 0; r < rb.conditions().length; r++) {
+                ConditionCode code = rb.conditions()[r];
+                int n = code.flatTerms;
+                if (n == 0) {
+                    return null;
+                }
+                int op = SINGLE;
+                if (n > 1) {
+                    boolean isAnd = code.ops[n] == ConditionCode.AND;
+                    op = isAnd && rb.and() == AndAlgorithm.MIN ? MIN : isAnd && rb.and() == AndAlgorithm.PROD ? PROD
+                            : !isAnd && rb.or() == OrAlgorithm.MAX ? MAX : -1;
+                    if (op < 0) {
+                        return null;
+                    }
+                }
+                int[] ts = new int[n];
+                boolean[] ns = new boolean[n];
+                for (int j = 0; j < n; j++) {
+                    ts[j] = code.args[j];
+                    ns[j] = code.ops[j] == ConditionCode.TERM_NOT;
+                }
+                int rule = ops.size();
+                terms.add(ts);
+                nots.add(ns);
+                ops.add(op);
+                for (SubconclusionPlan sc : rb.conclusions()[r]) {
+                    if (sc.contribution() < 0 || sc.weightSlot() >= 0 || !Double.isFinite(sc.weightConst())) {
+                        return null;
+                    }
+                    contributionRules[sc.contribution()] = rule;
+                    weights[sc.contribution()] = sc.weightConst();
+                }
+            }
+        }
+        for (OutputPlan o : plan.outputs) {
+            for (int c : o.contributions()) {
+                if (contributionRules[c] < 0) {
+                    return null;
+                }
+            }
+        }
+        return new StaticFilter(plan, terms.toArray(new int[0][]), ops.stream().mapToInt(Integer::intValue).toArray(),
+                nots.toArray(new boolean[0][]), contributionRules, weights);
+    }
+
+    /**
+     * One step with the static tests: the term degrees into {@code td}, rule degrees into {@code rd}, each output's
+     * value into {@code out}; when every test passes and every output fits its type, the outputs are written into
+     * {@code values}, the inputs copied into {@code saved} (the step's inputs, for its running bounds later) and it
+     * returns true. Else it returns false and writes nothing: the step must be evaluated with the running bounds
+     * (which also report an output that does not fit).
+     */
+    boolean step(double[] values, double[] saved, double[] td, double[] rd, double[] sd, double[] out) {
+        for (int t = 0; t < terms; t++) {
+            double u = values[termSlot[t]];
+            double[] x = termX[t];
+            td[t] = x == null ? (u == singletonAt[t] ? 1.0 : 0.0) : Pwl.degree(x, termY[t], x.length, u);
+        }
+        for (int r = 0; r < rules; r++) {
+            int from = ruleFrom[r];
+            int to = ruleFrom[r + 1];
+            double acc = ruleNot[from] ? 1.0 - td[ruleTerm[from]] : td[ruleTerm[from]];
+            int op = ruleOp[r];
+            for (int j = from + 1; j < to; j++) {
+                double y = ruleNot[j] ? 1.0 - td[ruleTerm[j]] : td[ruleTerm[j]];
+                acc = op == MIN ? Math.min(acc, y) : op == PROD ? acc * y : Math.max(acc, y);
+            }
+            rd[r] = acc;
+        }
+        for (int i = 0; i < outputSlot.length; i++) {
+            double[] v = singletonValue[i];
+            int n = v.length;
+            for (int t = 0; t < n; t++) {
+                sd[t] = 0;
+            }
+            for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+                int t = contributionTerm[k];
+                sd[t] = Math.max(sd[t], contributionWeight[k] * rd[contributionRule[k]]);
+            }
+            double num = 0;
+            double den = 0;
+            for (int t = 0; t < n; t++) {
+                num += v[t] * sd[t];
+                den += sd[t];
+            }
+            if (!(den > threshold[i])) {
+                return false;
+            }
+            double c = num / den;
+            if (!(c >= outputMin[i] && c <= outputMax[i])) {
+                return false;
+            }
+            out[i] = c;
+        }
+        for (int i = 0; i < outputSlot.length; i++) {
+            values[outputSlot[i]] = out[i];
+        }
+        for (int k = 0; k < inputSlot.length; k++) {
+            saved[k] = values[inputSlot[k]];
+        }
+        return true;
+    }
+}

@@ -1,0 +1,380 @@
+package org.fclcert.eval;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import org.fclcert.model.Program;
+import org.fclcert.syntax.StrictReader;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The static filter (docs/semantics.md, "The static filter"): its bounds on the 5.3 valve against a hand
+ * calculation; a step it cannot decide that the running bounds decide, one only exact arithmetic decides, one it
+ * decides; and, on random programs it covers, every static bound at least the running bound of the same quantity at
+ * every step, with the outputs, bounds and internals of the interpreter bit for bit.
+ */
+class StaticFilterTest {
+    private static LoadedProgram load(String text) {
+        Program program = new StrictReader().read("t.fcl", text).program().orElseThrow();
+        return Evaluator.load(program);
+    }
+
+    /** u = 2⁻⁵³; Norms.R = 4u. */
+    private static final BigDecimal U = BigDecimal.ONE.divide(BigDecimal.valueOf(2).pow(53));
+    private static final BigDecimal R = U.multiply(BigDecimal.valueOf(4));
+
+    private static BigDecimal pow2(int e) {
+        return BigDecimal.ONE.divide(BigDecimal.valueOf(2).pow(-e));
+    }
+
+    /**
+     * Whether a static bound is the formula's value to a relative 1e-9. It is the formula evaluated in doubles, as
+     * the running bound is (each rounding monotonic, so the static double is at least the running double; the
+     * rounding of the bounds themselves is covered by their factors on each rounding term, docs/semantics.md).
+     */
+    private static void holds(BigDecimal exact, double bound, String what) {
+        BigDecimal b = new BigDecimal(bound);
+        assertTrue(b.subtract(exact).abs().compareTo(exact.multiply(new BigDecimal("1e-9"))) <= 0,
+                what + ": " + bound + " against " + exact);
+    }
+
+    @Test
+    void valveBoundsByHand() throws Exception {
+        LoadedProgram p = load(Files.readString(Path.of("examples", "valve.fcl")));
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        fb.setInputs(5, 60);
+        fb.evaluate();
+        StaticFilter f = fb.staticFilter();
+        assertNotNull(f, "the valve is covered");
+        assertNotNull(f.compiled, "and generated");
+        // temp's ramps (3, ·) (27, ·): integer points and degrees (distance 0); an input inside has a distance of at
+        // most ulp(27)/2 = 2⁻⁴⁹: |Δy|·2·2⁻⁴⁹/24 + 2R. pressure's (55, ·) (95, ·): ulp(95)/2 = 2⁻⁴⁷, /40.
+        BigDecimal temp = BigDecimal.valueOf(2).multiply(pow2(-49)).divide(BigDecimal.valueOf(24), MathContext.DECIMAL128)
+                .add(R.multiply(BigDecimal.valueOf(2)));
+        BigDecimal pressure = BigDecimal.valueOf(2).multiply(pow2(-47))
+                .divide(BigDecimal.valueOf(40), MathContext.DECIMAL128).add(R.multiply(BigDecimal.valueOf(2)));
+        for (int t = 0; t < 4; t++) {
+            holds(t < 2 ? temp : pressure, f.termBound[t], "term " + t);
+        }
+        // every rule is a MIN of a temp and a pressure term: the larger bound, pressure's
+        for (double b : f.ruleBound) {
+            holds(pressure, b, "rule");
+        }
+        // w = 1: 1·S + M·0 + 0·S + R·M (M = 1 and a slack of 2⁻⁴⁰) + the smallest normal; the three singletons each
+        // have a rule of weight 1 (closed: rules 2 with 0.8 and 3 with 1, the larger), so the CoGS threshold is 3 of
+        // those: about 5.06e-15
+        BigDecimal one = pressure.add(R);
+        BigDecimal threshold = one.multiply(BigDecimal.valueOf(3));
+        holds(threshold, f.threshold[0], "threshold");
+        assertEquals(1, fb.staticEvaluations(), "(5, 60) decided statically");
+    }
+
+    /**
+     * The running bounds of a statically decided step are those of its own inputs, whatever was set since: bound()
+     * after new inputs were set, and reset() (which settles them first and then refreshes the representation
+     * distances of the initial values), against an interpreted instance driven alike.
+     */
+    @Test
+    void boundsWhenAskedAreThoseOfTheStep() throws Exception {
+        LoadedProgram p = load(Files.readString(Path.of("examples", "valve.fcl")));
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        FunctionBlockInstance plain = p.newInstance();
+        plain.interpretOnly();
+        fb.setInputs(5.1, 60.3);
+        plain.setInputs(5.1, 60.3);
+        fb.evaluate();
+        plain.evaluate();
+        assertEquals(1, fb.staticEvaluations());
+        fb.setInputs(15, 75);                    // set, not evaluated: the bound asked is still (5.1, 60.3)'s
+        double b = plain.bound("valve");
+        assertTrue(b > 0 && b < 1e-12, "bound " + b);
+        assertEquals(b, fb.bound("valve"));
+        assertEquals(15.0, fb.get("temp"), "the inputs set since are kept");
+        fb.evaluate();
+        plain.setInputs(15, 75);
+        plain.evaluate();
+        assertEquals(plain.output(0), fb.output(0));
+        fb.reset();
+        plain.reset();
+        assertEquals(plain.bound("valve"), fb.bound("valve"), "reset keeps the last step's bound");
+        fb.evaluate();                          // temp 0, pressure 0 (no initial values): cold and low, inlet 100
+        plain.evaluate();
+        assertEquals(100.0, fb.output(0));
+        assertEquals(plain.output(0), fb.output(0));
+        assertEquals(plain.bound("valve"), fb.bound("valve"));
+        assertEquals(Arrays.toString(plain.state()), Arrays.toString(fb.state()));
+        assertEquals(3, fb.staticEvaluations());
+    }
+
+    /**
+     * a IS A with A a ramp over (0, 2²⁰); b IS B with B a ramp 1e-10 wide at 0.1 (points not decimals in binary):
+     * B's static bound is about 2·3·(ulp(0.1)/2)/1e-10 ≈ 4.2e-7, the threshold of the only singleton.
+     */
+    private static final String STEEP = """
+            FUNCTION_BLOCK sf
+            VAR_INPUT a : REAL; b : REAL; END_VAR
+            VAR_OUTPUT y : REAL; END_VAR
+            FUZZIFY a
+                TERM big := (0, 0) (1048576, 1);
+            END_FUZZIFY
+            FUZZIFY b
+                TERM steep := (0.1, 0) (0.1000000001, 1);
+            END_FUZZIFY
+            DEFUZZIFY y
+                TERM s := 10;
+                METHOD : CoGS;
+                DEFAULT := -1;
+            END_DEFUZZIFY
+            RULEBLOCK r
+                AND : MIN;
+                ACCU : MAX;
+                RULE 1 : IF a IS big AND b IS steep THEN y IS s;
+            END_RULEBLOCK
+            END_FUNCTION_BLOCK
+            """;
+
+    @Test
+    void staticTestFailsRunningBoundsOrExactDecide() throws Exception {
+        LoadedProgram p = load(STEEP);
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        FunctionBlockInstance plain = p.newInstance();
+        plain.interpretOnly();
+        fb.setInputs(524288, 1);           // big = 1/2 exactly, steep = 1 (above its points)
+        fb.evaluate();
+        StaticFilter f = fb.staticFilter();
+        assertNotNull(f);
+        assertTrue(f.threshold[0] > 4.1e-7 && f.threshold[0] < 4.3e-7, "threshold " + f.threshold[0]);
+        assertEquals(1, fb.staticEvaluations(), "0.5 > 4.2e-7: decided statically");
+        assertEquals(10.0, fb.output(0));
+        // big = 2⁻³⁰ exactly (a = 1/1024 is a decimal: distance 0, bound 2R), steep = 1 exactly: the degree 9.3e-10 is
+        // under the static threshold, but the running bound (MIN takes the certainly smaller operand's, 2R) decides
+        fb.setInputs(1.0 / 1024, 1);
+        fb.evaluate();
+        assertEquals(1, fb.staticEvaluations(), "2^-30 < 4.2e-7: not decided statically");
+        assertEquals(0, fb.fallbacks(), "decided by the running bounds");
+        assertEquals(10.0, fb.output(0));
+        // one singleton: CoGS spread 0, bound 2·2·u·10 (the value 10 is a decimal)
+        assertEquals(40 * 0x1.0p-53, fb.bound("y"), 1e-30);
+        // a = 1e-300 is not a decimal in binary: its distance (half an ulp) moves the degree by far more than the
+        // degree itself, 1e-300/2²⁰: only exact arithmetic decides (any positive degree gives 10)
+        fb.setInputs(1e-300, 1);
+        fb.evaluate();
+        assertEquals(1, fb.fallbacks(), "decided exactly");
+        assertEquals(10.0, fb.output(0));
+        assertEquals(0.0, fb.bound("y"));
+        // a = 0: big is an exact 0 at its point, nothing fired: DEFAULT, by the running bounds
+        fb.setInputs(0, 1);
+        fb.evaluate();
+        assertEquals(-1.0, fb.output(0));
+        assertEquals(1, fb.fallbacks());
+        assertEquals(1, fb.staticEvaluations());
+        for (double[] v : new double[][] {{524288, 1}, {1.0 / 1024, 1}, {1e-300, 1}, {0, 1}}) {
+            plain.setInputs(v);
+            plain.evaluate();
+        }
+        assertEquals(1, plain.fallbacks(), "the interpreter falls back at the same step");
+    }
+
+    /**
+     * Random programs the static filter covers (1-3 inputs of 2-4 piece-wise linear terms with points off and on
+     * binary fractions, steep and wide pieces, large abscissas; MIN, PROD or MAX of 1-3 terms, IS NOT, weights; 2-4
+     * singletons, CoGS), 40 steps each at random inputs, on points, next to points, and on multiples of 1/1024. After
+     * every step of the instance with the static filter (generated, and interpreted on a second instance): the same
+     * state, fallbacks, internals and bounds as the interpreter bit for bit, and every running bound of a term, rule
+     * and contribution at most its static bound, Σ of the singletons' running bounds at most the threshold. A static
+     * bound made smaller than the running one fails here (see the report of issue 24 for the planted fault).
+     */
+    @Test
+    void staticBoundsDominateRunningBoundsOnRandomPrograms() throws Exception {
+        int programs = 0;
+        long decided = 0;
+        long steps = 0;
+        long fallbacks = 0;
+        for (int n = 0; n < 400; n++) {
+            Random rnd = new Random(24_5_0L + n);
+            List<double[]> points = new ArrayList<>();
+            String text = program(rnd, points);
+            LoadedProgram p = load(text);
+            FunctionBlockInstance gen = p.newCompiledInstance(null);
+            FunctionBlockInstance interpreted = p.newCompiledInstance(null);
+            FunctionBlockInstance plain = p.newInstance();
+            plain.interpretOnly();
+            int inputs = plain.inputNames().size();
+            for (int s = 0; s < 40; s++) {
+                double[] v = new double[inputs];
+                for (int i = 0; i < inputs; i++) {
+                    v[i] = input(rnd, points.get(i));
+                }
+                gen.setInputs(v);
+                interpreted.setInputs(v);
+                plain.setInputs(v);
+                gen.evaluate();
+                if (s == 0) {
+                    assertNotNull(gen.staticFilter(), "covered:\n" + text);
+                    interpreted.evaluate();
+                    interpreted.interpretStaticStep();
+                } else {
+                    interpreted.evaluate();
+                }
+                plain.evaluate();
+                String where = "program " + n + " step " + s + " inputs " + Arrays.toString(v) + "\n" + text;
+                assertEquals(Arrays.toString(plain.state()), Arrays.toString(gen.state()), where);
+                assertEquals(Arrays.toString(plain.state()), Arrays.toString(interpreted.state()), where);
+                assertEquals(plain.fallbacks(), gen.fallbacks(), where);
+                double[][] a = plain.internals();
+                double[][] b = gen.internals();
+                double[][] c = interpreted.internals();
+                for (int k = 0; k < a.length; k++) {
+                    assertTrue(Arrays.equals(a[k], b[k]) && Arrays.equals(a[k], c[k]),
+                            where + "\ninternals " + k + ": " + Arrays.toString(a[k]) + " / "
+                                    + Arrays.toString(b[k]));
+                }
+                assertEquals(plain.bound("y"), gen.bound("y"), where);
+                if (gen.fallbacks() > fallbacks) {
+                    fallbacks = gen.fallbacks();
+                    continue;       // the exact path's step: no running bounds to compare
+                }
+                dominates(gen.staticFilter(), b, where);
+            }
+            programs++;
+            decided += gen.staticEvaluations();
+            steps += gen.evaluations();
+            fallbacks = 0;
+        }
+        System.out.println("static filter: " + programs + " programs, " + steps + " steps, " + decided
+                + " decided statically");
+        assertTrue(decided > steps / 4 && decided < steps, decided + " of " + steps + " decided statically");
+    }
+
+    /** Every running bound of the last step (internals) at most its static bound. */
+    private static void dominates(StaticFilter f, double[][] in, String where) {
+        double[] termErrors = in[1];
+        double[] contributionError = in[4];
+        double[] degreeError = in[5];
+        for (int t = 0; t < f.terms; t++) {
+            assertTrue(termErrors[t] <= f.termBound[t], where + "\nterm " + t + ": running " + termErrors[t]
+                    + " above static " + f.termBound[t]);
+        }
+        for (int c = 0; c < contributionError.length; c++) {
+            assertTrue(contributionError[c] <= f.contributionBound[c], where + "\ncontribution " + c + ": running "
+                    + contributionError[c] + " above static " + f.contributionBound[c]);
+            assertTrue(degreeError[c] <= f.contributionDegreeBound[c], where + "\ndegree of contribution " + c
+                    + ": running " + degreeError[c] + " above static " + f.contributionDegreeBound[c]);
+        }
+        // a singleton's running bound under MAX is at most the largest of its contributions' (maxError): their sum
+        // over the singletons, in order, at most the CoGS threshold
+        for (int i = 0; i < f.threshold.length; i++) {
+            double[] largest = new double[f.singletonBound[i].length];
+            for (int c = 0; c < contributionError.length; c++) {
+                if (f.contributionOutput[c] == i) {
+                    int t = f.contributionSingleton[c];
+                    largest[t] = Math.max(largest[t], contributionError[c]);
+                }
+            }
+            double sum = 0;
+            for (double e : largest) {
+                sum += e;
+            }
+            assertTrue(sum <= f.threshold[i], where + "\nsingletons' running bounds " + sum + " above the threshold "
+                    + f.threshold[i]);
+        }
+    }
+
+    private static final String[] XS = {"0", "0.1", "0.3", "1", "2.5", "3", "7", "10", "12.7", "27", "55", "95",
+        "100", "1000.1", "1048575", "1048577", "123456.789"};
+
+    /** A random covered program; the points of each input's terms into {@code points}. */
+    private static String program(Random rnd, List<double[]> points) {
+        StringBuilder s = new StringBuilder("FUNCTION_BLOCK r\nVAR_INPUT\n");
+        int inputs = 1 + rnd.nextInt(3);
+        for (int i = 0; i < inputs; i++) {
+            s.append("    x").append(i).append(" : REAL;\n");
+        }
+        s.append("END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n");
+        List<String> terms = new ArrayList<>();
+        for (int i = 0; i < inputs; i++) {
+            s.append("FUZZIFY x").append(i).append('\n');
+            int n = 2 + rnd.nextInt(3);
+            List<Double> xs = new ArrayList<>();
+            for (int t = 0; t < n; t++) {
+                int k = 2 + rnd.nextInt(3);
+                double base = Double.parseDouble(XS[rnd.nextInt(XS.length)]);
+                double[] x = new double[k];
+                for (int j = 0; j < k; j++) {
+                    // mostly increasing by random decimal steps; sometimes a steep piece of 1e-9 or a repeated point
+                    double step = rnd.nextInt(6) == 0 ? 1e-9 : rnd.nextInt(8) == 0 ? 0 : (1 + rnd.nextInt(200)) / 10.0;
+                    base = j == 0 ? base : base + step;
+                    x[j] = Double.parseDouble(String.format(Locale.ROOT, "%.10g", base));
+                    if (j > 0 && x[j] < x[j - 1]) {
+                        x[j] = x[j - 1];
+                    }
+                    xs.add(x[j]);
+                }
+                s.append("    TERM t").append(t).append(" :=");
+                for (int j = 0; j < k; j++) {
+                    String y = switch (rnd.nextInt(4)) {
+                        case 0 -> "0";
+                        case 1 -> "1";
+                        case 2 -> "0.5";
+                        default -> String.format(Locale.ROOT, "%.3f", rnd.nextDouble());
+                    };
+                    s.append(" (").append(x[j]).append(", ").append(y).append(')');
+                }
+                s.append(";\n");
+                terms.add("x" + i + " IS " + (rnd.nextInt(6) == 0 ? "NOT " : "") + "t" + t);
+            }
+            s.append("END_FUZZIFY\n");
+            points.add(xs.stream().mapToDouble(Double::doubleValue).toArray());
+        }
+        s.append("DEFUZZIFY y\n");
+        int singletons = 2 + rnd.nextInt(3);
+        for (int k = 0; k < singletons; k++) {
+            s.append("    TERM s").append(k).append(" := ").append(rnd.nextInt(7) == 0 ? "0.1" : rnd.nextInt(201) - 100)
+                    .append(";\n");
+        }
+        s.append("    METHOD : CoGS;\n    DEFAULT := -7;\nEND_DEFUZZIFY\n");
+        String and = rnd.nextBoolean() ? "MIN" : "PROD";
+        s.append("RULEBLOCK rb\n    AND : ").append(and).append(";\n    OR : MAX;\n    ACCU : MAX;\n");
+        int rules = 1 + rnd.nextInt(6);
+        for (int r = 0; r < rules; r++) {
+            int k = 1 + rnd.nextInt(3);
+            String op = rnd.nextBoolean() ? " AND " : " OR ";
+            StringBuilder cond = new StringBuilder();
+            for (int j = 0; j < k; j++) {
+                cond.append(j > 0 ? op : "").append(terms.get(rnd.nextInt(terms.size())));
+            }
+            s.append("    RULE ").append(r + 1).append(" : IF ").append(cond).append(" THEN y IS s")
+                    .append(rnd.nextInt(singletons));
+            if (rnd.nextInt(3) == 0) {
+                s.append(" WITH ").append(new String[] {"0.8", "0.5", "0.1", "0.333"}[rnd.nextInt(4)]);
+            }
+            s.append(";\n");
+        }
+        s.append("END_RULEBLOCK\nEND_FUNCTION_BLOCK\n");
+        return s.toString();
+    }
+
+    /** An input: random in the points' span, on a point, next to one, or a multiple of 1/1024. */
+    private static double input(Random rnd, double[] xs) {
+        double lo = Arrays.stream(xs).min().orElse(0) - 1;
+        double hi = Arrays.stream(xs).max().orElse(1) + 1;
+        double x = xs[rnd.nextInt(xs.length)];
+        return switch (rnd.nextInt(5)) {
+            case 0 -> x;
+            case 1 -> Math.nextUp(x);
+            case 2 -> Math.nextDown(x);
+            case 3 -> Math.rint((lo + rnd.nextDouble() * (hi - lo)) * 1024) / 1024;
+            default -> lo + rnd.nextDouble() * (hi - lo);
+        };
+    }
+}
