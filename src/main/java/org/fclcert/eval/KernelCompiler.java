@@ -247,61 +247,105 @@ final class KernelCompiler {
         } else {
             loadElement(mv, 1, slot);
             mv.visitVarInsn(DSTORE, UREP);
-            Label notBelow = new Label();
-            mv.visitVarInsn(DLOAD, U);
-            mv.visitLdcInsn(x[0]);
-            mv.visitInsn(DCMPG);
-            mv.visitJumpInsn(IFGE, notBelow);
-            constants(mv, y[0], ry[0], store);
-            mv.visitLabel(notBelow);
-            Label notAbove = new Label();
-            mv.visitVarInsn(DLOAD, U);
-            mv.visitLdcInsn(x[n - 1]);
-            mv.visitInsn(DCMPL);
-            mv.visitJumpInsn(IFLE, notAbove);
-            constants(mv, y[n - 1], ry[n - 1], store);
-            mv.visitLabel(notAbove);
-            // i = the first index with x[i] >= u (Pwl.linearLowerBound / lowerBound); u == x[i]: the point's degree
-            for (int i = 0; i < n; i++) {
-                if (i > 0 && x[i] == x[i - 1]) {
-                    continue;   // the first of equal abscissas is found first
+            searchPoints(mv, U, x, new PointPlaces() {
+                @Override
+                public void outside(int i) {
+                    constants(mv, y[i], ry[i], store);
                 }
-                boolean last = x[i] == x[n - 1];
-                Label next = new Label();
-                if (!last) {
-                    mv.visitVarInsn(DLOAD, U);
-                    mv.visitLdcInsn(x[i]);
-                    mv.visitInsn(DCMPG);
-                    mv.visitJumpInsn(IFGT, next);
+
+                @Override
+                public void atPoint(int i, int end) {
+                    // degreeAtPoint: the largest degree of the points at x[i], the largest of their bounds
+                    double max = y[i];
+                    double e = ry[i];
+                    for (int j = i + 1; j < end; j++) {
+                        max = Math.max(max, y[j]);
+                        e = Math.max(e, ry[j]);
+                    }
+                    constants(mv, max, e, store);
                 }
-                Label between = new Label();
-                if (i > 0) {
-                    mv.visitVarInsn(DLOAD, U);
-                    mv.visitLdcInsn(x[i]);
-                    mv.visitInsn(DCMPL);
-                    mv.visitJumpInsn(IFNE, between);
-                }
-                // degreeAtPoint: the largest degree of the points at x[i], the largest of their bounds
-                double max = y[i];
-                double e = ry[i];
-                for (int j = i + 1; j < x.length && x[j] == x[i]; j++) {
-                    max = Math.max(max, y[j]);
-                    e = Math.max(e, ry[j]);
-                }
-                constants(mv, max, e, store);
-                if (i > 0) {
-                    mv.visitLabel(between);
+
+                @Override
+                public void between(int i) {
                     segment(mv, x[i - 1], y[i - 1], x[i], y[i], rx[i - 1], rx[i], ry[i - 1], ry[i], store);
                 }
-                if (last) {
-                    break;
-                }
-                mv.visitLabel(next);
-            }
+            });
         }
         mv.visitLabel(store);
         storeElement(mv, 2, t, D);
         storeElement(mv, 3, t, E);
+    }
+
+    /**
+     * What a term's degree is at each place {@link #searchPoints} finds u: each method writes its values and jumps
+     * to the caller's store label. The kernel writes a degree and its bound, the static filter the degree alone.
+     */
+    interface PointPlaces {
+        /** u below the first point (i = 0) or above the last (i = n - 1): y[i]. */
+        void outside(int i);
+
+        /** u at x[i]; the points i to end - 1 share that abscissa (a jump): the largest of their degrees. */
+        void atPoint(int i, int end);
+
+        /** u strictly between x[i - 1] and x[i]. */
+        void between(int i);
+    }
+
+    /**
+     * The search for local {@code u} among a term's sorted points in Pwl.degree's order, written once for the
+     * kernel and the static filter: below the first point, above the last, then for each distinct abscissa at it
+     * or strictly before it. NaN is neither below nor above nor at a point, so it takes the last segment's branch.
+     */
+    static void searchPoints(MethodVisitor mv, int u, double[] x, PointPlaces at) {
+        int n = x.length;
+        Label notBelow = new Label();
+        mv.visitVarInsn(DLOAD, u);
+        mv.visitLdcInsn(x[0]);
+        mv.visitInsn(DCMPG);
+        mv.visitJumpInsn(IFGE, notBelow);
+        at.outside(0);
+        mv.visitLabel(notBelow);
+        Label notAbove = new Label();
+        mv.visitVarInsn(DLOAD, u);
+        mv.visitLdcInsn(x[n - 1]);
+        mv.visitInsn(DCMPL);
+        mv.visitJumpInsn(IFLE, notAbove);
+        at.outside(n - 1);
+        mv.visitLabel(notAbove);
+        // i = the first index with x[i] >= u (Pwl.linearLowerBound / lowerBound); u == x[i]: the point's degree
+        for (int i = 0; i < n; i++) {
+            if (i > 0 && x[i] == x[i - 1]) {
+                continue;   // the first of equal abscissas is found first
+            }
+            boolean last = x[i] == x[n - 1];
+            Label next = new Label();
+            if (!last) {
+                mv.visitVarInsn(DLOAD, u);
+                mv.visitLdcInsn(x[i]);
+                mv.visitInsn(DCMPG);
+                mv.visitJumpInsn(IFGT, next);
+            }
+            Label between = new Label();
+            if (i > 0) {
+                mv.visitVarInsn(DLOAD, u);
+                mv.visitLdcInsn(x[i]);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFNE, between);
+            }
+            int end = i + 1;
+            while (end < n && x[end] == x[i]) {
+                end++;
+            }
+            at.atPoint(i, end);
+            if (i > 0) {
+                mv.visitLabel(between);
+                at.between(i);
+            }
+            if (last) {
+                break;
+            }
+            mv.visitLabel(next);
+        }
     }
 
     /** d := a, e := b, then to the store. */

@@ -485,88 +485,60 @@ final class StaticFilter {
             return;
         }
         double[] y = termY[t];
-        int n = x.length;
-        Label notBelow = new Label();
-        mv.visitVarInsn(DLOAD, u);
-        mv.visitLdcInsn(x[0]);
-        mv.visitInsn(DCMPG);
-        mv.visitJumpInsn(IFGE, notBelow);       // NaN: not below, not above, no point: the last segment
-        constant(mv, y[0], into, store);
-        mv.visitLabel(notBelow);
-        Label notAbove = new Label();
-        mv.visitVarInsn(DLOAD, u);
-        mv.visitLdcInsn(x[n - 1]);
-        mv.visitInsn(DCMPL);
-        mv.visitJumpInsn(IFLE, notAbove);
-        constant(mv, y[n - 1], into, store);
-        mv.visitLabel(notAbove);
-        for (int i = 0; i < n; i++) {
-            if (i > 0 && x[i] == x[i - 1]) {
-                continue;   // the first of equal abscissas is found first
+        KernelCompiler.searchPoints(mv, u, x, new KernelCompiler.PointPlaces() {
+            @Override
+            public void outside(int i) {
+                constant(mv, y[i], into, store);
             }
-            boolean last = x[i] == x[n - 1];
-            Label next = new Label();
-            if (!last) {
-                mv.visitVarInsn(DLOAD, u);
-                mv.visitLdcInsn(x[i]);
-                mv.visitInsn(DCMPG);
-                mv.visitJumpInsn(IFGT, next);
+
+            @Override
+            public void atPoint(int i, int end) {
+                double max = y[i];
+                for (int j = i + 1; j < end; j++) {
+                    max = Math.max(max, y[j]);
+                }
+                constant(mv, max, into, store);
             }
-            Label between = new Label();
-            if (i > 0) {
-                mv.visitVarInsn(DLOAD, u);
-                mv.visitLdcInsn(x[i]);
-                mv.visitInsn(DCMPL);
-                mv.visitJumpInsn(IFNE, between);
-            }
-            double max = y[i];
-            for (int j = i + 1; j < n && x[j] == x[i]; j++) {
-                max = Math.max(max, y[j]);
-            }
-            constant(mv, max, into, store);
-            if (i > 0) {
-                mv.visitLabel(between);
+
+            @Override
+            public void between(int i) {
                 if (y[i - 1] == y[i]) {
                     constant(mv, y[i - 1], into, store);
-                } else {
-                    // ((x1 - u) * y0 + (u - x0) * y1) / (x1 - x0). Inside the piece both differences are above 0
-                    // and the degrees not below +0, so each product is at least +0: a product by a degree 0 is +0
-                    // and adds nothing (a + +0 = a for a >= +0), and one by a degree 1 is the difference itself,
-                    // so those operations are left out (the same double)
-                    double y0 = y[i - 1];
-                    double y1 = y[i];
-                    if (y0 != 0) {
-                        mv.visitLdcInsn(x[i]);
-                        mv.visitVarInsn(DLOAD, u);
-                        mv.visitInsn(DSUB);
-                        if (y0 != 1) {
-                            mv.visitLdcInsn(y0);
-                            mv.visitInsn(DMUL);
-                        }
-                    }
-                    if (y1 != 0) {
-                        mv.visitVarInsn(DLOAD, u);
-                        mv.visitLdcInsn(x[i - 1]);
-                        mv.visitInsn(DSUB);
-                        if (y1 != 1) {
-                            mv.visitLdcInsn(y1);
-                            mv.visitInsn(DMUL);
-                        }
-                    }
-                    if (y0 != 0 && y1 != 0) {
-                        mv.visitInsn(DADD);
-                    }
-                    mv.visitLdcInsn(x[i] - x[i - 1]);
-                    mv.visitInsn(DDIV);
-                    mv.visitVarInsn(DSTORE, into);
-                    mv.visitJumpInsn(GOTO, store);
+                    return;
                 }
+                // ((x1 - u) * y0 + (u - x0) * y1) / (x1 - x0). Inside the piece both differences are above 0
+                // and the degrees not below +0, so each product is at least +0: a product by a degree 0 is +0
+                // and adds nothing (a + +0 = a for a >= +0), and one by a degree 1 is the difference itself,
+                // so those operations are left out (the same double)
+                double y0 = y[i - 1];
+                double y1 = y[i];
+                if (y0 != 0) {
+                    mv.visitLdcInsn(x[i]);
+                    mv.visitVarInsn(DLOAD, u);
+                    mv.visitInsn(DSUB);
+                    if (y0 != 1) {
+                        mv.visitLdcInsn(y0);
+                        mv.visitInsn(DMUL);
+                    }
+                }
+                if (y1 != 0) {
+                    mv.visitVarInsn(DLOAD, u);
+                    mv.visitLdcInsn(x[i - 1]);
+                    mv.visitInsn(DSUB);
+                    if (y1 != 1) {
+                        mv.visitLdcInsn(y1);
+                        mv.visitInsn(DMUL);
+                    }
+                }
+                if (y0 != 0 && y1 != 0) {
+                    mv.visitInsn(DADD);
+                }
+                mv.visitLdcInsn(x[i] - x[i - 1]);
+                mv.visitInsn(DDIV);
+                mv.visitVarInsn(DSTORE, into);
+                mv.visitJumpInsn(GOTO, store);
             }
-            if (last) {
-                break;
-            }
-            mv.visitLabel(next);
-        }
+        });
         mv.visitLabel(store);
     }
 
