@@ -63,16 +63,7 @@ final class KernelCompiler {
         for (int i = 0; i < outputs.length; i++) {
             outputs[i] = compiledOutput(plan, plan.outputs[i]);
         }
-        ClassWriter cw = new ClassWriter(ClassWriter.COMPUTE_FRAMES | ClassWriter.COMPUTE_MAXS);
-        cw.visit(V17, ACC_FINAL | ACC_SUPER, SELF, null, "java/lang/Object",
-                new String[] {"org/fclcert/eval/CompiledKernel"});
-        MethodVisitor init = cw.visitMethod(0, "<init>", "()V", null, null);
-        init.visitCode();
-        init.visitVarInsn(ALOAD, 0);
-        init.visitMethodInsn(INVOKESPECIAL, "java/lang/Object", "<init>", "()V", false);
-        init.visitInsn(RETURN);
-        init.visitMaxs(0, 0);
-        init.visitEnd();
+        ClassWriter cw = newClass(SELF, "org/fclcert/eval/CompiledKernel");
         List<String> fuzzify = fuzzifyMethods(cw, plan);
         List<String> rules = ruleMethods(cw, plan);
         MethodVisitor front = cw.visitMethod(ACC_PUBLIC, "front", FRONT_DESC, null, null);
@@ -100,14 +91,32 @@ final class KernelCompiler {
         front.visitMaxs(0, 0);
         front.visitEnd();
         outputMethods(cw, plan, outputs);
+        return new Compiled((CompiledKernel) instance(cw, "the compiled kernel of block '" + plan.name + "'"), outputs);
+    }
+
+    /** A generated final class implementing {@code iface} (internal name), with its no-argument constructor. */
+    static ClassWriter newClass(String name, String iface) {
+        ClassWriter cw = new ClassWriter(ClassWriter.COMPUTE_FRAMES | ClassWriter.COMPUTE_MAXS);
+        cw.visit(V17, ACC_FINAL | ACC_SUPER, name, null, "java/lang/Object", new String[] {iface});
+        MethodVisitor init = cw.visitMethod(0, "<init>", "()V", null, null);
+        init.visitCode();
+        init.visitVarInsn(ALOAD, 0);
+        init.visitMethodInsn(INVOKESPECIAL, "java/lang/Object", "<init>", "()V", false);
+        init.visitInsn(RETURN);
+        init.visitMaxs(0, 0);
+        init.visitEnd();
+        return cw;
+    }
+
+    /** Ends {@code cw}, defines it as a hidden class of this package and makes its one instance. */
+    static Object instance(ClassWriter cw, String what) {
         cw.visitEnd();
         try {
             MethodHandles.Lookup hidden = MethodHandles.lookup().defineHiddenClass(cw.toByteArray(), true);
-            CompiledKernel kernel = (CompiledKernel) hidden.findConstructor(hidden.lookupClass(),
-                    java.lang.invoke.MethodType.methodType(void.class)).invoke();
-            return new Compiled(kernel, outputs);
+            return hidden.findConstructor(hidden.lookupClass(), java.lang.invoke.MethodType.methodType(void.class))
+                    .invoke();
         } catch (Throwable e) {
-            throw new IllegalStateException("the compiled kernel of block '" + plan.name + "' failed to load", e);
+            throw new IllegalStateException(what + " failed to load", e);
         }
     }
 

@@ -7,7 +7,6 @@ import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.OrAlgorithm;
 import static org.objectweb.asm.Opcodes.*;
 
-import java.lang.invoke.MethodHandles;
 import org.objectweb.asm.ClassWriter;
 import org.objectweb.asm.Label;
 import org.objectweb.asm.MethodVisitor;
@@ -248,16 +247,7 @@ final class StaticFilter {
             return null;
         }
         String self = "org/fclcert/eval/StaticStep";
-        ClassWriter cw = new ClassWriter(ClassWriter.COMPUTE_FRAMES | ClassWriter.COMPUTE_MAXS);
-        cw.visit(V17, ACC_FINAL | ACC_SUPER, self, null, "java/lang/Object",
-                new String[] {"org/fclcert/eval/StaticFilter$Step"});
-        MethodVisitor init = cw.visitMethod(0, "<init>", "()V", null, null);
-        init.visitCode();
-        init.visitVarInsn(ALOAD, 0);
-        init.visitMethodInsn(INVOKESPECIAL, "java/lang/Object", "<init>", "()V", false);
-        init.visitInsn(RETURN);
-        init.visitMaxs(0, 0);
-        init.visitEnd();
+        ClassWriter cw = KernelCompiler.newClass(self, "org/fclcert/eval/StaticFilter$Step");
         // each term's degree in a small method of its own, so that the step stays under HotSpot's size for inlining
         // a hot method (FreqInlineSize, 325 bytes) and the JIT inlines it, and the terms into it
         for (int t = 0; t < terms; t++) {
@@ -458,14 +448,7 @@ final class StaticFilter {
         mv.visitInsn(IRETURN);
         mv.visitMaxs(0, 0);
         mv.visitEnd();
-        cw.visitEnd();
-        try {
-            MethodHandles.Lookup hidden = MethodHandles.lookup().defineHiddenClass(cw.toByteArray(), true);
-            return (Step) hidden.findConstructor(hidden.lookupClass(),
-                    java.lang.invoke.MethodType.methodType(void.class)).invoke();
-        } catch (Throwable e) {
-            throw new IllegalStateException("the static filter's step failed to load", e);
-        }
+        return (Step) KernelCompiler.instance(cw, "the static filter's step");
     }
 
     /** Pwl.degree (or a singleton's 1/0) of term t at local {@code u}, into local {@code into}. */
