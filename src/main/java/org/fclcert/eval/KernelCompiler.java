@@ -454,7 +454,8 @@ final class KernelCompiler {
         mv.visitInsn(DASTORE);
     }
 
-    private static void push(MethodVisitor mv, int i) {
+    /** Pushes the int constant i with the shortest instruction. */
+    static void push(MethodVisitor mv, int i) {
         if (i <= 5) {
             mv.visitInsn(ICONST_0 + i);
         } else if (i <= Byte.MAX_VALUE) {

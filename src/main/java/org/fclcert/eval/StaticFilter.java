@@ -271,7 +271,7 @@ final class StaticFilter {
         int result = den + 2;
         for (int t = 0; t < terms; t++) {
             mv.visitVarInsn(ALOAD, 1);
-            push(mv, termSlot[t]);
+            KernelCompiler.push(mv, termSlot[t]);
             mv.visitInsn(DALOAD);
             mv.visitMethodInsn(INVOKESTATIC, self, "term" + t, "(D)D", false);
             mv.visitVarInsn(DSTORE, td + 2 * t);
@@ -429,15 +429,15 @@ final class StaticFilter {
         }
         for (int i = 0; i < outputSlot.length; i++) {
             mv.visitVarInsn(ALOAD, 1);
-            push(mv, outputSlot[i]);
+            KernelCompiler.push(mv, outputSlot[i]);
             mv.visitVarInsn(DLOAD, result + 2 * i);
             mv.visitInsn(DASTORE);
         }
         for (int k = 0; k < inputSlot.length; k++) {
             mv.visitVarInsn(ALOAD, 2);
-            push(mv, k);
+            KernelCompiler.push(mv, k);
             mv.visitVarInsn(ALOAD, 1);
-            push(mv, inputSlot[k]);
+            KernelCompiler.push(mv, inputSlot[k]);
             mv.visitInsn(DALOAD);
             mv.visitInsn(DASTORE);
         }
@@ -573,18 +573,6 @@ final class StaticFilter {
         mv.visitLdcInsn(d);
         mv.visitVarInsn(DSTORE, into);
         mv.visitJumpInsn(GOTO, store);
-    }
-
-    private static void push(MethodVisitor mv, int i) {
-        if (i <= 5) {
-            mv.visitInsn(ICONST_0 + i);
-        } else if (i <= Byte.MAX_VALUE) {
-            mv.visitIntInsn(BIPUSH, i);
-        } else if (i <= Short.MAX_VALUE) {
-            mv.visitIntInsn(SIPUSH, i);
-        } else {
-            mv.visitLdcInsn(i);
-        }
     }
 
     /**
