@@ -3,6 +3,7 @@ package org.fclcert.eval;
 import org.fclcert.eval.BlockPlan.OutputPlan;
 import org.fclcert.eval.BlockPlan.RuleBlockPlan;
 import org.fclcert.eval.BlockPlan.SubconclusionPlan;
+import org.fclcert.model.AccumulationMethod;
 import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.OrAlgorithm;
 import static org.objectweb.asm.Opcodes.*;
@@ -303,10 +304,7 @@ final class StaticFilter {
         // a rule degree is not below +0 when its fold has no NOT (1 - d of a degree rounded above 1 is below 0)
         boolean[] nonNegative = new boolean[rules];
         for (int r = 0; r < rules; r++) {
-            nonNegative[r] = true;
-            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
-                nonNegative[r] &= !ruleNot[j];
-            }
+            nonNegative[r] = plainSoFar(r, ruleFrom[r + 1]);
         }
         for (int i = 0; i < outputSlot.length; i++) {
             int n = singletonValue[i].length;
@@ -317,8 +315,7 @@ final class StaticFilter {
                 int r = contributionRule[k];
                 // Math.max(+0 or the term's degree so far, w·d); w·d for w = 1 is d itself. The first contribution
                 // of a term is Math.max(+0, w·d) = w·d when w·d is not below +0 (w >= +0, d >= +0)
-                boolean first = !written[t] && nonNegative[r] && w >= 0
-                        && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0);
+                boolean first = !written[t] && nonNegative[r] && atLeastPlusZero(w);
                 if (!first) {
                     if (written[t]) {
                         mv.visitVarInsn(DLOAD, sd + 2 * t);
@@ -335,8 +332,7 @@ final class StaticFilter {
                 }
                 if (!first) {
                     // plain only where both are not below +0 (no -0.0: w·d of a non-negative w, d is +0 or above)
-                    select(mv, false, !(nonNegative[r] && w >= 0
-                            && Double.doubleToRawLongBits(w) != Double.doubleToRawLongBits(-0.0)
+                    select(mv, false, !(nonNegative[r] && atLeastPlusZero(w)
                             && !anyNegativeBefore(i, k, t, nonNegative)));
                 }
                 mv.visitVarInsn(DSTORE, sd + 2 * t);
@@ -362,7 +358,7 @@ final class StaticFilter {
             boolean denStarted = false;
             for (int t = 0; t < n; t++) {
                 double v = singletonValue[i][t];
-                boolean positiveV = v > 0 || v == 0 && Double.doubleToRawLongBits(v) == 0;
+                boolean positiveV = atLeastPlusZero(v);
                 if (!allNonNegative || !(v == 0 && positiveV && numStarted)) {
                     boolean lead = allNonNegative && positiveV && !numStarted;
                     if (!lead) {
@@ -558,11 +554,16 @@ final class StaticFilter {
         return true;
     }
 
+    /** Whether v is +0 or above: not below 0, not -0.0, not NaN (Math.min/max and a plain comparison agree there). */
+    private static boolean atLeastPlusZero(double v) {
+        return v > 0 || Double.doubleToRawLongBits(v) == 0L;
+    }
+
     /** Whether a contribution of output i before k on singleton term t may be below 0 or -0.0. */
     private boolean anyNegativeBefore(int i, int k, int t, boolean[] nonNegative) {
         for (int q = outFrom[i]; q < k; q++) {
-            if (contributionTerm[q] == t && !(nonNegative[contributionRule[q]] && contributionWeight[q] >= 0
-                    && Double.doubleToRawLongBits(contributionWeight[q]) != Double.doubleToRawLongBits(-0.0))) {
+            if (contributionTerm[q] == t
+                    && !(nonNegative[contributionRule[q]] && atLeastPlusZero(contributionWeight[q]))) {
                 return true;
             }
         }
@@ -625,7 +626,7 @@ final class StaticFilter {
                 return null;
             }
             for (double y : s.sortedY) {
-                if (!(y >= 0 && y <= 1) || Double.doubleToRawLongBits(y) == Double.doubleToRawLongBits(-0.0)) {
+                if (!(atLeastPlusZero(y) && y <= 1)) {
                     return null;
                 }
             }
@@ -705,7 +706,8 @@ final class StaticFilter {
             int op = ruleOp[r];
             for (int j = from + 1; j < to; j++) {
                 double y = ruleNot[j] ? 1.0 - td[ruleTerm[j]] : td[ruleTerm[j]];
-                acc = op == MIN ? Math.min(acc, y) : op == PROD ? acc * y : Math.max(acc, y);
+                acc = op == MIN ? Norms.and(AndAlgorithm.MIN, acc, y) : op == PROD ? Norms.and(AndAlgorithm.PROD, acc, y)
+                        : Norms.or(OrAlgorithm.MAX, acc, y);
             }
             rd[r] = acc;
         }
@@ -717,7 +719,7 @@ final class StaticFilter {
             }
             for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
                 int t = contributionTerm[k];
-                sd[t] = Math.max(sd[t], contributionWeight[k] * rd[contributionRule[k]]);
+                sd[t] = Norms.accumulate(AccumulationMethod.MAX, sd[t], contributionWeight[k] * rd[contributionRule[k]]);
             }
             double num = 0;
             double den = 0;
