@@ -50,17 +50,8 @@ public final class Chromium {
         Path file = dir.resolve(fileName);
         Files.writeString(file, content, StandardCharsets.UTF_8);
         Path png = dir.resolve(name + ".png");
-        Path profile = Files.createTempDirectory(dir, "profile");
-        Process p = new ProcessBuilder(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
-                "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--user-data-dir=" + profile, "--hide-scrollbars", "--force-device-scale-factor=1",
-                "--window-size=" + width + "," + height, "--screenshot=" + png, file.toUri().toString())
-                .redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile()).start();
-        if (!p.waitFor(120, TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            fail("Chromium did not finish rendering " + file + " in 120 s");
-        }
-        assertEquals(0, p.exitValue(), () -> "Chromium failed: " + read(dir.resolve(name + ".log")));
+        run(chromium, dir, name, file, null, "--hide-scrollbars", "--window-size=" + width + "," + height,
+                "--screenshot=" + png);
         assertTrue(Files.size(png) > 0, "no screenshot written");
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(width, image.getWidth());
@@ -83,23 +74,41 @@ public final class Chromium {
                 + ".replace(/\\s+/g,' ').slice(0,80));});var p=document.createElement('pre');p.id='fclcert-overflow';"
                 + "p.textContent='width '+document.documentElement.scrollWidth+' of '+w+'\\n'+o.join('\\n');"
                 + "document.body.appendChild(p);})();</script>\n", StandardCharsets.UTF_8);
-        Path profile = Files.createTempDirectory(dir, "profile");
         Path dom = dir.resolve(name + ".dom");
-        Process p = new ProcessBuilder(chromium.toString(), "--headless", "--no-sandbox", "--disable-gpu",
-                "--disable-quic", "--no-first-run", "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--user-data-dir=" + profile, "--force-device-scale-factor=1",
-                "--window-size=" + width + ",900", "--dump-dom", file.toUri().toString())
-                .redirectOutput(dom.toFile()).redirectError(dir.resolve(name + ".log").toFile()).start();
-        if (!p.waitFor(120, TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            fail("Chromium did not finish laying out " + file + " in 120 s");
-        }
-        assertEquals(0, p.exitValue(), () -> "Chromium failed: " + read(dir.resolve(name + ".log")));
+        run(chromium, dir, name, file, dom, "--window-size=" + width + ",900", "--dump-dom");
         String out = Files.readString(dom, StandardCharsets.UTF_8);
         int at = out.indexOf("<pre id=\"fclcert-overflow\">");
         assertTrue(at >= 0, "the measuring script did not run");
         String text = out.substring(at + "<pre id=\"fclcert-overflow\">".length(), out.indexOf("</pre>", at));
         return List.of(text.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&").split("\n"));
+    }
+
+    /**
+     * Runs headless Chromium on {@code file} with the flags every use shares and {@code flags}, and waits for it (120 s
+     * at most); its standard output goes to {@code stdout} (null: into the log with its errors, {@code name}.log).
+     */
+    private static void run(Path chromium, Path dir, String name, Path file, Path stdout, String... flags)
+            throws IOException, InterruptedException {
+        Path profile = Files.createTempDirectory(dir, "profile");
+        List<String> command = new java.util.ArrayList<>(List.of(chromium.toString(), "--headless", "--no-sandbox",
+                "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+                "--disable-component-update", "--disable-sync", "--user-data-dir=" + profile,
+                "--force-device-scale-factor=1"));
+        command.addAll(List.of(flags));
+        command.add(file.toUri().toString());
+        Path log = dir.resolve(name + ".log");
+        ProcessBuilder builder = new ProcessBuilder(command);
+        if (stdout == null) {
+            builder.redirectErrorStream(true).redirectOutput(log.toFile());
+        } else {
+            builder.redirectOutput(stdout.toFile()).redirectError(log.toFile());
+        }
+        Process p = builder.start();
+        if (!p.waitFor(120, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            fail("Chromium did not finish with " + file + " in 120 s");
+        }
+        assertEquals(0, p.exitValue(), () -> "Chromium failed: " + read(log));
     }
 
     private static String read(Path log) {

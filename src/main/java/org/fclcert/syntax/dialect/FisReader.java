@@ -106,13 +106,15 @@ public final class FisReader implements DialectReader {
         }
         double lo = Math.min(q[0], q[3]) - 40 / slope;
         double hi = Math.max(q[0], q[3]) + 40 / slope;
+        double[] first = {q[0], q[1]};
+        double[] second = {q[3], q[2]};
         double[] worst = {Double.NaN, 0};
         for (int i = 0; i <= 8000; i++) {
             double x = lo + (hi - lo) * i / 8000;
-            double d = ShapeKind.SIGMOID.degree(new double[] {q[3], q[2]}, x)
-                    - ShapeKind.SIGMOID.degree(new double[] {q[0], q[1]}, x);
+            double d = ShapeKind.SIGMOID.degree(second, x) - ShapeKind.SIGMOID.degree(first, x);
             if (d > worst[1]) {
-                worst = new double[] {x, d};
+                worst[0] = x;
+                worst[1] = d;
             }
         }
         return worst;
