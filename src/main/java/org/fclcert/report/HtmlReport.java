@@ -32,10 +32,10 @@ public final class HtmlReport {
             .verdict{margin:18px 0;padding:14px 18px;border-radius:8px;font-size:1.15em;font-weight:600}
             .verdict.ok{background:#e3f5e6;border:1px solid #7cc68a}.verdict.no{background:#fdeaea;border:1px solid #e39b9b}.verdict.open{background:#eceff3;border:1px solid #b5bcc5}
             .counts span{display:inline-block;margin-right:14px}
-            table{border-collapse:collapse;width:100%;background:#fff;margin:8px 0 16px}
-            th,td{border:1px solid #dde1e6;padding:6px 9px;text-align:left;vertical-align:top}
+            table{border-collapse:collapse;width:100%;background:#fff;margin:8px 0 16px;font-size:.9em}
+            th,td{border:1px solid #dde1e6;padding:5px 6px;text-align:left;vertical-align:top}
             th{background:#eef1f5;font-weight:600}
-            .st{font-weight:600;white-space:nowrap;border-radius:4px;padding:1px 7px}.st.note{white-space:normal}
+            .st{font-weight:600;border-radius:4px;padding:1px 7px}
             .realised,.passed{background:#dff3e3;color:#185c26}.partial{background:#fff1cc;color:#6d5200}
             .not-realised,.failed{background:#fadddd;color:#8a1c1c}.errored{background:#f3dcf5;color:#6a1b73}
             .not-tested,.not-determined,.skipped,.unsupported,.not-run{background:#eceff3;color:#555}

@@ -61,16 +61,18 @@ public final class Chromium {
 
     /**
      * What overflows a page to the right at {@code width} CSS pixels, as Chromium lays it out: the page's scroll
-     * width, then one line per element whose box ends past the viewport (at most 20). A page with no horizontal
+     * width, then one line per visible element whose box ends past the viewport (at most 20), with every
+     * {@code <details>} opened first, so that what a reader unfolds is measured too. A page with no horizontal
      * scrollbar gives just its width. The page is written to {@code dir} with a script appended that measures it.
      */
     public static List<String> overflow(Path dir, String name, String html, int width)
             throws IOException, InterruptedException {
         Path chromium = executable();
         Path file = dir.resolve(name + ".html");
-        Files.writeString(file, html + "\n<script>(function(){var w=document.documentElement.clientWidth,o=[];"
+        Files.writeString(file, html + "\n<script>(function(){document.querySelectorAll('details').forEach(function(d){d.open=true;});"
+                + "var w=document.documentElement.clientWidth,o=[];"
                 + "document.querySelectorAll('body *').forEach(function(e){var r=e.getBoundingClientRect();"
-                + "if(r.right>w+1&&o.length<20)o.push(e.tagName+' '+Math.round(r.right)+' '+(e.textContent||'')"
+                + "if(r.right>w+1&&o.length<20&&e.checkVisibility())o.push(e.tagName+' '+Math.round(r.right)+' '+(e.textContent||'')"
                 + ".replace(/\\s+/g,' ').slice(0,80));});var p=document.createElement('pre');p.id='fclcert-overflow';"
                 + "p.textContent='width '+document.documentElement.scrollWidth+' of '+w+'\\n'+o.join('\\n');"
                 + "document.body.appendChild(p);})();</script>\n", StandardCharsets.UTF_8);
