@@ -114,7 +114,7 @@ final class BlockPlan {
         if (!staticTried) {
             staticTried = true;
             KernelCompiler.Compiled k = kernel();
-            staticFilter = k == null ? null : StaticFilter.build(this, k.outputs());
+            staticFilter = k == null ? null : StaticFilter.build(this, k);
         }
         return staticFilter;
     }

@@ -607,25 +607,19 @@ final class StaticFilter {
     }
 
     /**
-     * The block's static filter, or null when it is not covered: every output computed whole by the kernel
-     * ({@code kernelOutputs}), conditions of one term or one AND/OR of terms under MIN, PROD or MAX, constant
-     * weights, input terms of constant points with degrees in [0, 1] (not −0.0).
+     * The static filter of a block the compiled kernel covers (so no chained terms, constant point or singleton
+     * input terms, no bare conclusions, every subconclusion a contribution: {@code KernelCompiler.covered}), or
+     * null when the filter does not cover it: every output computed whole by the kernel, conditions of one term or
+     * one AND/OR of terms under MIN, PROD or MAX, constant weights, input term degrees in [0, 1] (not −0.0).
      */
-    static StaticFilter build(BlockPlan plan, boolean[] kernelOutputs) {
-        for (boolean b : kernelOutputs) {
+    static StaticFilter build(BlockPlan plan, KernelCompiler.Compiled kernel) {
+        for (boolean b : kernel.outputs()) {
             if (!b) {
                 return null;
             }
         }
-        if (plan.chainedTerms != 0 || plan.valueTermShape != null) {
-            return null;
-        }
         for (int t = 0; t < plan.termShape.length; t++) {
-            Shape s = plan.shapes[plan.termShape[t]];
-            if (!s.constant || s.kind != null || s.computed != null) {
-                return null;
-            }
-            for (double y : s.sortedY) {
+            for (double y : plan.shapes[plan.termShape[t]].sortedY) {
                 if (!(atLeastPlusZero(y) && y <= 1)) {
                     return null;
                 }
@@ -635,12 +629,8 @@ final class StaticFilter {
         java.util.List<boolean[]> nots = new java.util.ArrayList<>();
         java.util.List<Integer> ops = new java.util.ArrayList<>();
         int[] contributionRules = new int[plan.contributionCount];
-        java.util.Arrays.fill(contributionRules, -1);
         double[] weights = new double[plan.contributionCount];
         for (RuleBlockPlan rb : plan.ruleBlocks) {
-            if (rb.bareTargetSlots().length != 0) {
-                return null;
-            }
             for (int r = 0; r < rb.conditions().length; r++) {
                 ConditionCode code = rb.conditions()[r];
                 int n = code.flatTerms;
@@ -667,7 +657,7 @@ final class StaticFilter {
                 nots.add(ns);
                 ops.add(op);
                 for (SubconclusionPlan sc : rb.conclusions()[r]) {
-                    if (sc.contribution() < 0 || sc.weightSlot() >= 0 || !Double.isFinite(sc.weightConst())) {
+                    if (sc.weightSlot() >= 0 || !Double.isFinite(sc.weightConst())) {
                         return null;
                     }
                     contributionRules[sc.contribution()] = rule;
@@ -675,13 +665,7 @@ final class StaticFilter {
                 }
             }
         }
-        for (OutputPlan o : plan.outputs) {
-            for (int c : o.contributions()) {
-                if (contributionRules[c] < 0) {
-                    return null;
-                }
-            }
-        }
+        // every contribution is a subconclusion of some rule (BlockCompiler), so each has its rule now
         return new StaticFilter(plan, terms.toArray(new int[0][]), ops.stream().mapToInt(Integer::intValue).toArray(),
                 nots.toArray(new boolean[0][]), contributionRules, weights);
     }
