@@ -657,7 +657,7 @@ final class StaticFilter {
                 nots.add(ns);
                 ops.add(op);
                 for (SubconclusionPlan sc : rb.conclusions()[r]) {
-                    if (sc.weightSlot() >= 0 || !Double.isFinite(sc.weightConst())) {
+                    if (sc.weightSlot() >= 0) {         // a constant weight is a literal in [0, 1] (FCL-C012)
                         return null;
                     }
                     contributionRules[sc.contribution()] = rule;
