@@ -293,21 +293,16 @@ final class SmoothSet {
     private double centreOfArea() {
         double half = area / 2;
         double tol = area * 1e-14;
-        double left = halfArea(half, tol, true);
-        double right = halfArea(half, tol, false);
-        if (Double.isNaN(left)) {
-            left = panelB[nPanels - 1];
-        }
-        if (Double.isNaN(right)) {
-            right = panelA[0];
-        }
-        return (left + right) / 2;
+        return (halfArea(half, tol, true) + halfArea(half, tol, false)) / 2;
     }
 
     /**
      * The place where the area accumulated from the left (fromLeft) or from the right reaches half: a
-     * panel end when a panel ends within tol of it, else solved inside the panel that reaches it; NaN when
-     * none does.
+     * panel end when a panel ends within tol of it, else solved inside the panel that reaches it. Called
+     * only with area &gt; 0 and half = area / 2, so some panel always reaches it: the panel areas are K15
+     * sums of degrees with positive weights (never negative), and the last panel brings cum to the whole
+     * area (from the left by the very additions that made {@code area}; from the right the same terms in
+     * reverse order, within n·ulp of it), which exceeds half.
      */
     private double halfArea(double half, double tol, boolean fromLeft) {
         double cum = 0;
@@ -321,7 +316,7 @@ final class SmoothSet {
             }
             cum += panelArea[p];
         }
-        return Double.NaN;
+        throw new AssertionError("no panel reaches half the area " + half + " of " + area);
     }
 
     /**
@@ -552,14 +547,13 @@ final class SmoothSet {
 
     /**
      * Bisection between {@code outside} (μ below the threshold) and {@code inside} (μ at or above it)
-     * for the boundary of the set where μ reaches the threshold.
+     * for the boundary of the set where μ reaches the threshold. Every caller passes as {@code outside} a
+     * sample whose degree sv[i] it has just found below the threshold (the same doubles: μ is a pure
+     * function here), so the bisection starts without evaluating μ there again.
      */
     private double boundary(double outside, double inside, double threshold) {
         double o = outside;
         double in = inside;
-        if (degree(o) >= threshold) {
-            return o;
-        }
         for (int i = 0; i < 200 && Math.abs(in - o) > Math.ulp(Math.abs(in)) * 2; i++) {
             double m = (o + in) / 2;
             if (m == o || m == in) {
