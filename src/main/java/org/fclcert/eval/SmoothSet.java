@@ -376,6 +376,13 @@ final class SmoothSet {
                 if (i > 0) {
                     sup = Math.max(sup, refine(i - 1));
                 }
+                // inside the run a maximum can hide between two equal samples (two equal spikes' centres, split points
+                // both): an interval whose midpoint rises above the run is refined too; a plateau's midpoints do not
+                for (int k = i; k < j; k++) {
+                    if (degree(0.5 * (su[k] + su[k + 1])) > sv[i]) {
+                        sup = Math.max(sup, refine(k));
+                    }
+                }
                 if (j + 1 < n) {
                     sup = Math.max(sup, refine(j));
                 }
