@@ -7,6 +7,7 @@ import org.fclcert.model.ActivationMethod;
 import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DataType;
 import org.fclcert.model.DefuzzificationMethod;
+import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 
 /**
@@ -100,6 +101,41 @@ final class BlockPlan {
         }
         maxStack = stack;
         maxBareTargets = bare;
+    }
+
+    /** The slot of a variable by its declared name or, case-insensitively, its key; UNKNOWN_NAME otherwise. */
+    int slot(String name) throws EvaluationException {
+        Integer slot = slotByName.get(name);
+        if (slot == null) {
+            slot = slotByName.get(Names.key(name));
+        }
+        if (slot == null) {
+            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
+                    "function block '" + this.name + "' has no variable '" + name + "'");
+        }
+        return slot;
+    }
+
+    /**
+     * The slot of the VAR_INPUT {@code name} about to be given {@code value}: refused when the variable is not an
+     * input (NOT_AN_INPUT) or the value not finite (NOT_FINITE). Both instances set inputs through it.
+     */
+    int inputSlot(String name, double value) throws EvaluationException {
+        int slot = slot(name);
+        if (!isInput[slot]) {
+            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
+                    "'" + variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
+        }
+        requireFinite(slot, value);
+        return slot;
+    }
+
+    /** NOT_FINITE unless the value for the input in {@code slot} is a finite number. */
+    void requireFinite(int slot, double value) throws EvaluationException {
+        if (!Double.isFinite(value)) {
+            throw new EvaluationException(EvaluationCode.NOT_FINITE,
+                    "input '" + variableNames[slot] + "' must be a finite number, not " + value);
+        }
     }
 
     /** The compiled kernel, generated when an instance first asks for it (KernelCompiler); see {@link #kernel}. */

@@ -13,7 +13,6 @@ import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DataType;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.Hedge;
-import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 
 /**
@@ -153,21 +152,12 @@ public final class ExactInstance {
 
     /** Sets an input (case-insensitive); integer-typed inputs take the value rounded half away from zero. */
     public void set(String name, double value) throws EvaluationException {
-        int slot = slot(name);
-        if (!plan.isInput[slot]) {
-            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
-                    "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
-        }
-        if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationCode.NOT_FINITE,
-                    "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
-        }
-        store(slot, reading.read(value));
+        store(plan.inputSlot(name, value), reading.read(value));
     }
 
     /** The current value of a variable, rounded to the nearest double. */
     public double get(String name) throws EvaluationException {
-        return toDouble(values[slot(name)]);
+        return toDouble(values[plan.slot(name)]);
     }
 
     /**
@@ -176,12 +166,12 @@ public final class ExactInstance {
      * computation decide.
      */
     boolean roundedNearHalf(String name) throws EvaluationException {
-        return nearHalf[slot(name)];
+        return nearHalf[plan.slot(name)];
     }
 
     /** Whether the output's last value was rounded to its integer type from exactly a half-integer. */
     boolean roundedFromExactHalf(String name) throws EvaluationException {
-        return exactHalf[slot(name)];
+        return exactHalf[plan.slot(name)];
     }
 
     private static final Rational HALF_BAND = Rational.of(java.math.BigInteger.ONE, java.math.BigInteger.TEN.pow(9));
@@ -196,7 +186,7 @@ public final class ExactInstance {
 
     /** The exact current value of a variable (null for NaN). */
     Rational exactValue(String name) throws EvaluationException {
-        return values[slot(name)];
+        return values[plan.slot(name)];
     }
 
     /** VAR_OUTPUT values in declaration order, each the double nearest to the exact value. */
@@ -269,18 +259,6 @@ public final class ExactInstance {
         for (int i = 0; i < plan.outputs.length; i++) {
             defuzzify(i);
         }
-    }
-
-    private int slot(String name) throws EvaluationException {
-        Integer slot = plan.slotByName.get(name);
-        if (slot == null) {
-            slot = plan.slotByName.get(Names.key(name));
-        }
-        if (slot == null) {
-            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
-                    "function block '" + plan.name + "' has no variable '" + name + "'");
-        }
-        return slot;
     }
 
     private Rational store(int slot, Rational value) throws EvaluationException {

@@ -13,7 +13,6 @@ import org.fclcert.model.AccumulationMethod;
 import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DataType;
 import org.fclcert.model.DefuzzificationMethod;
-import org.fclcert.model.Names;
 import org.fclcert.model.OrAlgorithm;
 
 /**
@@ -316,21 +315,12 @@ public final class FunctionBlockInstance {
      * from zero.
      */
     public void set(String name, double value) throws EvaluationException {
-        int slot = slot(name);
-        if (!plan.isInput[slot]) {
-            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
-                    "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
-        }
-        if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationCode.NOT_FINITE,
-                    "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
-        }
-        store(slot, value);
+        store(plan.inputSlot(name, value), value);
     }
 
     /** The index of a VAR_INPUT (case-insensitive name), for {@link #setInput(int, double)}. */
     public int inputIndex(String name) throws EvaluationException {
-        int slot = slot(name);
+        int slot = plan.slot(name);
         for (int i = 0; i < inputSlots.length; i++) {
             if (inputSlots[i] == slot) {
                 return i;
@@ -342,7 +332,7 @@ public final class FunctionBlockInstance {
 
     /** The index of a VAR_OUTPUT (case-insensitive name), for {@link #output(int)}. */
     public int outputIndex(String name) throws EvaluationException {
-        int slot = slot(name);
+        int slot = plan.slot(name);
         for (int i = 0; i < plan.outputSlots.length; i++) {
             if (plan.outputSlots[i] == slot) {
                 return i;
@@ -355,10 +345,7 @@ public final class FunctionBlockInstance {
     /** Sets the input of that index (declaration order), as {@link #set(String, double)} does. */
     public void setInput(int index, double value) throws EvaluationException {
         int slot = inputSlots[index];
-        if (!Double.isFinite(value)) {
-            throw new EvaluationException(EvaluationCode.NOT_FINITE,
-                    "input '" + plan.variableNames[slot] + "' must be a finite number, not " + value);
-        }
+        plan.requireFinite(slot, value);
         store(slot, value);
     }
 
@@ -391,7 +378,7 @@ public final class FunctionBlockInstance {
      * variable that bare conclusions wrote, the bound of that value.
      */
     public double bound(String output) throws EvaluationException {
-        int slot = slot(output);
+        int slot = plan.slot(output);
         settleBounds();
         for (int i = 0; i < plan.outputs.length; i++) {
             if (plan.outputs[i].slot() == slot) {
@@ -422,7 +409,7 @@ public final class FunctionBlockInstance {
 
     /** The current value of any variable (input, output or local), by case-insensitive name. */
     public double get(String name) throws EvaluationException {
-        return values[slot(name)];
+        return values[plan.slot(name)];
     }
 
     /** VAR_OUTPUT values in declaration order, names as declared. */
@@ -724,18 +711,6 @@ public final class FunctionBlockInstance {
             contributionError[c] = 0.0;
             contributionDegreeError[c] = 0.0;     // its weight, if constant, is the constant already
         }
-    }
-
-    private int slot(String name) throws EvaluationException {
-        Integer slot = plan.slotByName.get(name);
-        if (slot == null) {
-            slot = plan.slotByName.get(Names.key(name));
-        }
-        if (slot == null) {
-            throw new EvaluationException(EvaluationCode.UNKNOWN_NAME,
-                    "function block '" + plan.name + "' has no variable '" + name + "'");
-        }
-        return slot;
     }
 
     /** Writes a value, converting to the variable's integer type (8.: half away from zero). */
