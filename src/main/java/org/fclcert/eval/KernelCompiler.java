@@ -12,8 +12,10 @@ import org.fclcert.model.AccumulationMethod;
 import org.fclcert.model.AndAlgorithm;
 import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.OrAlgorithm;
+import org.objectweb.asm.ClassTooLargeException;
 import org.objectweb.asm.ClassWriter;
 import org.objectweb.asm.Label;
+import org.objectweb.asm.MethodTooLargeException;
 import org.objectweb.asm.MethodVisitor;
 
 /**
@@ -91,7 +93,8 @@ final class KernelCompiler {
         front.visitMaxs(0, 0);
         front.visitEnd();
         outputMethods(cw, plan, outputs);
-        return new Compiled((CompiledKernel) instance(cw, "the compiled kernel of block '" + plan.name + "'"), outputs);
+        Object kernel = instance(cw, "the compiled kernel of block '" + plan.name + "'");
+        return kernel == null ? null : new Compiled((CompiledKernel) kernel, outputs);
     }
 
     /** A generated final class implementing {@code iface} (internal name), with its no-argument constructor. */
@@ -108,11 +111,22 @@ final class KernelCompiler {
         return cw;
     }
 
-    /** Ends {@code cw}, defines it as a hidden class of this package and makes its one instance. */
+    /**
+     * Ends {@code cw}, defines it as a hidden class of this package and makes its one instance; null when a method or
+     * the class would exceed the class file's limits (64 KiB of code in one method: an input term of a thousand points
+     * is one method), so that the caller declines and the block stays with the interpreter, which computes the same
+     * doubles. It used to throw there, and an evaluation of such a block failed at its 65th step.
+     */
     static Object instance(ClassWriter cw, String what) {
         cw.visitEnd();
+        byte[] bytes;
         try {
-            MethodHandles.Lookup hidden = MethodHandles.lookup().defineHiddenClass(cw.toByteArray(), true);
+            bytes = cw.toByteArray();
+        } catch (MethodTooLargeException | ClassTooLargeException e) {
+            return null;
+        }
+        try {
+            MethodHandles.Lookup hidden = MethodHandles.lookup().defineHiddenClass(bytes, true);
             return hidden.findConstructor(hidden.lookupClass(), java.lang.invoke.MethodType.methodType(void.class))
                     .invoke();
         } catch (Throwable e) {

@@ -236,7 +236,7 @@ final class StaticFilter {
      * a constant: per term Pwl.degree's branches (below, above, the first point at or above u: at it the largest
      * degree of the points there, before it the interpolation ((x₁ − u)·y₀ + (u − x₀)·y₁)/(x₁ − x₀), a flat piece
      * its degree), per rule the fold by Math.min, Math.max or a product, per output the MAX per term and CoGS's sums
-     * in {@link #step}'s order. Null when the estimate exceeds {@link #BUDGET}.
+     * in {@link #step}'s order. Null when the estimate exceeds {@link #BUDGET} or the class file cannot hold the step.
      */
     private Step compile() {
         int cost = 0;

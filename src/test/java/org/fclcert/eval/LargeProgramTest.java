@@ -73,4 +73,42 @@ class LargeProgramTest {
         double p = Math.pow(0.9999, 20_000);
         assertEquals(10 * p / (p + 0.0001), fb.get("y"), 1e-9);
     }
+
+    /*
+     * An input term of 1 200 points (0 at even k, 1 at odd k): its degree code alone would exceed the class file's
+     * 64 KiB per method, so the compiled kernel declines and the block stays interpreted. It used to fail at the
+     * 65th evaluation ("the compiled kernel of block 'big' failed to load"). At x = k + 10.25 the degree is 0.25 for
+     * even k + 10, 0.75 for odd; flat is 0.5, so y = 100 s / (s + 0.5): 100/3 or 60.
+     */
+    @Test
+    void aTermTooLargeForTheKernelStaysInterpreted() throws EvaluationException {
+        StringBuilder saw = new StringBuilder();
+        for (int k = 0; k < 1200; k++) {
+            saw.append(k == 0 ? "" : " ").append("(").append(k).append(", ").append(k % 2).append(")");
+        }
+        String text = """
+                FUNCTION_BLOCK big
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x TERM saw := %s; TERM flat := (0, 0.5) (1199, 0.5); END_FUZZIFY
+                DEFUZZIFY y TERM lo := 0; TERM hi := 100; METHOD : CoGS; DEFAULT := -1; END_DEFUZZIFY
+                RULEBLOCK r ACCU : MAX; RULE 1 : IF x IS saw THEN y IS hi; RULE 2 : IF x IS flat THEN y IS lo;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """.formatted(saw);
+        LoadedProgram loaded = Evaluator.load(FclTextSemanticsTest.checked("big.fcl", text));
+        FunctionBlockInstance fb = loaded.newInstance();
+        for (int k = 0; k < 200; k++) {
+            fb.setInputs(k + 10.25);
+            fb.evaluate();
+            double s = k % 2 == 0 ? 0.25 : 0.75;
+            assertEquals(100 * s / (s + 0.5), fb.output(0), 1e-12, "step " + k);
+        }
+        assertEquals(0, fb.compiledEvaluations(), "no kernel");
+        // from its first evaluation as well (the corpus's mutation test takes the kernel that way)
+        FunctionBlockInstance compiled = loaded.newCompiledInstance("big");
+        compiled.setInputs(10.25);
+        compiled.evaluate();
+        assertEquals(100 / 3.0, compiled.output(0), 1e-12);
+    }
 }
