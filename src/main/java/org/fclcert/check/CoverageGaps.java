@@ -126,8 +126,9 @@ public final class CoverageGaps {
             programs.add(program.get());
         }
         List<Axis> axes = compiler.axes;
-        if (axes.size() > MAX_INPUTS) {
-            return Result.not("its conditions use " + axes.size() + " inputs (at most " + MAX_INPUTS + " are analysed)");
+        int inputs = axes.size() + compiler.beyond.size();
+        if (inputs > MAX_INPUTS) {
+            return Result.not("its conditions use " + inputs + " inputs (at most " + MAX_INPUTS + " are analysed)");
         }
         long cells = 1;
         for (Axis axis : axes) {
@@ -392,6 +393,15 @@ public final class CoverageGaps {
         /** Leaves made so far, by the subcondition's spelling: a large block names the same few thousand times. */
         private final java.util.Map<List<Object>, Integer> made = new java.util.HashMap<>();
         String why = "";
+        /**
+         * The inputs the conditions use beyond the first {@link #MAX_INPUTS} (by key): counted, not given an axis, since
+         * the block will not be analysed. Their leaves are {@link #beyondLeaf}, which no program is evaluated with.
+         */
+        final java.util.Set<String> beyond = new java.util.HashSet<>();
+        private int beyondLeaf = -1;
+        /** The block's variables and fuzzifications by key, built on first use (the block's own lookups walk lists). */
+        private java.util.Map<String, Variable> variables;
+        private java.util.Map<String, Fuzzification> fuzzifications;
 
         Compiler(FunctionBlock block) {
             this.block = block;
@@ -474,7 +484,7 @@ public final class CoverageGaps {
         private int newLeaf(Condition c) {
             String variable = c instanceof Condition.TermSubcondition t ? t.variable()
                     : ((Condition.VariableSubcondition) c).variable();
-            Optional<Variable> declared = block.variable(variable);
+            Optional<Variable> declared = variable(variable);
             if (declared.isEmpty() || declared.get().kind() != VariableKind.INPUT) {
                 why = "'" + variable + "' in a condition is not an input";
                 return -1;
@@ -488,7 +498,7 @@ public final class CoverageGaps {
                 if (t.any()) {
                     term = new Piecewise(new double[] {0}, new double[] {1});
                 } else {
-                    Optional<Term> found = block.fuzzification(variable).flatMap(f -> f.term(t.term()));
+                    Optional<Term> found = fuzzification(variable).flatMap(f -> f.term(t.term()));
                     if (found.isEmpty()) {
                         why = "term '" + t.term() + "' of '" + variable + "' is not defined";
                         return -1;
@@ -503,6 +513,16 @@ public final class CoverageGaps {
                 }
             } else {
                 term = new Piecewise(new double[] {0, 1}, new double[] {0, 1});  // the value clamped to [0, 1]
+            }
+            if (axes.size() >= MAX_INPUTS && axes.stream().noneMatch(x -> Names.same(x.variable, variable))) {
+                // a seventh input: the block is not analysed, so only count it (an axis per input of a block of
+                // 100 000 inputs made this check run for hours)
+                beyond.add(Names.key(variable));
+                if (beyondLeaf < 0) {
+                    leaves.add(new Leaf(-1, new int[0]));
+                    beyondLeaf = leaves.size() - 1;
+                }
+                return beyondLeaf;
             }
             Axis axis = axis(declared.get().name());
             int a = axes.indexOf(axis);
@@ -526,6 +546,26 @@ public final class CoverageGaps {
             return leaves.size() - 1;
         }
 
+        private Optional<Variable> variable(String name) {
+            if (variables == null) {
+                variables = new java.util.HashMap<>();
+                for (Variable v : block.variables()) {
+                    variables.putIfAbsent(Names.key(v.name()), v);
+                }
+            }
+            return Optional.ofNullable(variables.get(Names.key(name)));
+        }
+
+        private Optional<Fuzzification> fuzzification(String variable) {
+            if (fuzzifications == null) {
+                fuzzifications = new java.util.HashMap<>();
+                for (Fuzzification f : block.fuzzifications()) {
+                    fuzzifications.putIfAbsent(Names.key(f.variable()), f);
+                }
+            }
+            return Optional.ofNullable(fuzzifications.get(Names.key(variable)));
+        }
+
         /** The axis of an input: every breakpoint of its terms (and 0 and 1, where it is used as a degree). */
         private Axis axis(String variable) {
             for (Axis axis : axes) {
@@ -534,7 +574,7 @@ public final class CoverageGaps {
                 }
             }
             TreeSet<Double> breaks = new TreeSet<>(List.of(0.0, 1.0));
-            Optional<Fuzzification> f = block.fuzzification(variable);
+            Optional<Fuzzification> f = fuzzification(variable);
             if (f.isPresent()) {
                 breaks.clear();
                 boolean bare = false;

@@ -128,6 +128,34 @@ class CoverageGapsTest {
     }
 
     /**
+     * Inputs beyond the limit are counted, not given an axis: 5 000 rules on 5 000 inputs, and a rule whose
+     * undefined term is named after them still decides the reason (an undefined term before the count, as before).
+     */
+    @Test
+    void manyInputsAreCountedAndALaterUndefinedTermStillDecides() {
+        StringBuilder inputs = new StringBuilder();
+        StringBuilder fuzzify = new StringBuilder();
+        StringBuilder rules = new StringBuilder();
+        for (int i = 0; i < 5000; i++) {
+            inputs.append("    x").append(i).append(" : REAL;\n");
+            fuzzify.append("FUZZIFY x").append(i).append(" TERM on := (0, 0) (1, 1); END_FUZZIFY\n");
+            rules.append("    RULE ").append(i + 1).append(" : IF x").append(i).append(" IS on THEN y IS a;\n");
+        }
+        String text = program(inputs.toString(), fuzzify.toString(), "MIN", rules.toString());
+        FunctionBlock fb = Programs.analyze("many.fcl", text).program().orElseThrow().functionBlocks().get(0);
+        assertEquals("its conditions use 5000 inputs (at most 6 are analysed)",
+                CoverageGaps.of(fb, fb.ruleBlocks().get(0)).notAnalysed().orElseThrow());
+
+        // the same block with one more rule naming a term x4999 does not have: the compiler stops at that leaf
+        String undefined = program(inputs.toString(), fuzzify.toString(), "MIN",
+                rules + "    RULE 5001 : IF x4999 IS off THEN y IS a;\n");
+        FunctionBlock raw = new org.fclcert.syntax.StrictReader().read("undefined.fcl", undefined).program().orElseThrow()
+                .functionBlocks().get(0);
+        assertEquals("term 'off' of 'x4999' is not defined",
+                CoverageGaps.of(raw, raw.ruleBlocks().get(0)).notAnalysed().orElseThrow());
+    }
+
+    /**
      * The container crane of Annex C (rule 2's pos_big corrected to pos_high), its gaps derived by hand.
      *
      * <p>Where each term used by a rule is above 0 (FCL terms keep their outer degrees beyond the first and last
