@@ -3,7 +3,7 @@
 
 It realises the Basic Level of IEC 61131-7 (Table 8) and one extension, a constant WITH (so that
 the example of clause 5.3 runs): VAR_INPUT/VAR_OUTPUT of type REAL, LREAL or an integer type
-(integer outputs rounded half away from zero), input terms of at most three constant points,
+(integer inputs and outputs rounded half away from zero), input terms of at most three constant points,
 singleton output terms, AND with MIN, ACCU with MAX, METHOD CoGS, DEFAULT with a value or NC, one
 rule block, rules 'IF v IS t AND ... THEN v IS t [WITH w];'. Anything else is rejected with the
 line where it starts.
@@ -354,7 +354,7 @@ def evaluate(fb, state):
 
 
 def crisp(output, value):
-    """An integer output gets the value rounded half away from zero, and it must fit its type."""
+    """An integer variable (input or output) gets the value rounded half away from zero, and it must fit its type."""
     if output["type"] not in INTEGERS:
         return value
     rounded = math.floor(abs(value) + 0.5) * (1 if value >= 0 else -1)
@@ -389,7 +389,8 @@ class Session:
         for name, value in req["inputs"].items():
             if name.lower() not in state["in"]:
                 raise ValueError("%s is not an input of %s" % (name, fb["name"]))
-            state["in"][name.lower()] = float(value)
+            # an integer input takes the value rounded half away from zero, and it must fit its type (8.)
+            state["in"][name.lower()] = crisp(fb["inputs"][name.lower()], float(value))
         evaluate(fb, state)
         return {"outputs": {fb["outputs"][k]["name"]: v for k, v in state["out"].items()}}
 

@@ -282,7 +282,7 @@ public final class FunctionBlockInstance {
                 int c = sc.contribution();
                 ok &= c >= 0 && sc.weightSlot() < 0
                         && (plan.contributionHedges.length == 0 || plan.contributionHedges[c] == null)
-                        && (plan.chainedDegree.length == 0 || plan.chainedDegree[c] < 0);
+                        && plan.chainedDegree[c] < 0;     // BlockCompiler gives every contribution an entry
             }
             first[r] = ok ? code.args[0] : -1;
             from[r] = k;
@@ -897,7 +897,7 @@ public final class FunctionBlockInstance {
                     contributionWeight[sc.contribution()] = w;
                     contributionError[sc.contribution()] = ewd;
                     contributionDegreeError[sc.contribution()] = e;
-                    int chained = plan.chainedDegree.length == 0 ? -1 : plan.chainedDegree[sc.contribution()];
+                    int chained = plan.chainedDegree[sc.contribution()];     // -1: not chained
                     if (chained >= 0) {
                         AccumulationMethod accu = plan.chainedAccumulation[sc.contribution()];
                         double acc = Norms.accumulate(accu, termDegrees[chained], wd);

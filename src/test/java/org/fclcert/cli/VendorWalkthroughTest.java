@@ -29,8 +29,13 @@ class VendorWalkthroughTest {
         assertEquals(0, run.exitCode(), run.err());
         Report r = JsonReport.read(dir.resolve("all/report.json"));
         assertEquals(List.of(), VerdictInvariants.violations(r));
+        // the Basic Level cases as certify counts them (Rejudge: a case with an interpretation flag is not one)
+        long basic = org.fclcert.corpus.Corpus.load(Path.of("conformance")).cases().stream()
+                .filter(c -> c.level() == org.fclcert.model.ConformanceLevel.BASIC && c.interpretation().isEmpty())
+                .count();
         // examples/iut/basic_iut.py rejects RANGE with "'RANGE' is not supported at the Basic Level": that is the cause
-        assertTrue(run.out().contains("Basic Level: conformant (all 93 Basic Level cases passed)"), run.out());
+        assertTrue(run.out().contains("Basic Level: conformant (all " + basic + " Basic Level cases passed)"),
+                run.out());
         assertTrue(run.out().contains(" cases: rejected at load: 'RANGE' is not supported at the Basic Level\n"),
                 run.out());
         assertTrue(r.causes().stream().filter(c -> c.kind().equals("rejected at load"))
@@ -52,11 +57,11 @@ class VendorWalkthroughTest {
 
         Cli rerun = Cli.run("certify", "--iut", IUT, "--case", "E-WITH-CONST-001", "--out", dir.resolve("one").toString());
         assertEquals(0, rerun.exitCode(), rerun.err());
-        assertTrue(rerun.out().contains("Basic Level: not determined (0 of 93 run)"), rerun.out());
+        assertTrue(rerun.out().contains("Basic Level: not determined (0 of " + basic + " run)"), rerun.out());
         assertTrue(rerun.out().contains("Claimed, not determined: E-WITH-CONST (1 of 4 run)"), rerun.out());
         assertFalse(rerun.out().contains("not realised"), rerun.out());
         Report one = JsonReport.read(dir.resolve("one/report.json"));
         assertEquals(List.of(), VerdictInvariants.violations(one));
-        assertTrue(Cli.read(dir.resolve("one/report.md")).contains("**Basic Level: not determined** (0 of 93 run)."));
+        assertTrue(Cli.read(dir.resolve("one/report.md")).contains("**Basic Level: not determined** (0 of " + basic + " run)."));
     }
 }
