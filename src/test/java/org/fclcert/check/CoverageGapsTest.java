@@ -15,6 +15,7 @@ import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.eval.Trace;
+import org.fclcert.model.DataType;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.FunctionBlock;
 import org.fclcert.model.MembershipFunction;
@@ -323,6 +324,9 @@ class CoverageGapsTest {
             for (int a = 0; a < at.length; a++) {
                 at[a] = inside(box.intervals().get(a));
             }
+            if (!holds(fb, inputs, at)) {
+                continue;       // an integer input: the gap's chosen point is no value of its type
+            }
             assertEquals(0.0, maxDegree(instance, fb, rb, inputs, at), file + ": a rule fires inside the gap "
                     + RulesCoverTheInputSpace.region(inputs, box));
         }
@@ -338,6 +342,11 @@ class CoverageGapsTest {
                 double hi = b[b.length - 1] + 3;
                 int pick = random.nextInt(3);
                 at[a] = pick == 0 ? b[random.nextInt(b.length)] : lo + (hi - lo) * random.nextDouble();
+                DataType type = fb.variable(inputs.get(a)).orElseThrow().type();
+                if (type.isInteger()) {
+                    // the values an integer input can hold (it stores others rounded, or refuses them: FCL-V004)
+                    at[a] = Math.max(type.min(), Math.min(type.max(), Math.rint(at[a])));
+                }
             }
             boolean inGap = result.gaps().stream().anyMatch(box -> contains(box, at));
             double degree = maxDegree(instance, fb, rb, inputs, at);
@@ -348,6 +357,17 @@ class CoverageGapsTest {
                         + java.util.Arrays.toString(at) + ", outside every reported gap");
             }
         }
+    }
+
+    /** Whether every value is one its input's data type holds as it is (integer types: whole and in range). */
+    private static boolean holds(FunctionBlock fb, List<String> inputs, double[] at) {
+        for (int a = 0; a < at.length; a++) {
+            DataType type = fb.variable(inputs.get(a)).orElseThrow().type();
+            if (type.isInteger() && !(at[a] == Math.rint(at[a]) && at[a] >= type.min() && at[a] <= type.max())) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static double inside(CoverageGaps.Interval in) {
