@@ -9,6 +9,15 @@ public final class Names {
     private Names() {
     }
 
+    /**
+     * At most {@code max} of the names, joined by ", ", then how many more ("a, b and 3 more"): a message that names a
+     * block's inputs stays one readable line for a block of 100 000 of them.
+     */
+    public static String listed(java.util.List<String> names, int max) {
+        return names.size() <= max ? String.join(", ", names)
+                : String.join(", ", names.subList(0, max)) + " and " + (names.size() - max) + " more";
+    }
+
     /** The key under which a name is looked up: upper case, locale-independent. */
     public static String key(String name) {
         return name.toUpperCase(Locale.ROOT);

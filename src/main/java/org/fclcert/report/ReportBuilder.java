@@ -129,8 +129,7 @@ public final class ReportBuilder {
 
     /** At most ten ids, then how many more: a reason stays one readable line. */
     private static String list(List<String> ids) {
-        return ids.size() <= 10 ? String.join(", ", ids)
-                : String.join(", ", ids.subList(0, 10)) + " and " + (ids.size() - 10) + " more";
+        return org.fclcert.model.Names.listed(ids, 10);
     }
 
     /** The positive cases' semantic results; a positive case without one (a run cut short) counts as skipped. */

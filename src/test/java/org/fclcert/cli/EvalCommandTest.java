@@ -132,6 +132,31 @@ class EvalCommandTest {
         assertTrue(unknown.err().contains("FCL-V001") && unknown.err().contains("third"), unknown.err());
     }
 
+    /** A block of 25 inputs: the message names the first 20 and says how many more (100 000 made one huge line). */
+    @Test
+    void anUnknownNameListsAtMostTwentyInputs() {
+        StringBuilder text = new StringBuilder("FUNCTION_BLOCK wide\nVAR_INPUT\n");
+        for (int i = 0; i < 25; i++) {
+            text.append("    in").append(i).append(" : REAL;\n");
+        }
+        text.append("END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n");
+        for (int i = 0; i < 25; i++) {
+            text.append("FUZZIFY in").append(i).append(" TERM t := (0, 0) (1, 1); END_FUZZIFY\n");
+        }
+        text.append("DEFUZZIFY y TERM one := 1; METHOD : CoGS; DEFAULT := 0; END_DEFUZZIFY\nRULEBLOCK r ACCU : MAX;\n");
+        for (int i = 0; i < 25; i++) {
+            text.append("    RULE ").append(i + 1).append(" : IF in").append(i).append(" IS t THEN y IS one;\n");
+        }
+        text.append("END_RULEBLOCK\nEND_FUNCTION_BLOCK\n");
+        Path fcl = Cli.write(dir, "wide.fcl", text.toString());
+        Cli unknown = Cli.run("eval", fcl.toString(), "--in", "zz=1");
+        assertEquals(1, unknown.exitCode());
+        assertEquals(List.of("fclcert: FCL-V001: --in zz=1: function block 'wide' has no variable 'zz'; its inputs: "
+                + "in0, in1, in2, in3, in4, in5, in6, in7, in8, in9, in10, in11, in12, in13, in14, in15, in16, in17,"
+                + " in18, in19 and 5 more"), unknown.errLines().subList(unknown.errLines().size() - 1,
+                unknown.errLines().size()));
+    }
+
     @Test
     void inputErrorsAreClearMessagesWithExitCode1() {
         String valve = valve();
