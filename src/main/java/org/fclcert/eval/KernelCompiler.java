@@ -123,7 +123,9 @@ final class KernelCompiler {
     // ------------------------------------------------------------------------------------------ what is covered
 
     private static boolean covered(BlockPlan plan) {
-        if (plan.chainedTerms != 0 || plan.valueTermShape != null) {
+        // output-value conditions (jFuzzyLogic) are chained terms too: valueTermShape has one entry per chained
+        // term (BlockCompiler.chainedDegrees), so a block without chained terms has nothing for valueConditions to do
+        if (plan.chainedTerms != 0) {
             return false;
         }
         for (org.fclcert.model.Hedge[] h : plan.contributionHedges) {
@@ -147,11 +149,7 @@ final class KernelCompiler {
                         return false;
                     }
                 }
-                for (SubconclusionPlan sc : rb.conclusions()[r]) {
-                    if (sc.contribution() < 0) {
-                        return false;
-                    }
-                }
+                // a subconclusion without a contribution is a bare conclusion: declined above with its target
             }
         }
         return true;
@@ -159,7 +157,7 @@ final class KernelCompiler {
 
     /** Constant points, piece-wise linear or a singleton, every segment of finite width. */
     private static boolean coveredShape(Shape s) {
-        if (!s.constant || s.kind != null || s.computed != null || s.n == 0 || s.sortedX.length != s.n) {
+        if (!s.constant || s.kind != null || s.computed != null || s.n == 0) {
             return false;
         }
         for (int i = 0; i < s.n; i++) {
