@@ -137,7 +137,9 @@ final class KernelCompiler {
     // ------------------------------------------------------------------------------------------ what is covered
 
     private static boolean covered(BlockPlan plan) {
-        if (plan.chainedTerms != 0 || plan.valueTermShape != null) {
+        // output-value conditions (jFuzzyLogic) are chained terms too: valueTermShape has one entry per chained
+        // term (BlockCompiler.chainedDegrees), so a block without chained terms has nothing for valueConditions to do
+        if (plan.chainedTerms != 0) {
             return false;
         }
         for (org.fclcert.model.Hedge[] h : plan.contributionHedges) {
@@ -156,16 +158,12 @@ final class KernelCompiler {
             }
             for (int r = 0; r < rb.conditions().length; r++) {
                 for (int op : rb.conditions()[r].ops) {
-                    // the dialects' hedges and 'any' are emitted below but no agreement test reaches them yet
+                    // the dialects' hedges and 'any' (aggregate refuses them: no agreement test reaches them yet)
                     if (op < ConditionCode.TERM || op > ConditionCode.OR) {
                         return false;
                     }
                 }
-                for (SubconclusionPlan sc : rb.conclusions()[r]) {
-                    if (sc.contribution() < 0) {
-                        return false;
-                    }
-                }
+                // a subconclusion without a contribution is a bare conclusion: declined above with its target
             }
         }
         return true;
@@ -173,7 +171,7 @@ final class KernelCompiler {
 
     /** Constant points, piece-wise linear or a singleton, every segment of finite width. */
     private static boolean coveredShape(Shape s) {
-        if (!s.constant || s.kind != null || s.computed != null || s.n == 0 || s.sortedX.length != s.n) {
+        if (!s.constant || s.kind != null || s.computed != null || s.n == 0) {
             return false;
         }
         for (int i = 0; i < s.n; i++) {
@@ -780,12 +778,6 @@ final class KernelCompiler {
                 case ConditionCode.TERM, ConditionCode.TERM_NOT -> operand(mv, code.ops[i], arg, STACK + 4 * sp,
                         STACK + 4 * sp + 2);
                 case ConditionCode.VARIABLE -> variable(mv, arg, STACK + 4 * sp, STACK + 4 * sp + 2);
-                case ConditionCode.ONE -> {
-                    mv.visitInsn(DCONST_1);
-                    mv.visitVarInsn(DSTORE, STACK + 4 * sp);
-                    mv.visitInsn(DCONST_0);
-                    mv.visitVarInsn(DSTORE, STACK + 4 * sp + 2);
-                }
                 case ConditionCode.NOT -> {
                     int d = STACK + 4 * (sp - 1);
                     mv.visitVarInsn(DLOAD, d);
@@ -797,22 +789,10 @@ final class KernelCompiler {
                     mv.visitInsn(DSUB);
                     mv.visitVarInsn(DSTORE, d);
                 }
-                case ConditionCode.HEDGE -> {
-                    int d = STACK + 4 * (sp - 1);
-                    String hedge = org.fclcert.model.Hedge.values()[arg].name();
-                    mv.visitFieldInsn(GETSTATIC, "org/fclcert/model/Hedge", hedge, "Lorg/fclcert/model/Hedge;");
-                    mv.visitVarInsn(DLOAD, d);
-                    mv.visitMethodInsn(INVOKEVIRTUAL, "org/fclcert/model/Hedge", "apply", "(D)D", false);
-                    mv.visitVarInsn(DSTORE, R);
-                    mv.visitFieldInsn(GETSTATIC, "org/fclcert/model/Hedge", hedge, "Lorg/fclcert/model/Hedge;");
-                    mv.visitVarInsn(DLOAD, d);
-                    mv.visitVarInsn(DLOAD, d + 2);
-                    mv.visitVarInsn(DLOAD, R);
-                    mv.visitMethodInsn(INVOKESTATIC, NORMS, "hedgeError", "(Lorg/fclcert/model/Hedge;DDD)D", false);
-                    mv.visitVarInsn(DSTORE, d + 2);
-                    mv.visitVarInsn(DLOAD, R);
-                    mv.visitVarInsn(DSTORE, d);
-                }
+                // the dialects' hedges and 'any': covered() declines them, so no kernel meets them (emitters for
+                // them would be code no program runs; write them with an agreement test when the kernel takes them)
+                case ConditionCode.HEDGE, ConditionCode.ONE -> throw new IllegalStateException(
+                        "the kernel does not cover hedges and 'any'");
                 default -> {
                     // AND / OR of the top arg entries (fold: no early stop)
                     int base = sp - arg;
