@@ -15,10 +15,14 @@ import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FairVectors;
 import org.fclcert.eval.LoadedProgram;
 import org.fclcert.model.ConformanceLevel;
+import org.fclcert.model.Defuzzification;
+import org.fclcert.model.DefuzzificationMethod;
 import org.fclcert.model.Diagnostic;
 import org.fclcert.model.Feature;
 import org.fclcert.model.FeatureUse;
 import org.fclcert.model.FunctionBlock;
+import org.fclcert.model.Located;
+import org.fclcert.model.MembershipFunction;
 import org.fclcert.model.Program;
 
 /**
@@ -131,6 +135,7 @@ public final class CorpusLint {
             }
             Program program = analysis.program().get();
             features(program);
+            integratedOutputsAreContinuous(program);
             List<String> wrong = VectorReplay.check(c, program);
             if (!wrong.isEmpty()) {
                 int line = vectorsLine();
@@ -219,6 +224,29 @@ public final class CorpusLint {
             }
             if (report.level() != c.level()) {
                 finding(1, "level is " + c.level().word() + " but the program's features make it " + report.level().word());
+            }
+        }
+
+        /**
+         * An output defuzzified by CoG, CoA, LM or RM over point terms is judged {@code continuous}
+         * (conformance/README.md, "Tolerance"): an implementation that integrates or samples correctly misses the
+         * exact value by more than {@code exact} allows, and a case judged exactly would fail it for that alone.
+         */
+        private void integratedOutputsAreContinuous(Program program) {
+            if (c.tolerance() != Tolerance.EXACT) {
+                return;
+            }
+            FunctionBlock block = blockOf(c, program);
+            OutputScales scales = OutputScales.of(block);
+            for (Defuzzification d : block.defuzzifications()) {
+                DefuzzificationMethod m = d.method().map(Located::value).orElse(null);
+                boolean integrated = m == DefuzzificationMethod.COG || m == DefuzzificationMethod.COA
+                        || m == DefuzzificationMethod.LM || m == DefuzzificationMethod.RM;
+                boolean points = d.terms().stream().anyMatch(t -> t.function() instanceof MembershipFunction.Points);
+                if (integrated && points && scales.width(d.variable()).isPresent()) {
+                    finding(1, "output '" + d.variable() + "' is defuzzified by " + m.keyword() + " over point terms: "
+                            + "its tolerance must be continuous, not exact (conformance/README.md, Tolerance)");
+                }
             }
         }
 

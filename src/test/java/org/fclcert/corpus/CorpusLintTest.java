@@ -131,6 +131,17 @@ class CorpusLintTest {
                 f.toString());
     }
 
+    /** conformance/README.md, Tolerance: a CoG over point terms judged exactly would fail every correct integrator. */
+    @Test
+    void anOutputDefuzzifiedByCoGOverPointTermsMustBeJudgedContinuous() throws IOException {
+        String cog = java.nio.file.Files.readString(java.nio.file.Path.of("conformance/extension/E-COG-073.fcl"));
+        write("extension/E-COG-073.fcl", cog);
+        assertEquals(List.of(), findings());
+        write("extension/E-COG-073.fcl", cog.replace("tolerance: continuous", "tolerance: exact"));
+        assertOneFinding("E-COG-073.fcl:1: output 'y' is defuzzified by CoG over point terms: its tolerance must be "
+                + "continuous, not exact");
+    }
+
     @Test
     void testsMustBeAmongTheFeatures() throws IOException {
         write("basic/B-COGS-001.fcl", GOOD.replace("tests: [B-COGS]", "tests: [B-COGS, E-LM]"));
