@@ -548,22 +548,25 @@ public final class CoverageGaps {
 
         private Optional<Variable> variable(String name) {
             if (variables == null) {
-                variables = new java.util.HashMap<>();
-                for (Variable v : block.variables()) {
-                    variables.putIfAbsent(Names.key(v.name()), v);
-                }
+                variables = byKey(block.variables(), Variable::name);
             }
             return Optional.ofNullable(variables.get(Names.key(name)));
         }
 
         private Optional<Fuzzification> fuzzification(String variable) {
             if (fuzzifications == null) {
-                fuzzifications = new java.util.HashMap<>();
-                for (Fuzzification f : block.fuzzifications()) {
-                    fuzzifications.putIfAbsent(Names.key(f.variable()), f);
-                }
+                fuzzifications = byKey(block.fuzzifications(), Fuzzification::variable);
             }
             return Optional.ofNullable(fuzzifications.get(Names.key(variable)));
+        }
+
+        /** The items by their name's key, the first of each name kept (as the block's own lookups find it). */
+        private static <T> java.util.Map<String, T> byKey(List<T> items, java.util.function.Function<T, String> name) {
+            java.util.Map<String, T> map = new java.util.HashMap<>();
+            for (T item : items) {
+                map.putIfAbsent(Names.key(name.apply(item)), item);
+            }
+            return map;
         }
 
         /** The axis of an input: every breakpoint of its terms (and 0 and 1, where it is used as a degree). */
