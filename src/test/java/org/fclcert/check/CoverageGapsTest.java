@@ -325,7 +325,7 @@ class CoverageGapsTest {
                 at[a] = inside(box.intervals().get(a));
             }
             if (!holds(fb, inputs, at)) {
-                continue;       // an integer input: the gap's chosen point is no value of its type
+                continue;       // the gap's chosen point is no value of the input's type
             }
             assertEquals(0.0, maxDegree(instance, fb, rb, inputs, at), file + ": a rule fires inside the gap "
                     + RulesCoverTheInputSpace.region(inputs, box));
@@ -341,12 +341,14 @@ class CoverageGapsTest {
                 double lo = b[0] - 3;
                 double hi = b[b.length - 1] + 3;
                 int pick = random.nextInt(3);
-                at[a] = pick == 0 ? b[random.nextInt(b.length)] : lo + (hi - lo) * random.nextDouble();
+                double r = random.nextDouble();
+                // lo·(1 − r) + hi·r: hi − lo overflows for terms that span most of the doubles (O-DEGREES-0-1-071)
+                at[a] = pick == 0 ? b[random.nextInt(b.length)] : lo * (1 - r) + hi * r;
+                // a value the input's type holds (an integer type stores others rounded; outside its range, or
+                // REAL's, it refuses them: FCL-V004)
                 DataType type = fb.variable(inputs.get(a)).orElseThrow().type();
-                if (type.isInteger()) {
-                    // the values an integer input can hold (it stores others rounded, or refuses them: FCL-V004)
-                    at[a] = Math.max(type.min(), Math.min(type.max(), Math.rint(at[a])));
-                }
+                double v = type.isInteger() ? Math.rint(at[a]) : at[a];
+                at[a] = Math.max(type.min(), Math.min(type.max(), v));
             }
             boolean inGap = result.gaps().stream().anyMatch(box -> contains(box, at));
             double degree = maxDegree(instance, fb, rb, inputs, at);
@@ -359,11 +361,11 @@ class CoverageGapsTest {
         }
     }
 
-    /** Whether every value is one its input's data type holds as it is (integer types: whole and in range). */
+    /** Whether every value is one its input's data type holds as it is (in its range; integer types: whole). */
     private static boolean holds(FunctionBlock fb, List<String> inputs, double[] at) {
         for (int a = 0; a < at.length; a++) {
             DataType type = fb.variable(inputs.get(a)).orElseThrow().type();
-            if (type.isInteger() && !(at[a] == Math.rint(at[a]) && at[a] >= type.min() && at[a] <= type.max())) {
+            if (!(at[a] >= type.min() && at[a] <= type.max()) || type.isInteger() && at[a] != Math.rint(at[a])) {
                 return false;
             }
         }
