@@ -329,7 +329,7 @@ public final class FisWriter implements DialectWriter {
                 return trapmf(p.get(0), p.get(0), p.get(1), p.get(1));
             }
             if (n.kind() == ShapeKind.RAMP) {
-                return p.get(0) <= p.get(1) ? trapmf(p.get(0), p.get(1), FAR / 2, FAR) : trapmf(-FAR, -FAR / 2, p.get(1), p.get(0));
+                return p.get(0) <= p.get(1) ? rising(p.get(0), p.get(1)) : falling(p.get(1), p.get(0));
             }
             Optional<Map.Entry<String, int[]>> fis = FisReader.fisShape(ShapeNames.fuzzylite(n.kind(), n.parameters()).name())
                     .filter(e -> OCTAVE_SHAPES.contains(e.getKey()));
@@ -357,6 +357,19 @@ public final class FisWriter implements DialectWriter {
                 written[order[k]] = p.get(k);
             }
             return "'" + fis.get().getKey() + "'," + list(written);
+        }
+
+        /**
+         * A shoulder rising over [x0, x1] and 1 up to FAR. Its plateau starts at FAR / 2 or at x1, whichever is later:
+         * a ramp whose top lies beyond FAR / 2 would otherwise give a trapezoid with c &lt; b, which no reader accepts.
+         */
+        private static String rising(double x0, double x1) {
+            return trapmf(x0, x1, Math.max(x1, FAR / 2), FAR);
+        }
+
+        /** A shoulder 1 from -FAR, falling over [x0, x1] (the mirror of {@link #rising}). */
+        private static String falling(double x0, double x1) {
+            return trapmf(-FAR, Math.min(x0, -FAR / 2), x0, x1);
         }
 
         /** Points as trimf or trapmf when they are a triangle, a trapezoid or a shoulder of degrees 0 and 1. */
@@ -391,8 +404,8 @@ public final class FisWriter implements DialectWriter {
             return switch (degrees.toString()) {
                 case "010" -> x[0] < x[2] ? "'trimf'," + list(x) : trapmf(x[0], x[1], x[1], x[2]);
                 case "0110" -> trapmf(x[0], x[1], x[2], x[3]);
-                case "10" -> trapmf(-FAR, -FAR / 2, x[0], x[1]);
-                case "01" -> trapmf(x[0], x[1], FAR / 2, FAR);
+                case "10" -> falling(x[0], x[1]);
+                case "01" -> rising(x[0], x[1]);
                 case "1" -> trapmf(-FAR, -FAR / 2, FAR / 2, FAR);
                 default -> {
                     cx.findings.lost(t.location(), WriterCode.SHAPE, FIS + " has no function of the points of term '"
