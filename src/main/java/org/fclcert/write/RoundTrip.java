@@ -161,7 +161,12 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
             Optional<Fuzzification> f = fb.fuzzification(inputs.get(k).name());
             double[] s = f.map(cx::inputSpan).orElse(new double[] {0, 1});
             double w = s[1] - s[0] > 0 ? s[1] - s[0] : 1;
-            spans[k] = new double[] {s[0] - w / 10, s[1] + w / 10};
+            double[] span = Double.isFinite(w) ? new double[] {s[0] - w / 10, s[1] + w / 10}
+                    // terms spanning most of the doubles (O-DEGREES-0-1-071): the width overflows, and the grid with it
+                    : new double[] {s[0] - (s[1] / 2 - s[0] / 2) / 5, s[1] + (s[1] / 2 - s[0] / 2) / 5};
+            // only values the input can hold (REAL's range, an integer type's): others are refused, not compared
+            org.fclcert.model.DataType type = inputs.get(k).type();
+            spans[k] = new double[] {Math.max(type.min(), span[0]), Math.min(type.max(), span[1])};
         }
         List<Map<String, Double>> steps = new ArrayList<>();
         int k = inputs.size();
@@ -175,7 +180,7 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
             for (int i = 0; i < 2000; i++) {
                 Map<String, Double> step = new LinkedHashMap<>();
                 for (int j = 0; j < k; j++) {
-                    step.put(inputs.get(j).name(), spans[j][0] + random.nextDouble() * (spans[j][1] - spans[j][0]));
+                    step.put(inputs.get(j).name(), at(spans[j], random.nextDouble(), 1));
                 }
                 steps.add(step);
             }
@@ -185,7 +190,7 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
         while (true) {
             Map<String, Double> step = new LinkedHashMap<>();
             for (int j = 0; j < k; j++) {
-                step.put(inputs.get(j).name(), spans[j][0] + (spans[j][1] - spans[j][0]) * index[j] / (n - 1));
+                step.put(inputs.get(j).name(), at(spans[j], index[j], n - 1));
             }
             steps.add(step);
             int j = 0;
@@ -196,5 +201,18 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
                 return steps;
             }
         }
+    }
+
+    /**
+     * The point num/den into the span: lo + (hi − lo)·num/den in that order (the grid's doubles as they always were),
+     * or, where hi − lo overflows, lo·(1 − t) + hi·t.
+     */
+    private static double at(double[] span, double num, int den) {
+        double w = span[1] - span[0];
+        if (Double.isFinite(w)) {
+            return span[0] + w * num / den;
+        }
+        double t = num / den;
+        return span[0] * (1 - t) + span[1] * t;
     }
 }
