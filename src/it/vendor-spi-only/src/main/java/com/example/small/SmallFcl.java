@@ -550,7 +550,8 @@ public final class SmallFcl implements FclImplementation {
             if (!in.containsKey(key)) {
                 throw new IllegalArgumentException(name + " is not an input of " + fb.name);
             }
-            in.put(key, value);
+            // an integer input takes the value rounded half away from zero, and it must fit its type (8.)
+            in.put(key, crisp(fb.inputs.get(key), value));
         }
 
         /** MIN over subconditions; MAX per output term; CoGS; DEFAULT (or NC) when no rule fired. */
@@ -580,7 +581,7 @@ public final class SmallFcl implements FclImplementation {
             });
         }
 
-        /** An integer output gets the value rounded half away from zero, and it must fit its type. */
+        /** An integer variable (input or output) gets the value rounded half away from zero, and it must fit its type. */
         private static double crisp(Variable v, double value) {
             double[] bounds = INTEGERS.get(v.type());
             if (bounds == null) {
