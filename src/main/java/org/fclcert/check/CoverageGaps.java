@@ -514,7 +514,8 @@ public final class CoverageGaps {
             } else {
                 term = new Piecewise(new double[] {0, 1}, new double[] {0, 1});  // the value clamped to [0, 1]
             }
-            if (axes.size() >= MAX_INPUTS && axes.stream().noneMatch(x -> Names.same(x.variable, variable))) {
+            Axis axis = existingAxis(variable);
+            if (axis == null && axes.size() >= MAX_INPUTS) {
                 // a seventh input: the block is not analysed, so only count it (an axis per input of a block of
                 // 100 000 inputs made this check run for hours)
                 beyond.add(Names.key(variable));
@@ -524,7 +525,9 @@ public final class CoverageGaps {
                 }
                 return beyondLeaf;
             }
-            Axis axis = axis(declared.get().name());
+            if (axis == null) {
+                axis = newAxis(declared.get().name());
+            }
             int a = axes.indexOf(axis);
             int[] masks = new int[axis.cellCount()];
             double[] b = axis.breaks;
@@ -569,13 +572,21 @@ public final class CoverageGaps {
             return map;
         }
 
-        /** The axis of an input: every breakpoint of its terms (and 0 and 1, where it is used as a degree). */
-        private Axis axis(String variable) {
+        /** The axis already made for an input, or null. */
+        private Axis existingAxis(String variable) {
             for (Axis axis : axes) {
                 if (Names.same(axis.variable, variable)) {
                     return axis;
                 }
             }
+            return null;
+        }
+
+        /**
+         * A new axis for an input that has none yet, inserted in declaration order: every breakpoint of its terms (and
+         * 0 and 1, where it is used as a degree).
+         */
+        private Axis newAxis(String variable) {
             TreeSet<Double> breaks = new TreeSet<>(List.of(0.0, 1.0));
             Optional<Fuzzification> f = fuzzification(variable);
             if (f.isPresent()) {
