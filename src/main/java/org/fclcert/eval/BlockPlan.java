@@ -123,11 +123,16 @@ final class BlockPlan {
     int inputSlot(String name, double value) throws EvaluationException {
         int slot = slot(name);
         if (!isInput[slot]) {
-            throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
-                    "'" + variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
+            throw notAnInput(slot);
         }
         requireFinite(slot, value);
         return slot;
+    }
+
+    /** NOT_AN_INPUT for the variable in {@code slot}. */
+    EvaluationException notAnInput(int slot) {
+        return new EvaluationException(EvaluationCode.NOT_AN_INPUT,
+                "'" + variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
     }
 
     /** NOT_FINITE unless the value for the input in {@code slot} is a finite number. */

@@ -326,8 +326,7 @@ public final class FunctionBlockInstance {
                 return i;
             }
         }
-        throw new EvaluationException(EvaluationCode.NOT_AN_INPUT,
-                "'" + plan.variableNames[slot] + "' is not a VAR_INPUT and cannot be set");
+        throw plan.notAnInput(slot);
     }
 
     /** The index of a VAR_OUTPUT (case-insensitive name), for {@link #output(int)}. */
