@@ -27,8 +27,9 @@ import org.junit.jupiter.params.provider.MethodSource;
  *
  * <p>Each positive case is judged a second time on instances that take the compiled kernel ({@code KernelCompiler})
  * from their first evaluation ({@code LoadedProgram.newCompiledInstance}): certify's reference takes it only at an
- * instance's 65th evaluation, which no case's few vectors reach, so without this judgement no kernel mutant could
- * fail a case. A block the kernel does not cover stays interpreted there (the judgement then repeats the first).
+ * instance's 65th evaluation, which only the two 65-step cases (B-DEFAULT-VALUE-141, E-COG-141) reach, so without this
+ * judgement almost no kernel mutant could fail a case. A block the kernel does not cover stays interpreted there (the
+ * judgement then repeats the first).
  *
  * <p>The export check is not run ({@link #EXPORT_NOT_JUDGED}): its verdict is not part of the status asserted here,
  * and it evaluates the exported text on the exact path, so it made every case cover {@code ExactInstance} and each
