@@ -135,10 +135,8 @@ final class Rational implements Comparable<Rational> {
         return of(num.multiply(o.num), den.multiply(o.den));
     }
 
+    /** This divided by o; o = 0 throws {@link ArithmeticException} ({@link #of(BigInteger, BigInteger)} refuses den 0). */
     Rational divide(Rational o) {
-        if (o.num.signum() == 0) {
-            throw new ArithmeticException("division by zero");
-        }
         return of(num.multiply(o.den), den.multiply(o.num));
     }
 
@@ -197,10 +195,7 @@ final class Rational implements Comparable<Rational> {
 
     /** The nearest double (ties to even), correctly rounded. */
     double toDouble() {
-        if (num.signum() == 0) {
-            return 0.0;
-        }
-        if (den.equals(BigInteger.ONE) && num.bitLength() < 53) {
+        if (den.equals(BigInteger.ONE) && num.bitLength() < 53) {   // integers, zero among them (its den is 1)
             return num.longValue();
         }
         BigInteger p = num.abs();
@@ -248,25 +243,12 @@ final class Rational implements Comparable<Rational> {
         if (num.signum() < 0) {
             throw new ArithmeticException("square root of a negative number");
         }
-        if (num.signum() == 0) {
-            return ZERO;
-        }
-        BigInteger rp = num.sqrt();
+        BigInteger rp = num.sqrt();   // 0 for zero, whose den is 1: of(0, 1) below
         BigInteger rq = den.sqrt();
         if (rp.multiply(rp).equals(num) && rq.multiply(rq).equals(den)) {
             return of(rp, rq);
         }
         return of(toBigDecimal(new MathContext(70)).sqrt(SQRT_CONTEXT));
-    }
-
-    /** Whether {@link #sqrt} of this value is exact. */
-    boolean hasExactSqrt() {
-        if (num.signum() <= 0) {
-            return num.signum() == 0;
-        }
-        BigInteger rp = num.sqrt();
-        BigInteger rq = den.sqrt();
-        return rp.multiply(rp).equals(num) && rq.multiply(rq).equals(den);
     }
 
     @Override

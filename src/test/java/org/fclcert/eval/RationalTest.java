@@ -2,6 +2,7 @@ package org.fclcert.eval;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.math.BigDecimal;
@@ -47,6 +48,12 @@ class RationalTest {
         assertEquals(-62.5, q(-125, 2).toDouble());
         assertEquals(Double.MIN_VALUE, Rational.exactly(Double.MIN_VALUE).toDouble());
         assertEquals(Double.MAX_VALUE, Rational.exactly(Double.MAX_VALUE).toDouble());
+        // decimals near both ends of the double range, a negative fraction, zero (the integer shortcut)
+        assertEquals(1.0e308, Rational.decimal(1.0e308).toDouble());
+        assertEquals(1.0e-300, Rational.decimal(1.0e-300).toDouble());
+        assertEquals(-26.6, q(-133, 5).toDouble());
+        assertEquals(0.0, Rational.ZERO.toDouble());
+        assertThrows(ArithmeticException.class, () -> q(1, 3).divide(Rational.ZERO));
         // p/q for random longs: the double division of two exactly representable integers is correctly rounded
         Random rnd = new Random(12);
         for (int i = 0; i < 10_000; i++) {
@@ -69,8 +76,10 @@ class RationalTest {
     @Test
     void squareRootsAreExactWhenRationalAndSixtyDigitsOtherwise() {
         assertEquals(q(3, 5), q(9, 25).sqrt());
-        assertTrue(q(9, 25).hasExactSqrt());
-        assertFalse(Rational.TWO.hasExactSqrt());
+        assertEquals(q(1, 3), q(1, 9).sqrt());   // exact although 1/9 has no finite decimal expansion
+        assertEquals(Rational.ZERO, Rational.ZERO.sqrt());
+        Rational sqrt2 = Rational.TWO.sqrt();
+        assertFalse(sqrt2.multiply(sqrt2).equals(Rational.TWO));   // sqrt 2 is irrational: 60 digits, not exact
         BigDecimal root2 = Rational.TWO.sqrt().toBigDecimal(new java.math.MathContext(70));
         assertEquals(0, root2.subtract(new BigDecimal("1.41421356237309504880168872420969807856967187537694807317667973799"))
                 .abs().compareTo(new BigDecimal("1e-58")) < 0 ? 0 : 1);
