@@ -399,12 +399,12 @@ public final class CoverageGaps {
          */
         final java.util.Set<String> beyond = new java.util.HashSet<>();
         private int beyondLeaf = -1;
-        /** The block's variables and fuzzifications by key, built on first use (the block's own lookups walk lists). */
-        private java.util.Map<String, Variable> variables;
-        private java.util.Map<String, Fuzzification> fuzzifications;
+        /** The block's name lookups (the block's own walk lists); the checks of the same run built it already. */
+        private final Scope scope;
 
         Compiler(FunctionBlock block) {
             this.block = block;
+            this.scope = Scope.of(block);
         }
 
         /** Post-order without recursion (conditions may be nested very deep). */
@@ -484,7 +484,7 @@ public final class CoverageGaps {
         private int newLeaf(Condition c) {
             String variable = c instanceof Condition.TermSubcondition t ? t.variable()
                     : ((Condition.VariableSubcondition) c).variable();
-            Optional<Variable> declared = variable(variable);
+            Optional<Variable> declared = scope.variable(variable);
             if (declared.isEmpty() || declared.get().kind() != VariableKind.INPUT) {
                 why = "'" + variable + "' in a condition is not an input";
                 return -1;
@@ -498,7 +498,7 @@ public final class CoverageGaps {
                 if (t.any()) {
                     term = new Piecewise(new double[] {0}, new double[] {1});
                 } else {
-                    Optional<Term> found = fuzzification(variable).flatMap(f -> f.term(t.term()));
+                    Optional<Term> found = scope.fuzzification(variable).flatMap(f -> f.term(t.term()));
                     if (found.isEmpty()) {
                         why = "term '" + t.term() + "' of '" + variable + "' is not defined";
                         return -1;
@@ -549,29 +549,6 @@ public final class CoverageGaps {
             return leaves.size() - 1;
         }
 
-        private Optional<Variable> variable(String name) {
-            if (variables == null) {
-                variables = byKey(block.variables(), Variable::name);
-            }
-            return Optional.ofNullable(variables.get(Names.key(name)));
-        }
-
-        private Optional<Fuzzification> fuzzification(String variable) {
-            if (fuzzifications == null) {
-                fuzzifications = byKey(block.fuzzifications(), Fuzzification::variable);
-            }
-            return Optional.ofNullable(fuzzifications.get(Names.key(variable)));
-        }
-
-        /** The items by their name's key, the first of each name kept (as the block's own lookups find it). */
-        private static <T> java.util.Map<String, T> byKey(List<T> items, java.util.function.Function<T, String> name) {
-            java.util.Map<String, T> map = new java.util.HashMap<>();
-            for (T item : items) {
-                map.putIfAbsent(Names.key(name.apply(item)), item);
-            }
-            return map;
-        }
-
         /** The axis already made for an input, or null. */
         private Axis existingAxis(String variable) {
             for (Axis axis : axes) {
@@ -588,7 +565,7 @@ public final class CoverageGaps {
          */
         private Axis newAxis(String variable) {
             TreeSet<Double> breaks = new TreeSet<>(List.of(0.0, 1.0));
-            Optional<Fuzzification> f = fuzzification(variable);
+            Optional<Fuzzification> f = scope.fuzzification(variable);
             if (f.isPresent()) {
                 breaks.clear();
                 boolean bare = false;
@@ -628,7 +605,6 @@ public final class CoverageGaps {
             if (bare == null) {
                 // one walk for all axes (each used to walk every rule of the block): the bare variables' names
                 bare = new java.util.HashMap<>();
-                Scope scope = Scope.of(block);
                 for (RuleBlock rb : block.ruleBlocks()) {
                     for (Rule r : rb.rules()) {
                         for (Condition c : scope.subconditions(r)) {
