@@ -251,7 +251,7 @@ final class EvalCommand implements Callable<Integer> {
                 List<String> names = fb.inputNames();
                 String hint = Names.closest(name, names).map(n -> "did you mean '" + n + "'? ").orElse("");
                 throw new EvaluationException(e.diagnosticCode(), where + ": " + e.getMessage() + "; " + hint
-                        + (names.size() == 1 ? "its input: " : "its inputs: ") + Names.listed(names, 20));
+                        + (names.size() == 1 ? "its input: " : "its inputs: ") + Names.listed(names));
             }
         }
 

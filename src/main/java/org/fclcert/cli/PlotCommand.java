@@ -103,7 +103,7 @@ final class PlotCommand implements Callable<Integer> {
                     String hint = org.fclcert.model.Names.closest(name, plotter.inputNames())
                             .map(n -> "did you mean '" + n + "'? ").orElse("");
                     err.println("fclcert: --in " + name + ": not an input of the function block; " + hint
-                            + "its inputs: " + org.fclcert.model.Names.listed(plotter.inputNames(), 20));
+                            + "its inputs: " + org.fclcert.model.Names.listed(plotter.inputNames()));
                     return ExitCodes.ERRORS;
                 }
             }

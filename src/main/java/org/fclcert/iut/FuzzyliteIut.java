@@ -132,7 +132,7 @@ final class FuzzyliteIut implements ImplementationUnderTest {
             int k = indexOf(engine.inputs(), input.getKey());
             if (k < 0) {
                 throw new IutException(Kind.EVAL_ERROR, "'" + input.getKey() + "' is not an input of the engine "
-                        + "fuzzylite built (its inputs: " + org.fclcert.model.Names.listed(engine.inputs(), 20) + ")");
+                        + "fuzzylite built (its inputs: " + org.fclcert.model.Names.listed(engine.inputs()) + ")");
             }
             row[k] = input.getValue();
         }

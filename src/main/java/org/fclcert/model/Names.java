@@ -9,6 +9,14 @@ public final class Names {
     private Names() {
     }
 
+    /** How many names a message about a block's inputs lists ({@link #listed(java.util.List)}). */
+    public static final int LISTED = 20;
+
+    /** {@link #listed(java.util.List, int)} with {@link #LISTED}: the inputs a message names. */
+    public static String listed(java.util.List<String> names) {
+        return listed(names, LISTED);
+    }
+
     /**
      * At most {@code max} of the names, joined by ", ", then how many more ("a, b and 3 more"): a message that names a
      * block's inputs stays one readable line for a block of 100 000 of them.
