@@ -33,7 +33,8 @@ import org.xml.sax.SAXException;
  * are in {@code conformance/EQUIVALENT-MUTANTS.md}. A row names its mutant by class, method, mutator, PIT's
  * description and the text of the mutated source line (not its number, which moves with every edit above it): a
  * survivor whose line was edited since it was argued has no row any more, and counts as not argued until someone
- * checks the argument again. A row of category {@code U} is a survivor known not to be argued (a missing case).
+ * checks the argument again. A row of category {@code U} is a survivor known not to be argued (a missing case),
+ * one of category {@code K} a mutant a case was written to kill (surviving again, it counts as not argued).
  *
  * <p>Score = detected / (reached − argued equivalent), detected as PIT counts it (killed, timed out, memory
  * error, run error). The run fails when the score is below {@link #REQUIRED_PERCENT}; survivors without a row are
@@ -73,8 +74,12 @@ public final class MutationScore {
     /** A row of the argued list: which mutant, and its category (E… argued equivalent, U not argued). */
     record Argued(String mutatedClass, String method, String mutator, String description, String source,
             String category) {
+        /**
+         * An argued category: E… (the table of EQUIVALENT-MUTANTS.md), or the exact path's own F… and X… tables there.
+         * U (not argued) and K (once killed by a case: a survivor matching it is a regression) count against the score.
+         */
         boolean equivalent() {
-            return !category.startsWith("U");
+            return category.matches("[EFX]\\d+[a-z]?");
         }
 
         String key() {

@@ -94,7 +94,7 @@ class MutationScoreTest {
                 mutation("SURVIVED", "Thing", "f", 4, "ConditionalsBoundaryMutator", "changed conditional boundary"),
                 mutation("SURVIVED", "Thing", "f", 4, "ConditionalsBoundaryMutator", "changed conditional boundary"),
                 mutation("KILLED", "Thing", "f", 7, "MathMutator", "Replaced integer subtraction with addition"));
-        Path tsv = argued("Thing\tf\tConditionalsBoundaryMutator\tchanged conditional boundary\tif (a > 0) {\tE25");
+        Path tsv = argued("Thing\tf\tConditionalsBoundaryMutator\tchanged conditional boundary\tif (a > 0) {\tE1b");
         MutationScore.Score s = MutationScore.score(MutationScore.readMutations(xml), MutationScore.readArgued(tsv),
                 sources());
         assertEquals("{mutants=3, reached=3, detected=1, equivalent=1, notArgued=1, withoutRow=1, stale=0}",
@@ -119,6 +119,20 @@ class MutationScoreTest {
         bytes.reset();
         assertEquals(0, MutationScore.run(xml, tsv, sources(), new PrintStream(bytes, true, StandardCharsets.UTF_8)));
         assertTrue(bytes.toString(StandardCharsets.UTF_8).contains("1 of 1 reached non-equivalent mutants killed"));
+    }
+
+    @Test
+    void aKilledRowThatSurvivesAgainIsNotArgued() throws IOException {
+        Path xml = report(
+                mutation("SURVIVED", "Thing", "f", 7, "MathMutator", "Replaced integer subtraction with addition"),
+                mutation("SURVIVED", "Thing", "f", 4, "ConditionalsBoundaryMutator", "changed conditional boundary"));
+        Path tsv = argued("Thing\tf\tMathMutator\tReplaced integer subtraction with addition\treturn a - 1;\tK",
+                "Thing\tf\tConditionalsBoundaryMutator\tchanged conditional boundary\tif (a > 0) {\tX4");
+        MutationScore.Score s = MutationScore.score(MutationScore.readMutations(xml), MutationScore.readArgued(tsv),
+                sources());
+        assertEquals("{mutants=2, reached=2, detected=0, equivalent=1, notArgued=1, withoutRow=0, stale=0}",
+                MutationScore.summary(s));
+        assertEquals("{K=1, X4=1}", s.byCategory().toString());
     }
 
     @Test
