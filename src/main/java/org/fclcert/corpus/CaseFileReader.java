@@ -14,6 +14,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.fclcert.eval.EvaluationCode;
 import org.fclcert.model.ConformanceLevel;
 import org.fclcert.model.Feature;
 import org.fclcert.syntax.dialect.Dialect;
@@ -309,8 +310,13 @@ final class CaseFileReader {
         for (JsonNode step : n) {
             index++;
             String where = "vector " + index;
+            if (step.isObject() && step.size() == 2 && step.has("in") && step.has("error")) {
+                refused(step, where).ifPresent(code -> result.add(Vector.refused(numbers(step.get("in"),
+                        where + " 'in'"), code)));
+                continue;
+            }
             if (!step.isObject() || step.size() != 2 || !step.has("in") || !step.has("out")) {
-                problem(lineOf("vectors"), where + " must have exactly the fields 'in' and 'out'");
+                problem(lineOf("vectors"), where + " must have exactly the fields 'in' and 'out' (or 'in' and 'error')");
                 continue;
             }
             Map<String, Double> in = numbers(step.get("in"), where + " 'in'");
@@ -321,6 +327,20 @@ final class CaseFileReader {
             result.add(new Vector(in, out));
         }
         return result;
+    }
+
+    /** The code of a step that must be refused: an evaluation error a program and its inputs can cause. */
+    private Optional<String> refused(JsonNode step, String where) {
+        String code = step.get("error").asText("");
+        Optional<EvaluationCode> known = EvaluationCode.of(code);
+        if (known.isEmpty() || !known.get().causedByTheProgram()) {
+            String allowed = java.util.Arrays.stream(EvaluationCode.values()).filter(EvaluationCode::causedByTheProgram)
+                    .map(EvaluationCode::code).collect(java.util.stream.Collectors.joining(", "));
+            problem(lineOf("vectors"), where + ": 'error' must name an evaluation error a program can cause ("
+                    + allowed + "), not '" + code + "'");
+            return Optional.empty();
+        }
+        return Optional.of(code);
     }
 
     private Map<String, Double> numbers(JsonNode n, String where) {

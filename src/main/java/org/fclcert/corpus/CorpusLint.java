@@ -136,12 +136,29 @@ public final class CorpusLint {
             Program program = analysis.program().get();
             features(program);
             integratedOutputsAreContinuous(program);
+            refusedSteps();
             List<String> wrong = VectorReplay.check(c, program);
             if (!wrong.isEmpty()) {
                 int line = vectorsLine();
                 wrong.forEach(m -> finding(line, m));
             }
             fairness(program);
+        }
+
+        /**
+         * Steps that must be refused (docs/corpus-format.md): not in a stateful case, whose next step would start from
+         * a state the standard does not define after a failed evaluation; and not every step, so that the case's
+         * fresh vectors have outputs to compare.
+         */
+        private void refusedSteps() {
+            long refused = c.vectors().stream().filter(Vector::refused).count();
+            if (refused > 0 && c.stateful()) {
+                finding(vectorsLine(), "a stateful case cannot expect a step to be refused: the state after a refused"
+                        + " evaluation is not defined");
+            }
+            if (refused > 0 && refused == c.vectors().size()) {
+                finding(vectorsLine(), "every step expects an evaluation error: a case needs a step with outputs too");
+            }
         }
 
         /**

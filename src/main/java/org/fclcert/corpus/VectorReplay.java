@@ -14,7 +14,8 @@ import org.fclcert.model.Program;
 /**
  * Runs a positive case's vectors on the reference evaluator's exact judging path (for a dialect construct it has no
  * exact form of, the reference itself: {@link #instance()}): in order on one instance (every expected output
- * must be reproduced within the case's tolerance), then, for a case not flagged {@code stateful}, in reverse
+ * must be reproduced within the case's tolerance, and a step that must be refused must end in its evaluation error,
+ * the same code), then, for a case not flagged {@code stateful}, in reverse
  * order on a fresh instance, as the harness does, so that a case whose steps depend on each other is caught
  * here rather than blamed on an implementation.
  */
@@ -93,11 +94,9 @@ final class VectorReplay {
         Instance fb = instance();
         boolean ok = true;
         for (int i = 0; i < c.vectors().size(); i++) {
-            for (Comparison cmp : step(fb, i)) {
-                if (!cmp.passed()) {
-                    ok = false;
-                    messages.add("vector " + (i + 1) + ": " + describe(cmp));
-                }
+            for (String problem : step(fb, i)) {
+                ok = false;
+                messages.add("vector " + (i + 1) + ": " + problem);
             }
         }
         return ok;
@@ -106,17 +105,17 @@ final class VectorReplay {
     private void reversed() throws EvaluationException {
         Instance fb = instance();
         for (int i = c.vectors().size() - 1; i >= 0; i--) {
-            for (Comparison cmp : step(fb, i)) {
-                if (!cmp.passed()) {
-                    messages.add("vector " + (i + 1) + " depends on the steps before it: run in reverse order on a fresh "
-                            + "instance, " + describe(cmp) + "; flag the case 'stateful' or set every input in every step");
-                    return;
-                }
+            List<String> problems = step(fb, i);
+            if (!problems.isEmpty()) {
+                messages.add("vector " + (i + 1) + " depends on the steps before it: run in reverse order on a fresh "
+                        + "instance, " + problems.get(0) + "; flag the case 'stateful' or set every input in every step");
+                return;
             }
         }
     }
 
-    private List<Comparison> step(Instance fb, int index) throws EvaluationException {
+    /** How step {@code index} disagrees with the case (empty: reproduced; a step that must be refused, refused so). */
+    private List<String> step(Instance fb, int index) throws EvaluationException {
         Vector v = c.vectors().get(index);
         for (Map.Entry<String, Double> in : v.in().entrySet()) {
             try {
@@ -128,9 +127,24 @@ final class VectorReplay {
         try {
             fb.evaluate();
         } catch (EvaluationException e) {
+            if (v.refused()) {
+                return v.error().get().equals(e.code()) ? List.of()
+                        : List.of("expected the evaluation to be refused with " + v.error().get()
+                                + ", the reference evaluator refuses it with " + e);
+            }
             throw new EvaluationException(e.diagnosticCode(), "vector " + (index + 1) + ": " + e.getMessage());
         }
-        return c.tolerance().compareAll(v.out(), fb.outputs().get(), scales);
+        if (v.refused()) {
+            return List.of("expected the evaluation to be refused with " + v.error().get() + ", the reference evaluator"
+                    + " gives " + fb.outputs().get());
+        }
+        List<String> problems = new ArrayList<>();
+        for (Comparison cmp : c.tolerance().compareAll(v.out(), fb.outputs().get(), scales)) {
+            if (!cmp.passed()) {
+                problems.add(describe(cmp));
+            }
+        }
+        return problems;
     }
 
     private static String describe(Comparison cmp) {

@@ -38,4 +38,22 @@ public enum EvaluationCode implements DiagnosticCode {
     public Entry entry() {
         return entry;
     }
+
+    /**
+     * Whether a checked program and finite inputs alone cause this error (a value out of its type, an overflow, an
+     * unbounded set), so that a corpus step may expect it; the others are misuse of the evaluator's interface.
+     */
+    public boolean causedByTheProgram() {
+        return this == OUT_OF_RANGE || this == NO_RESULT || this == UNBOUNDED;
+    }
+
+    /** The code written {@code FCL-Vnnn} (letter case as written), if it is one of these. */
+    public static java.util.Optional<EvaluationCode> of(String code) {
+        for (EvaluationCode c : values()) {
+            if (c.entry.code().equals(code)) {
+                return java.util.Optional.of(c);
+            }
+        }
+        return java.util.Optional.empty();
+    }
 }

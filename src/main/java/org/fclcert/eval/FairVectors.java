@@ -197,7 +197,7 @@ public final class FairVectors {
         return error == null ? null : error.length() >= 8 ? error.substring(0, 8) : error;
     }
 
-    /** One perturbed run: outputs per step, or the error that stopped it (then no later steps). */
+    /** One perturbed run: per step its outputs, or the evaluation error it ended in. */
     private static final class Run {
         final String name;
         final List<Map<String, Double>> outputs = new ArrayList<>();
@@ -269,7 +269,7 @@ public final class FairVectors {
                 run.outputs.add(Map.of());
                 run.errors.add(e.toString());
                 run.halfway.add(null);
-                break;
+                // the next steps still run: a step a case expects refused is followed by ordinary ones
             }
         }
         return run;
@@ -314,7 +314,7 @@ public final class FairVectors {
                 run.outputs.add(Map.of());
                 run.errors.add(e.toString());
                 run.halfway.add(null);
-                break;
+                // the next steps still run: a step a case expects refused is followed by ordinary ones
             }
         }
         return run;

@@ -9,6 +9,7 @@ import java.util.function.Predicate;
 import org.fclcert.corpus.ExpectedError;
 import org.fclcert.corpus.OutputComparison;
 import org.fclcert.corpus.Vector;
+import org.fclcert.eval.EvaluationCode;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
 import org.fclcert.iut.IutHealth;
@@ -221,22 +222,40 @@ final class CaseRunner {
             throws StepBreakdown {
         List<Map<String, Double>> actuals = new ArrayList<>();
         int wrong = 0;
+        int refused = 0;
         for (int i = 0; i < c.vectors().size(); i++) {
             Vector v = c.vectors().get(i);
-            Map<String, Double> got = evaluate(iut, c, v, i + 1, r);
-            actuals.add(got);
+            Optional<String> problem;
+            String answer = null;   // a refused step's answer in words, for the report
+            if (v.refused()) {
+                Attempt a = attempt(iut, c, v, i + 1, r);
+                actuals.add(a.outputs());
+                problem = refusalProblem(v, a);
+                answer = a.refusal() == null ? "gave outputs " + a.outputs() : "refused: " + a.refusal();
+                refused++;
+            } else {
+                Map<String, Double> got = evaluate(iut, c, v, i + 1, r);
+                actuals.add(got);
+                problem = StepComparison.compare(c, v.out(), got,
+                        Flags.knifeEdges(c.flags()).contains(i + 1) ? new ResultBuilder(c) : r);
+            }
             if (Flags.knifeEdges(c.flags()).contains(i + 1)) {
                 // a knife-edge vector (FairVectors) is not judged: its value rests on a tie rounding may break;
                 // its error is neither counted nor part of maxError
-                Optional<String> problem = StepComparison.compare(c, v.out(), got, new ResultBuilder(c));
                 r.note("step " + (i + 1) + " not judged (knife edge, flag knife-edge:" + (i + 1) + "): "
                         + problem.map(p -> "differs: " + p).orElse("within tolerance"));
+                if (v.refused()) {
+                    refused--;
+                }
                 continue;
             }
-            Optional<String> problem = StepComparison.compare(c, v.out(), got, r);
             if (problem.isPresent() && wrong++ == 0) {
-                r.failed("step " + (i + 1) + " of " + c.vectors().size() + ": " + problem.get())
-                        .at(i + 1, v.in()).outputs(v.out(), got);
+                r.failed("step " + (i + 1) + " of " + c.vectors().size() + ": " + problem.get()).at(i + 1, v.in());
+                if (answer != null) {
+                    r.sentences("the evaluation refused with " + v.error().get(), answer);
+                } else {
+                    r.outputs(v.out(), actuals.get(i));
+                }
             }
         }
         if (wrong > 1) {
@@ -244,10 +263,51 @@ final class CaseRunner {
         }
         if (r.status() == CaseStatus.PASSED) {
             int notJudged = Flags.knifeEdges(c.flags()).size();
-            r.passed((c.vectors().size() - notJudged) + " step(s) within tolerance"
+            r.passed((c.vectors().size() - notJudged - refused) + " step(s) within tolerance"
+                    + (refused > 0 ? ", " + refused + " refused as required" : "")
                     + (notJudged > 0 ? ", " + notJudged + " not judged (knife edge)" : ""));
         }
         return actuals;
+    }
+
+    /** A step's answer: the outputs, or the implementation's refusal (an evaluation error, as its message). */
+    private record Attempt(Map<String, Double> outputs, String refusal) {
+    }
+
+    /** Evaluates a step that may be refused; any answer but outputs or a clean evaluation error is a breakdown. */
+    private static Attempt attempt(ImplementationUnderTest iut, RunCase c, Vector v, int step, ResultBuilder r)
+            throws StepBreakdown {
+        try {
+            Map<String, Double> got = iut.eval(c.block().orElse(null), v.in());
+            return new Attempt(got == null ? Map.of() : new LinkedHashMap<>(got), null);
+        } catch (IutException e) {
+            if (e.kind() == IutException.Kind.EVAL_ERROR) {
+                return new Attempt(Map.of(), e.getMessage());
+            }
+            r.at(step, v.in());
+            breakdown(r, e, "step " + step + " of " + c.vectors().size());
+            throw new AssertionError("unreachable");
+        }
+    }
+
+    private static final java.util.regex.Pattern EVALUATION_CODE = java.util.regex.Pattern.compile("FCL-V[0-9]{3}");
+
+    /**
+     * What is wrong with the answer to a step that must be refused: outputs instead of an evaluation error, or an
+     * error that names another {@code FCL-Vnnn} code (an implementation that names no code refuses as well as any).
+     */
+    static Optional<String> refusalProblem(Vector v, Attempt a) {
+        String want = v.error().orElseThrow();
+        String meaning = EvaluationCode.of(want).map(code -> " (" + code.entry().meaning() + ")").orElse("");
+        if (a.refusal() == null) {
+            return Optional.of("gives " + a.outputs() + " where the evaluation must be refused with " + want + meaning);
+        }
+        java.util.regex.Matcher m = EVALUATION_CODE.matcher(a.refusal());
+        if (m.lookingAt() && !m.group().equals(want)) {
+            return Optional.of("refuses the evaluation with " + m.group() + " where " + want + " is expected" + meaning
+                    + ": " + a.refusal());
+        }
+        return Optional.empty();
     }
 
     private static void checkNoStateLeak(ImplementationUnderTest iut, RunCase c, List<Map<String, Double>> forward,
@@ -260,6 +320,17 @@ final class CaseRunner {
         }
         for (int i = c.vectors().size() - 1; i >= 0; i--) {
             Vector v = c.vectors().get(i);
+            if (v.refused()) {
+                Attempt again = attempt(iut, c, v, i + 1, r);
+                if (again.refusal() == null && !Flags.knifeEdges(c.flags()).contains(i + 1)) {
+                    r.failed("state leaks between evaluations: after reset() and with the steps in reverse order, step "
+                            + (i + 1) + " gives " + again.outputs() + " where it was refused before")
+                            .at(i + 1, v.in()).sentences("the evaluation refused with " + v.error().get(),
+                                    "gave outputs " + again.outputs());
+                    return;
+                }
+                continue;
+            }
             Map<String, Double> again = evaluate(iut, c, v, i + 1, r);
             Optional<String> leak = StepComparison.difference(v.out().keySet(), forward.get(i), again);
             if (leak.isEmpty()) {

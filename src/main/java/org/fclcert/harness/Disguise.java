@@ -453,8 +453,13 @@ public final class Disguise {
                     a.set(in.getKey(), in.getValue());
                     b.set(map.sent(in.getKey()), in.getValue());
                 }
-                a.evaluate();
-                b.evaluate();
+                String refusedA = refusal(a);
+                if (!java.util.Objects.equals(refusedA, refusal(b))) {
+                    return false;
+                }
+                if (refusedA != null) {
+                    continue;   // a step that must be refused, refused with the same code both ways
+                }
                 for (String out : v.out().keySet()) {
                     if (Double.compare(a.get(out), b.get(map.sent(out))) != 0) {
                         return false;
@@ -464,6 +469,16 @@ public final class Disguise {
             return true;
         } catch (EvaluationException | RuntimeException e) {
             return false;
+        }
+    }
+
+    /** Evaluates; the code of the evaluation error it ends in, or null when it gives outputs. */
+    private static String refusal(ExactInstance fb) {
+        try {
+            fb.evaluate();
+            return null;
+        } catch (EvaluationException e) {
+            return e.code();
         }
     }
 }

@@ -78,9 +78,13 @@ public final class FreshVectors {
         if (fb.isEmpty()) {
             return List.of();
         }
+        Optional<Vector> model = c.vectors().stream().filter(v -> !v.refused()).findFirst();
+        if (model.isEmpty()) {
+            return List.of();
+        }
         LoadedProgram loaded = Evaluator.load(program.get());
-        List<String> inputs = List.copyOf(c.vectors().get(0).in().keySet());
-        List<String> outputs = List.copyOf(c.vectors().get(0).out().keySet());
+        List<String> inputs = List.copyOf(model.get().in().keySet());
+        List<String> outputs = List.copyOf(model.get().out().keySet());
         Map<String, double[]> spans = new LinkedHashMap<>();
         for (String in : inputs) {
             spans.put(in, span(c, fb.get(), in));
@@ -90,7 +94,7 @@ public final class FreshVectors {
             Map<String, Double> in = new LinkedHashMap<>();
             spans.forEach((name, s) -> in.put(name, pick(s, random)));
             expected(loaded, block, List.of(in), outputs)
-                    .filter(alone -> expected(loaded, block, List.of(c.vectors().get(0).in(), in), outputs)
+                    .filter(alone -> expected(loaded, block, List.of(model.get().in(), in), outputs)
                             .filter(alone::equals).isPresent())
                     .ifPresent(out -> kept.add(new Vector(in, out)));
         }
@@ -132,12 +136,17 @@ public final class FreshVectors {
         try {
             List<Map<String, Double>> all = run(loaded, block, steps, outputs);
             Map<String, Double> last = all.get(all.size() - 1);
-            return last.values().stream().allMatch(Double::isFinite) ? Optional.of(last) : Optional.empty();
+            return !last.isEmpty() && last.values().stream().allMatch(Double::isFinite) ? Optional.of(last)
+                    : Optional.empty();
         } catch (EvaluationException | RuntimeException e) {
             return Optional.empty();
         }
     }
 
+    /**
+     * The outputs after each of {@code steps} on one exact instance; an empty map for a step that ends in an evaluation
+     * error (a corpus step that must be refused: the steps after it still run).
+     */
     private static List<Map<String, Double>> run(LoadedProgram loaded, String block, List<Map<String, Double>> steps,
             List<String> outputs) throws EvaluationException {
         ExactInstance fb = loaded.newExactInstance(block, NumberReading.DECIMAL);
@@ -146,7 +155,12 @@ public final class FreshVectors {
             for (Map.Entry<String, Double> e : step.entrySet()) {
                 fb.set(e.getKey(), e.getValue());
             }
-            fb.evaluate();
+            try {
+                fb.evaluate();
+            } catch (EvaluationException e) {
+                out.add(Map.of());
+                continue;
+            }
             Map<String, Double> values = new LinkedHashMap<>();
             for (String o : outputs) {
                 values.put(o, fb.get(o));

@@ -34,7 +34,15 @@ final class ReferenceTraces {
                 for (Map.Entry<String, Double> in : c.vectors().get(i).in().entrySet()) {
                     fb.set(in.getKey(), in.getValue());
                 }
-                fb.evaluate(i == step - 1 ? trace : null);
+                if (i == step - 1) {
+                    fb.evaluate(trace);
+                } else {
+                    try {
+                        fb.evaluate(null);
+                    } catch (EvaluationException e) {
+                        // a step before, refused as the case expects; the steps after it still run
+                    }
+                }
             }
             return ReferenceTrace.of(step, trace);
         } catch (EvaluationException | RuntimeException | StackOverflowError e) {

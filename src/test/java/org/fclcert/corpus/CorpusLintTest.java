@@ -261,4 +261,56 @@ class CorpusLintTest {
         assertTrue(f.get(0).contains("flag knife-edge:2, but vector 2 is fair to judge; remove the flag"), f.toString());
         assertTrue(f.get(1).contains("every vector is flagged knife-edge"), f.toString());
     }
+
+    /** GOOD with a SINT output whose inlet is 200: at temp 5, pressure 60 the CoGS is (175 - 25/3) / (13/12) = 153.8. */
+    private static String refusing(String flags, String vectors) {
+        return GOOD.replace("flags: []", "flags: " + flags)
+                .replace("""
+                          - in: {temp: 5, pressure: 60}
+                            out: {valve: 73.07692307692308}
+                        """, vectors)
+                .replace("valve : REAL;", "valve : SINT;").replace("TERM inlet := 100;", "TERM inlet := 200;");
+    }
+
+    private static final String REFUSED_THEN_DRAINAGE = """
+              - in: {temp: 5, pressure: 60}
+                error: FCL-V004
+              - in: {temp: 27, pressure: 95}
+                out: {valve: -100}
+            """;
+
+    @Test
+    void aStepTheReferenceRefusesWithTheCodeNamedIsClean() throws IOException {
+        write("basic/B-COGS-001.fcl", refusing("[]", REFUSED_THEN_DRAINAGE));
+        assertEquals(List.of(), findings());
+    }
+
+    @Test
+    void aRefusedStepMustBeRefusedWithItsCode() throws IOException {
+        write("basic/B-COGS-001.fcl", refusing("[]", REFUSED_THEN_DRAINAGE.replace("FCL-V004", "FCL-V006")));
+        assertOneFinding("vector 1: expected the evaluation to be refused with FCL-V006, the reference evaluator refuses"
+                + " it with FCL-V004: value 153.84615384615");
+        write("basic/B-COGS-001.fcl", refusing("[]", REFUSED_THEN_DRAINAGE.replace("pressure: 60}", "pressure: 95}")));
+        // temp 5, pressure 95: closed at 11/12, drainage at 1/12: -100/12 = -8.33, stored as SINT -8
+        assertOneFinding("vector 1: expected the evaluation to be refused with FCL-V004, the reference evaluator gives"
+                + " {valve=-8.0}");
+    }
+
+    @Test
+    void onlyTheErrorsAProgramCanCauseMayBeExpected() throws IOException {
+        write("basic/B-COGS-001.fcl", refusing("[]", REFUSED_THEN_DRAINAGE.replace("FCL-V004", "FCL-V001")));
+        assertOneFinding("vector 1: 'error' must name an evaluation error a program can cause (FCL-V004, FCL-V005,"
+                + " FCL-V006), not 'FCL-V001'");
+    }
+
+    @Test
+    void noRefusedStepInAStatefulCaseNorOnlyRefusedSteps() throws IOException {
+        write("basic/B-COGS-001.fcl", refusing("[stateful]", REFUSED_THEN_DRAINAGE));
+        assertOneFinding("a stateful case cannot expect a step to be refused");
+        write("basic/B-COGS-001.fcl", refusing("[]", """
+                  - in: {temp: 5, pressure: 60}
+                    error: FCL-V004
+                """));
+        assertOneFinding("every step expects an evaluation error: a case needs a step with outputs too");
+    }
 }

@@ -1,6 +1,7 @@
 package org.fclcert.harness;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -12,6 +13,7 @@ import java.util.Optional;
 import org.fclcert.check.Analysis;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.Vector;
+import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.ExactInstance;
 import org.fclcert.eval.NumberReading;
@@ -97,6 +99,12 @@ class DisguiseOrderTest {
                 for (Map.Entry<String, Double> in : v.in().entrySet()) {
                     a.set(in.getKey(), in.getValue());
                     b.set(d.sent(in.getKey()), in.getValue());
+                }
+                if (v.refused()) {
+                    // a step the case expects refused: refused by both texts, with the case's code
+                    assertEquals(v.error().get(), assertThrows(EvaluationException.class, a::evaluate).code(), c.id());
+                    assertEquals(v.error().get(), assertThrows(EvaluationException.class, b::evaluate).code(), c.id());
+                    continue;
                 }
                 a.evaluate();
                 b.evaluate();

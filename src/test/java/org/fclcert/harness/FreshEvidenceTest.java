@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -14,6 +15,7 @@ import java.util.regex.Pattern;
 import org.fclcert.check.Analysis;
 import org.fclcert.corpus.Corpus;
 import org.fclcert.corpus.Vector;
+import org.fclcert.eval.EvaluationException;
 import org.fclcert.eval.Evaluator;
 import org.fclcert.eval.FunctionBlockInstance;
 import org.fclcert.iut.ImplementationUnderTest;
@@ -129,6 +131,10 @@ class FreshEvidenceTest {
                         throw new AssertionError(e);
                     }
                 });
+                if (v.refused()) {
+                    assertEquals(v.error().get(), assertThrows(EvaluationException.class, fb::evaluate).code(), c.id());
+                    continue;
+                }
                 fb.evaluate();
                 for (Map.Entry<String, Double> out : v.out().entrySet()) {
                     assertTrue(c.tolerance().accepts(out.getKey(), out.getValue(), fb.get(out.getKey())),
