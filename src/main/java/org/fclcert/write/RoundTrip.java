@@ -122,8 +122,21 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
                         x.set(in.getKey(), in.getValue());
                         y.set(in.getKey(), in.getValue());
                     }
-                    x.evaluate();
-                    y.evaluate();
+                    String refusedX = refusal(x);
+                    String refusedY = refusal(y);
+                    if (refusedX != null || refusedY != null) {
+                        // a step the program cannot evaluate (an output beyond its type: a corpus step that must be
+                        // refused) is the same when both texts refuse it with the same code
+                        comparisons++;
+                        if (!java.util.Objects.equals(refusedX, refusedY)) {
+                            problems.add("function block " + fb.name() + ", step " + step + ": the original "
+                                    + (refusedX == null ? "evaluates it" : "refuses it with " + refusedX)
+                                    + ", the written program " + (refusedY == null ? "evaluates it"
+                                    : "refuses it with " + refusedY));
+                            return;
+                        }
+                        continue;
+                    }
                     for (String output : x.outputNames()) {
                         comparisons++;
                         double u = x.get(output);
@@ -214,5 +227,15 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
         }
         double t = num / den;
         return span[0] * (1 - t) + span[1] * t;
+    }
+
+    /** Evaluates; the code of the evaluation error it ends in, or null when it gives outputs. */
+    private static String refusal(FunctionBlockInstance fb) {
+        try {
+            fb.evaluate();
+            return null;
+        } catch (EvaluationException e) {
+            return e.code();
+        }
     }
 }
