@@ -146,7 +146,7 @@ public final class CorpusLint {
         }
 
         /**
-         * Steps that must be refused (docs/corpus-format.md): not in a stateful case, whose next step would start from
+         * Steps that must be refused (conformance/README.md): not in a stateful case, whose next step would start from
          * a state the standard does not define after a failed evaluation; and not every step, so that the case's
          * fresh vectors have outputs to compare.
          */

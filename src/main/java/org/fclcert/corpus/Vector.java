@@ -9,7 +9,7 @@ import java.util.Optional;
 /**
  * One step of a case: the inputs to set, then either the outputs expected after one evaluation, or the evaluation
  * error the step must end in ({@link #error()}: an {@code FCL-Vnnn} code, e.g. a value that does not fit its integer
- * output's type; docs/corpus-format.md, "Steps that must be refused"). Both maps keep the order in which the case
+ * output's type; conformance/README.md, "Steps that must be refused"). Both maps keep the order in which the case
  * file lists the names.
  */
 public record Vector(Map<String, Double> in, Map<String, Double> out, Optional<String> error) {

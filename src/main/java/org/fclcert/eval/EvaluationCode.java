@@ -47,7 +47,7 @@ public enum EvaluationCode implements DiagnosticCode {
         return this == OUT_OF_RANGE || this == NO_RESULT || this == UNBOUNDED;
     }
 
-    /** The code written {@code FCL-Vnnn} (letter case as written), if it is one of these. */
+    /** The code spelt exactly {@code FCL-Vnnn}, if it is one of these. */
     public static java.util.Optional<EvaluationCode> of(String code) {
         for (EvaluationCode c : values()) {
             if (c.entry.code().equals(code)) {
