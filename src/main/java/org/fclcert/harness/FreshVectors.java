@@ -3,10 +3,12 @@ package org.fclcert.harness;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.SplittableRandom;
 import org.fclcert.check.Analysis;
 import org.fclcert.corpus.Vector;
@@ -31,7 +33,8 @@ import org.fclcert.model.Program;
  * short decimal); the expected outputs are the reference's exact path (fclcert's reading of numbers). A drawn
  * vector is kept only when:
  * <ul>
- * <li>the reference evaluates it without error to finite outputs;</li>
+ * <li>the reference evaluates it without error to finite outputs, or, in a case that expects some steps refused
+ * (conformance/README.md), ends it in an evaluation error of a code the case expects: a fresh refused step;</li>
  * <li>its outputs do not depend on what came before (the same after the case's first vector as on a fresh
  * instance, and the same where the run puts it, after the corpus vectors), so the harness's reverse-order rerun
  * stays fair;</li>
@@ -89,14 +92,18 @@ public final class FreshVectors {
         for (String in : inputs) {
             spans.put(in, span(c, fb.get(), in));
         }
+        // a case that expects some steps refused gets fresh refused steps too (the same codes), so that refusing the
+        // corpus's own inputs is not enough
+        Set<String> refusals = new HashSet<>();
+        c.vectors().forEach(v -> v.error().ifPresent(refusals::add));
         List<Vector> kept = new ArrayList<>();
         for (int tries = 0; tries < 3 * COUNT && kept.size() < COUNT; tries++) {
             Map<String, Double> in = new LinkedHashMap<>();
             spans.forEach((name, s) -> in.put(name, pick(s, random)));
-            expected(loaded, block, List.of(in), outputs)
-                    .filter(alone -> expected(loaded, block, List.of(model.get().in(), in), outputs)
+            expected(loaded, block, List.of(in), outputs, refusals)
+                    .filter(alone -> expected(loaded, block, List.of(model.get().in(), in), outputs, refusals)
                             .filter(alone::equals).isPresent())
-                    .ifPresent(out -> kept.add(new Vector(in, out)));
+                    .ifPresent(kept::add);
         }
         return fairInSequence(c, loaded, block, outputs, kept);
     }
@@ -110,7 +117,7 @@ public final class FreshVectors {
         List<Map<String, Double>> steps = new ArrayList<>(c.vectors().stream().map(Vector::in).toList());
         fresh.forEach(v -> steps.add(v.in()));
         FairVectors.Verdict verdict;
-        List<Map<String, Double>> inOrder;
+        List<Vector> inOrder;
         try {
             verdict = FairVectors.judge(loaded, block, steps, (out, a, b) -> c.tolerance().accepts(out, a, b));
             inOrder = run(loaded, block, steps, outputs);
@@ -123,34 +130,38 @@ public final class FreshVectors {
         int first = c.vectors().size();
         for (int i = 0; i < fresh.size(); i++) {
             int step = first + i + 1;
-            if (verdict.fair(step) && i + first < inOrder.size() && inOrder.get(i + first).equals(fresh.get(i).out())) {
+            if (verdict.fair(step) && i + first < inOrder.size() && inOrder.get(i + first).equals(fresh.get(i))) {
                 out.add(fresh.get(i));
             }
         }
         return out;
     }
 
-    /** The outputs after the last of {@code steps} on one fresh exact instance; empty on an error or a non-finite value. */
-    private static Optional<Map<String, Double>> expected(LoadedProgram loaded, String block,
-            List<Map<String, Double>> steps, List<String> outputs) {
+    /**
+     * The answer of one fresh exact instance to the last of {@code steps}: its outputs when finite, or a refused step
+     * when the evaluation ends in an error whose code is one of {@code refusals}; empty otherwise.
+     */
+    private static Optional<Vector> expected(LoadedProgram loaded, String block, List<Map<String, Double>> steps,
+            List<String> outputs, Set<String> refusals) {
         try {
-            List<Map<String, Double>> all = run(loaded, block, steps, outputs);
-            Map<String, Double> last = all.get(all.size() - 1);
-            return !last.isEmpty() && last.values().stream().allMatch(Double::isFinite) ? Optional.of(last)
-                    : Optional.empty();
+            List<Vector> all = run(loaded, block, steps, outputs);
+            Vector last = all.get(all.size() - 1);
+            boolean usable = last.refused() ? refusals.contains(last.error().get())
+                    : last.out().values().stream().allMatch(Double::isFinite);
+            return usable ? Optional.of(last) : Optional.empty();
         } catch (EvaluationException | RuntimeException e) {
             return Optional.empty();
         }
     }
 
     /**
-     * The outputs after each of {@code steps} on one exact instance; an empty map for a step that ends in an evaluation
-     * error (a corpus step that must be refused: the steps after it still run).
+     * Each of {@code steps} on one exact instance, with its outputs, or refused with the code of the evaluation error
+     * it ends in (a corpus step that must be refused: the steps after it still run).
      */
-    private static List<Map<String, Double>> run(LoadedProgram loaded, String block, List<Map<String, Double>> steps,
+    private static List<Vector> run(LoadedProgram loaded, String block, List<Map<String, Double>> steps,
             List<String> outputs) throws EvaluationException {
         ExactInstance fb = loaded.newExactInstance(block, NumberReading.DECIMAL);
-        List<Map<String, Double>> out = new ArrayList<>();
+        List<Vector> out = new ArrayList<>();
         for (Map<String, Double> step : steps) {
             for (Map.Entry<String, Double> e : step.entrySet()) {
                 fb.set(e.getKey(), e.getValue());
@@ -158,14 +169,14 @@ public final class FreshVectors {
             try {
                 fb.evaluate();
             } catch (EvaluationException e) {
-                out.add(Map.of());
+                out.add(Vector.refused(step, e.code()));
                 continue;
             }
             Map<String, Double> values = new LinkedHashMap<>();
             for (String o : outputs) {
                 values.put(o, fb.get(o));
             }
-            out.add(values);
+            out.add(new Vector(step, values));
         }
         return out;
     }

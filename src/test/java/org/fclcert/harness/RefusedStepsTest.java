@@ -4,8 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import org.fclcert.corpus.Corpus;
+import org.fclcert.corpus.Vector;
 import org.fclcert.iut.ForwardingIut;
 import org.fclcert.iut.ImplementationUnderTest;
 import org.fclcert.iut.IutException;
@@ -34,6 +36,10 @@ class RefusedStepsTest {
     }
 
     private static CaseResult run(Answer answer) throws Exception {
+        return run(answer, sintEnds);
+    }
+
+    private static CaseResult run(Answer answer, RunCase c) throws Exception {
         try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
             ImplementationUnderTest iut = new ForwardingIut(reference) {
                 @Override
@@ -45,8 +51,16 @@ class RefusedStepsTest {
                     }
                 }
             };
-            return new CaseRunner(new ReferenceExportCheck()).run(iut, sintEnds).result();
+            return new CaseRunner(new ReferenceExportCheck()).run(iut, c).result();
         }
+    }
+
+    /** y and z (in this order) as B-FB-151 computes them, saturated at SINT's ends instead of refused. */
+    private static Map<String, Double> saturating(Map<String, Double> in) {
+        Map<String, Double> out = new java.util.LinkedHashMap<>();
+        out.put("y", Math.min(127.0, 100 + 10 * in.get("x")));
+        out.put("z", Math.max(-128.0, -100 - 10 * in.get("w")));
+        return out;
     }
 
     @Test
@@ -69,8 +83,7 @@ class RefusedStepsTest {
     @Test
     void aValueWhereTheStepMustBeRefusedFails() throws Exception {
         // an implementation that saturates at the type's end instead of refusing
-        CaseResult r = run((in, e) -> Map.of("y", Math.min(127.0, 100 + 10 * in.get("x")),
-                "z", Math.max(-128.0, -100 - 10 * in.get("w"))));
+        CaseResult r = run((in, e) -> saturating(in));
         assertEquals(CaseStatus.FAILED, r.status());
         assertEquals("step 3 of 6: gives {y=127.0, z=-100.0} where the evaluation must be refused with FCL-V004 (a value"
                 + " that does not fit its variable's data type (e.g. 200 for a SINT output))", r.message().lines().findFirst()
@@ -93,5 +106,29 @@ class RefusedStepsTest {
             throw new IutException(IutException.Kind.CRASH, "the process died");
         });
         assertEquals(CaseStatus.ERRORED, r.status(), r.message());
+    }
+
+    @Test
+    void freshStepsAreRefusedToo() throws Exception {
+        RunCase fresh = FreshVectors.withFresh(sintEnds, 20261205L);
+        List<Vector> drawn = fresh.vectors().subList(sintEnds.vectors().size(), fresh.vectors().size());
+        assertTrue(drawn.stream().anyMatch(Vector::refused), "fresh refused steps: " + drawn);
+        assertTrue(drawn.stream().filter(Vector::refused).allMatch(v -> v.error().get().equals("FCL-V004")), "" + drawn);
+        assertEquals(CaseStatus.PASSED, run((in, e) -> {
+            throw e;
+        }, fresh).status());
+        // an implementation that refuses the corpus's own refused inputs (remembered) and saturates elsewhere
+        java.util.Set<Map<String, Double>> remembered = new java.util.HashSet<>();
+        sintEnds.vectors().stream().filter(Vector::refused).forEach(v -> remembered.add(v.in()));
+        Answer lookup = (in, e) -> {
+            if (remembered.contains(in)) {
+                throw e;
+            }
+            return saturating(in);
+        };
+        assertEquals(CaseStatus.PASSED, run(lookup).status(), "the corpus's own steps alone do not tell");
+        CaseResult r = run(lookup, fresh);
+        assertEquals(CaseStatus.FAILED, r.status());
+        assertTrue(r.message().contains("where the evaluation must be refused with FCL-V004"), r.message());
     }
 }
