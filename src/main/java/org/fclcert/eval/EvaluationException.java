@@ -33,6 +33,25 @@ public final class EvaluationException extends Exception {
         return code.code();
     }
 
+    /** An evaluation to run, which may end in an evaluation error. */
+    @FunctionalInterface
+    public interface Evaluation {
+        void run() throws EvaluationException;
+    }
+
+    /**
+     * Runs {@code evaluation}; the code of the evaluation error it ends in ({@code FCL-Vnnn}), or null when it ends
+     * normally: how two evaluations that may both refuse a step are compared (a corpus step that must be refused).
+     */
+    public static String refusalOf(Evaluation evaluation) {
+        try {
+            evaluation.run();
+            return null;
+        } catch (EvaluationException e) {
+            return e.code();
+        }
+    }
+
     /** {@code FCL-Vnnn: message}. */
     @Override
     public String toString() {

@@ -453,8 +453,8 @@ public final class Disguise {
                     a.set(in.getKey(), in.getValue());
                     b.set(map.sent(in.getKey()), in.getValue());
                 }
-                String refusedA = refusal(a);
-                if (!java.util.Objects.equals(refusedA, refusal(b))) {
+                String refusedA = EvaluationException.refusalOf(a::evaluate);
+                if (!java.util.Objects.equals(refusedA, EvaluationException.refusalOf(b::evaluate))) {
                     return false;
                 }
                 if (refusedA != null) {
@@ -469,16 +469,6 @@ public final class Disguise {
             return true;
         } catch (EvaluationException | RuntimeException e) {
             return false;
-        }
-    }
-
-    /** Evaluates; the code of the evaluation error it ends in, or null when it gives outputs. */
-    private static String refusal(ExactInstance fb) {
-        try {
-            fb.evaluate();
-            return null;
-        } catch (EvaluationException e) {
-            return e.code();
         }
     }
 }

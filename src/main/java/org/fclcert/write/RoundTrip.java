@@ -122,8 +122,8 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
                         x.set(in.getKey(), in.getValue());
                         y.set(in.getKey(), in.getValue());
                     }
-                    String refusedX = refusal(x);
-                    String refusedY = refusal(y);
+                    String refusedX = EvaluationException.refusalOf(x::evaluate);
+                    String refusedY = EvaluationException.refusalOf(y::evaluate);
                     if (refusedX != null || refusedY != null) {
                         // a step the program cannot evaluate (an output beyond its type: a corpus step that must be
                         // refused) is the same when both texts refuse it with the same code
@@ -227,15 +227,5 @@ public record RoundTrip(Written written, Optional<Program> readBack, List<Diagno
         }
         double t = num / den;
         return span[0] * (1 - t) + span[1] * t;
-    }
-
-    /** Evaluates; the code of the evaluation error it ends in, or null when it gives outputs. */
-    private static String refusal(FunctionBlockInstance fb) {
-        try {
-            fb.evaluate();
-            return null;
-        } catch (EvaluationException e) {
-            return e.code();
-        }
     }
 }
