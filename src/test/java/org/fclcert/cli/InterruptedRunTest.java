@@ -165,9 +165,7 @@ class InterruptedRunTest {
 
     private void interruptCertify(String signal, boolean wholeGroup, int exitCode) throws Exception {
         Path out = dir.resolve("out");
-        // each request 0.6 s: the three cases left take seconds, so the signal lands mid-run on a loaded machine too (at
-        // 0.25 s a loaded machine once finished the run before the signal came)
-        Process p = start("certify", "--iut", slow(0.6), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe",
+        Process p = start("certify", "--iut", slow(0.25), "--no-sandbox", "--corpus", CORPUS, "--out", out.toString(), "--no-probe",
                 "--no-fresh-evidence");
         awaitLines(streaming(out), 2);   // the header and the first case: the second is under way
         signal(signal, wholeGroup ? "-" + p.pid() : String.valueOf(p.pid()));
