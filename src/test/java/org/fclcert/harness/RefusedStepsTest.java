@@ -131,4 +131,22 @@ class RefusedStepsTest {
         assertEquals(CaseStatus.FAILED, r.status());
         assertTrue(r.message().contains("where the evaluation must be refused with FCL-V004"), r.message());
     }
+
+    @Test
+    void anExportThatNoLongerRefusesFailsTheExportCheck() throws Exception {
+        try (ImplementationUnderTest reference = Iuts.open("reference", IutOptions.defaults())) {
+            // exports its program with the SINT outputs made REAL: step 3 then evaluates to 128
+            ImplementationUnderTest iut = new ForwardingIut(reference) {
+                @Override
+                public java.util.Optional<String> export() throws IutException {
+                    return delegate().export().map(text -> text.replaceAll("(?i)\\bSINT\\b", "REAL"));
+                }
+            };
+            CaseResult r = new CaseRunner(new ReferenceExportCheck()).run(iut, sintEnds).result();
+            assertEquals(CaseStatus.PASSED, r.status(), r.message());
+            assertEquals(ExportStatus.FAILED, r.export().status());
+            assertTrue(r.export().message().startsWith("the exported FCL evaluates step 3 to {y=128.0, z=-100.0}, where"
+                    + " the original refuses it with FCL-V004"), r.export().message());
+        }
+    }
 }
