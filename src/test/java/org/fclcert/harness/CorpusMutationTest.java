@@ -40,8 +40,24 @@ class CorpusMutationTest {
     private static final ExportCheck EXPORT_NOT_JUDGED =
             (text, c) -> new ExportCheck.Verdict(ExportStatus.NOT_RUN, "not judged by the mutation test");
 
+    /**
+     * The corpus, read once per JVM. PIT runs every case as a test of its own, and JUnit builds the whole argument list
+     * again for each; reading the 387 case files each time cost a surviving mutant, run against some 700 judgements,
+     * over a minute of reading alone. The cases are immutable. Reading them uses one class of {@code org.fclcert.eval},
+     * {@code EvaluationCode} (the codes a refused step may name): its mutants are then judged by the cases' evaluations
+     * only, not by a corpus that no longer reads.
+     */
+    private static List<RunCase> read;
+
+    private static synchronized List<RunCase> cases() throws CorpusException {
+        if (read == null) {
+            read = RunCases.from(Corpus.load(CORPUS).cases());
+        }
+        return read;
+    }
+
     static Stream<Arguments> corpusCases() throws CorpusException {
-        List<RunCase> cases = RunCases.from(Corpus.load(CORPUS).cases());
+        List<RunCase> cases = cases();
         assertFalse(cases.isEmpty(), "the corpus has cases");
         return cases.stream().map(c -> Arguments.of(c.id(), c));
     }
