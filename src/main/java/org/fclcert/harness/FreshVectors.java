@@ -166,10 +166,9 @@ public final class FreshVectors {
             for (Map.Entry<String, Double> e : step.entrySet()) {
                 fb.set(e.getKey(), e.getValue());
             }
-            try {
-                fb.evaluate();
-            } catch (EvaluationException e) {
-                out.add(Vector.refused(step, e.code()));
+            String refused = EvaluationException.refusalOf(fb::evaluate);
+            if (refused != null) {
+                out.add(Vector.refused(step, refused));
                 continue;
             }
             Map<String, Double> values = new LinkedHashMap<>();
