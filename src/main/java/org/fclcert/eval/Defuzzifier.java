@@ -35,12 +35,20 @@ final class Defuzzifier {
             double y0 = py[j];
             double y1 = py[j + 1];
             area += h * (y0 + y1) * 0.5;
-            moment += h * (px[j] * (2 * y0 + y1) + px[j + 1] * (y0 + 2 * y1)) / 6.0;
+            moment += h * (px[j] * (2 * y0 + y1) + px[j + 1] * (y0 + 2 * y1));
         }
         if (areaOut != null) {
             areaOut[0] = area;
         }
-        return area > 0 ? moment / area : Double.NaN;
+        return centreOfGravity(area, moment);
+    }
+
+    /**
+     * CoG from ∫μ and six times ∫u·μ summed piece by piece as {@link #centreOfGravity(double[], double[], int, double[])}
+     * sums them (the pieces' moments are six times theirs: one division for all of them).
+     */
+    static double centreOfGravity(double area, double sixMoments) {
+        return area > 0 ? sixMoments / 6.0 / area : Double.NaN;
     }
 
     /**

@@ -31,8 +31,9 @@ import org.fclcert.model.OrAlgorithm;
  * <p>From its {@link #KERNEL_AFTER}th evaluation an instance of a block the compiled kernel covers runs
  * fuzzification, the rule blocks and singleton outputs as generated code ({@link KernelCompiler}) that computes
  * the same doubles and bounds as the code here, bit for bit; the decisions stay here. For a block whose outputs the
- * kernel computes whole, the static filter ({@link StaticFilter}) decides most steps with constant bounds and the
- * doubles alone; such a step's running bounds are computed when {@link #bound} (or {@link #reset}) asks.
+ * kernel computes whole (or are CoG over a chain of terms, {@link TermChain}), the static filter ({@link StaticFilter})
+ * decides most steps with constant bounds and the doubles alone; such a step's running bounds are computed when
+ * {@link #bound} (or {@link #reset}) asks.
  *
  * <p>Its size (about 1 600 lines, above the project's 700) is earned: every stage of Tables 3–6 in doubles sits
  * here with its error bound and the decision points that read it, so that a bound and the decision it settles
@@ -92,6 +93,8 @@ public final class FunctionBlockInstance {
     private final SetBuilder set = new SetBuilder();
     /** Per output: the smooth-set integrator when its set is not piece-wise linear, else null. */
     private final SmoothSet[] smoothSets;
+    /** Per output: its chain of terms for CoG ({@link TermChain}), or null. */
+    private final TermChain[] chains;
     private static final org.fclcert.model.Hedge[] HEDGES = org.fclcert.model.Hedge.values();
     /**
      * Per output: its value when this evaluation began, which DEFAULT NC keeps (point 6) even when a bare
@@ -148,6 +151,8 @@ public final class FunctionBlockInstance {
     private StaticFilter staticFilter;
     /** Its generated step (null: {@link StaticFilter#step} interprets it), for the tests to switch off. */
     private StaticFilter.Step staticCode;
+    /** Its generated front for a block with chain outputs (null: interpreted), for the tests to switch off. */
+    private StaticFilter.Front staticFront;
     private double[] staticTd;
     private double[] staticRd;
     private double[] staticSd;
@@ -256,8 +261,11 @@ public final class FunctionBlockInstance {
             }
         }
         this.smoothSets = new SmoothSet[plan.outputs.length];
+        this.chains = new TermChain[plan.outputs.length];
         for (int i = 0; i < smoothSets.length; i++) {
             smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
+            chains[i] = plan.outputs[i].method() == DefuzzificationMethod.COG && !plan.smoothOutputs[i]
+                    ? TermChain.of(plan.outputs[i], plan.shapes) : null;
         }
     }
 
@@ -501,6 +509,7 @@ public final class FunctionBlockInstance {
             staticFilter = plan.staticFilter();
             if (staticFilter != null) {
                 staticCode = staticFilter.compiled;
+                staticFront = staticFilter.front;
                 staticTd = new double[staticFilter.terms];
                 staticRd = new double[staticFilter.rules];
                 staticSd = new double[staticFilter.maxOutputTerms];
@@ -519,7 +528,8 @@ public final class FunctionBlockInstance {
     private boolean staticStep() {
         StaticFilter.Step code = staticCode;
         if (!(code != null ? code.step(values, staticInputs)
-                : staticFilter.step(values, staticInputs, staticTd, staticRd, staticSd, staticOut))) {
+                : staticFilter.step(values, staticInputs, staticTd, staticRd, staticSd, staticOut, staticFront, set,
+                        setArea))) {
             return false;
         }
         boundsPending = true;
@@ -591,6 +601,7 @@ public final class FunctionBlockInstance {
     /** Runs the static filter's step as {@link StaticFilter#step} instead of its generated code (for the tests). */
     void interpretStaticStep() {
         staticCode = null;
+        staticFront = null;
     }
 
     /** Never takes the kernel: the interpreter alone (for the agreement tests). */
@@ -1061,7 +1072,7 @@ public final class FunctionBlockInstance {
         double result = compiled ? compiledOutput(index)
                 : o.singletons() ? singletons(o, trace)
                 : o.method() == DefuzzificationMethod.TSUKAMOTO ? tsukamoto(o, trace)
-                : smooth != null ? smoothSet(o, smooth, trace) : pointSet(o, trace);
+                : smooth != null ? smoothSet(o, smooth, trace) : pointSet(o, chains[index], trace);
         Trace.Outcome outcome = Trace.Outcome.DEFUZZIFIED;
         if (Double.isNaN(result) && !(smooth != null ? smooth.empty() : nothingFired(o))) {
             undecided("overflow");     // an overflow in doubles: exact arithmetic has the value
@@ -1351,7 +1362,7 @@ public final class FunctionBlockInstance {
     }
 
     /** Point-term outputs: the exact accumulated set, then CoG, CoA, LM or RM on it. NaN if empty. */
-    private double pointSet(OutputPlan o, Trace trace) throws EvaluationException {
+    private double pointSet(OutputPlan o, TermChain chain, Trace trace) throws EvaluationException {
         double spread = collect(o, set.act, true);
         double lo = o.rangeMin();
         double hi = o.rangeMax();
@@ -1370,7 +1381,10 @@ public final class FunctionBlockInstance {
                 hi = Math.max(hi, curX[s][plan.shapes[s].n - 1]);
             }
         }
-        set.build(o.accumulation(), lo, hi, curX, curY, plan.shapes);
+        boolean chained = chain != null && set.buildChain(chain, lo, hi, curX, curY);
+        if (!chained) {
+            set.build(o.accumulation(), lo, hi, curX, curY, plan.shapes);
+        }
         if (trace != null) {
             List<Trace.Breakpoint> pts = new ArrayList<>();
             for (int j = 0; j < set.np; j++) {
@@ -1378,7 +1392,7 @@ public final class FunctionBlockInstance {
             }
             trace.add(new Trace.AccumulatedSet(o.variable(), false, pts));
         }
-        double result = defuzzifySet(o.method());
+        double result = chained ? set.chainCentreOfGravity(setArea) : defuzzifySet(o.method());
         if (set.act.n > 0) {
             decideSet(o, spread, lo, hi, result);
         }

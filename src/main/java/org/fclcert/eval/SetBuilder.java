@@ -47,6 +47,291 @@ final class SetBuilder {
         Arrays.fill(py, np, Math.min(py.length, np + 2), 0.0);
     }
 
+    /**
+     * Builds the vertices over [lo, hi] as {@link #build} does, for a MAX accumulation whose contributions lie on a
+     * chain of terms ({@link TermChain}): each contribution's own vertices (its term's points and clip crossings
+     * in the range, and the range's ends where they cut it) and, where two neighbours overlap, the one place where
+     * the right one overtakes the left one. The same function as {@link #build}'s, with fewer vertices (a vertex
+     * of a term where another one is higher is not one of the envelope's). Returns false, having built nothing,
+     * when this step's contributions do not fit the chain (two on one term, an activation outside Table 4, a level
+     * or weight not above 0): the caller then builds with {@link #build}.
+     */
+    boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy) {
+        np = 0;
+        chainArea = 0;      // an empty set has none (not the sums of an earlier step)
+        chainMoment = 0;
+        boolean built = chainVertices(chain, lo, hi, cx, cy);
+        if (!built) {
+            np = 0;
+        }
+        for (int j = np; j < np + 2 && j < py.length; j++) {
+            py[j] = 0.0;
+        }
+        return built;
+    }
+
+    /** Per contribution in chain order ({@code order}): its vertices in qx/qy from qFrom[k] to qFrom[k + 1]. */
+    private int[] order = new int[4];
+    private int[] qFrom = new int[5];
+    private double[] qx = new double[32];
+    private double[] qy = new double[32];
+    private int nq;
+
+    private boolean chainVertices(TermChain chain, double lo, double hi, double[][] cx, double[][] cy) {
+        int n = act.n;
+        if (n == 0 || !(lo < hi)) {
+            return true;
+        }
+        if (order.length < n) {
+            order = new int[2 * n];
+            qFrom = new int[2 * n + 1];
+        }
+        for (int j = 0; j < n; j++) {
+            int r = chain.rank[act.shape[j]];
+            if (r < 0 || act.norm[j] != null || !(act.level[j] > 0) || !(act.weight[j] > 0)) {
+                return false;
+            }
+            int k = j;
+            while (k > 0 && chain.rank[act.shape[order[k - 1]]] > r) {
+                order[k] = order[k - 1];
+                k--;
+            }
+            if (k > 0 && chain.rank[act.shape[order[k - 1]]] == r) {
+                return false;
+            }
+            order[k] = j;
+        }
+        nq = 0;
+        rangeLo = lo;
+        rangeHi = hi;
+        for (int k = 0; k < n; k++) {
+            qFrom[k] = nq;
+            int j = order[k];
+            int s = act.shape[j];
+            contributionVertices(j, cx[s], cy[s], chain.first[s], chain.last[s]);
+        }
+        qFrom[n] = nq;
+        if (px.length < nq + n + 2) {        // every staged vertex, a crossing per overlap, the two ends
+            px = Arrays.copyOf(px, 2 * (nq + n + 2));
+            py = Arrays.copyOf(py, px.length);
+        }
+        if (nq == 0 || qx[0] > lo) {
+            put(lo, 0.0);
+        }
+        int cur = -1;
+        int next = 0;       // the current contribution's first vertex not yet emitted
+        for (int k = 0; k < n; k++) {
+            int b0 = qFrom[k];
+            int b1 = qFrom[k + 1];
+            if (b0 == b1) {
+                continue;   // outside the range
+            }
+            if (cur < 0 || !(qx[b0] < qx[qFrom[cur + 1] - 1])) {
+                // no overlap with the current one: all of it, then this one from its start
+                emitVertices(next, cur < 0 ? 0 : qFrom[cur + 1], Double.POSITIVE_INFINITY);
+                cur = k;
+                next = b0;
+                continue;
+            }
+            double us = overtake(qFrom[cur], qFrom[cur + 1], b0, b1);
+            boolean overtaken = us == us;
+            if (!overtaken && overtakeDegree != overtakeDegree) {
+                return false;
+            }
+            if (!overtaken) {
+                us = Double.POSITIVE_INFINITY;  // the left one stays above to the end of the range
+            }
+            emitVertices(next, qFrom[cur + 1], us);
+            if (overtaken) {
+                put(us, overtakeDegree);
+            }
+            next = b0;
+            while (next < b1 && !(qx[next] > us)) {
+                next++;
+            }
+            cur = k;
+        }
+        emitVertices(next, cur < 0 ? 0 : qFrom[cur + 1], Double.POSITIVE_INFINITY);
+        if (np == 0 || px[np - 1] < hi) {
+            put(hi, 0.0);
+        }
+        return true;
+    }
+
+    private void emitVertices(int from, int to, double before) {
+        for (int i = from; i < to && qx[i] < before; i++) {
+            put(qx[i], qy[i]);
+        }
+    }
+
+    /**
+     * ∫μ and six times ∫u·μ of the set {@link #buildChain} built, summed as it emitted its vertices by
+     * {@link Defuzzifier#centreOfGravity}'s operations in its order: the same doubles as that method on the vertices.
+     */
+    private double chainArea;
+    private double chainMoment;
+
+    /** CoG of the set {@link #buildChain} built (as Defuzzifier.centreOfGravity on its vertices); ∫μ into area[0]. */
+    double chainCentreOfGravity(double[] area) {
+        area[0] = chainArea;
+        return Defuzzifier.centreOfGravity(chainArea, chainMoment);
+    }
+
+    /**
+     * Appends a vertex of the chain's set (at most one per staged vertex, the crossings and the two ends: the arrays
+     * were sized for them), and its piece to the sums; a vertex equal to the last adds nothing.
+     */
+    private void put(double u, double y) {
+        int m = np;
+        if (m > 0) {
+            double u0 = px[m - 1];
+            double y0 = py[m - 1];
+            if (u0 == u && y0 == y) {
+                return;
+            }
+            double h = u - u0;
+            chainArea += h * (y0 + y) * 0.5;
+            chainMoment += h * (u0 * (2 * y0 + y) + u * (y0 + 2 * y));
+        }
+        px[m] = u;
+        py[m] = y;
+        np = m + 1;
+    }
+
+    /**
+     * Contribution j's vertices over the part of [lo, hi] where its term (points x, y; support from point f to
+     * point l, or the range's end on a shoulder) may be positive: the ends of that part, the term's points and
+     * its clip crossings inside it, each with its activated degree.
+     */
+    private void contributionVertices(int j, double[] x, double[] y, int f, int l) {
+        int n = x.length;
+        double a = y[0] > 0 ? rangeLo : Math.max(rangeLo, x[f]);
+        double b = y[n - 1] > 0 ? rangeHi : Math.min(rangeHi, x[l]);
+        if (!(a < b)) {
+            return;
+        }
+        int q = nq;
+        if (qx.length < q + 2 * (l - f) + 4) {
+            qx = Arrays.copyOf(qx, 2 * (q + 2 * (l - f) + 4));
+            qy = Arrays.copyOf(qy, qx.length);
+        }
+        double[] vx = qx;
+        double[] vy = qy;
+        // Activations.activate with its operations (the chain admits no other t-norm): w·min(level, μ) or w·(level·μ)
+        double level = act.level[j];
+        double w = act.weight[j];
+        boolean prod = act.prod[j];
+        vx[q] = a;
+        vy[q++] = a == x[f] ? w * (prod ? level * y[f] : Math.min(level, y[f])) : chainDegree(j, x, y, a);
+        for (int i = f; i <= l; i++) {
+            if (i > f && !prod) {
+                double c = crossing(x[i - 1], y[i - 1], x[i], y[i], level);
+                if (c > a && c < b) {
+                    vx[q] = c;
+                    vy[q++] = w * Math.min(level, level);
+                }
+            }
+            double xi = x[i];
+            double yi = y[i];
+            // a point above a MIN level lies on the clipped plateau, which its neighbours bound: not a vertex
+            if (xi > a && xi < b && (prod || !(yi > level))) {
+                vx[q] = xi;
+                vy[q++] = w * (prod ? level * yi : Math.min(level, yi));
+            }
+        }
+        vx[q] = b;
+        vy[q++] = b == x[l] ? w * (prod ? level * y[l] : Math.min(level, y[l])) : chainDegree(j, x, y, b);
+        nq = q;
+    }
+
+    /** The range of the set {@link #buildChain} is building. */
+    private double rangeLo;
+    private double rangeHi;
+
+    /**
+     * Contribution j's activated degree at u as {@link #activatedValues} computes it at a place that is not one of
+     * its clip crossings (at those callers take the vertex's own degree, the level): at a point its degree, between
+     * points the interpolation.
+     */
+    private double chainDegree(int j, double[] x, double[] y, double u) {
+        int n = x.length;
+        double v;
+        if (u <= x[0]) {
+            v = y[0];
+        } else if (u >= x[n - 1]) {
+            v = y[n - 1];
+        } else {
+            int i = 1;
+            while (x[i] < u) {
+                i++;
+            }
+            v = x[i] == u ? y[i] : Pwl.interpolate(x[i - 1], y[i - 1], x[i], y[i], u);
+        }
+        return act.activate(j, v);
+    }
+
+    /** The degree at the place {@link #overtake} returned. */
+    private double overtakeDegree;
+
+    /**
+     * Where contribution b (vertices b0 to b1, starting inside contribution a's vertices a0 to a1) overtakes a:
+     * the first u where a is no longer above b, found piece by piece over both one's vertices (a falls and b rises
+     * there, so they cross once), its degree into {@link #overtakeDegree}; the crossing inside a piece by
+     * {@link #envelope}'s formula. NaN when a stays above b to its last vertex (and NaN as the degree too when b
+     * does not start inside a's vertices, which the chain's order rules out: the caller declines). A degree at a vertex of a
+     * contribution is that vertex's; between two of its vertices, where it is linear, their interpolation.
+     */
+    private double overtake(int a0, int a1, int b0, int b1) {
+        overtakeDegree = 0;
+        double u0 = qx[b0];
+        int ia = a0;
+        while (ia < a1 && qx[ia] < u0) {
+            ia++;
+        }
+        if (ia == a1 || ia == a0 && qx[ia] != u0) {
+            overtakeDegree = Double.NaN;    // b does not start inside a (the chain's order rules it out): declined
+            return Double.NaN;
+        }
+        double f0 = qx[ia] == u0 ? qy[ia++] : between(ia, u0);
+        double g0 = qy[b0];
+        if (!(f0 > g0)) {
+            overtakeDegree = g0;
+            return u0;
+        }
+        int ib = b0 + 1;
+        while (ia < a1 && ib < b1) {
+            double u1 = Math.min(qx[ia], qx[ib]);
+            double f1 = qx[ia] == u1 ? qy[ia] : between(ia, u1);
+            double g1 = qx[ib] == u1 ? qy[ib] : between(ib, u1);
+            if (!(f1 > g1)) {
+                if (f1 == g1) {
+                    overtakeDegree = f1;
+                    return u1;
+                }
+                double d0 = f0 - g0;
+                double t = d0 / (d0 - (f1 - g1));
+                double u = Math.min(u1, Math.max(u0, u0 + (u1 - u0) * t));
+                overtakeDegree = f0 + (f1 - f0) * t;
+                return u;
+            }
+            if (qx[ia] == u1) {
+                ia++;
+            }
+            if (qx[ib] == u1) {
+                ib++;
+            }
+            u0 = u1;
+            f0 = f1;
+            g0 = g1;
+        }
+        return Double.NaN;
+    }
+
+    /** The degree at u of the staged polyline between its vertices i − 1 and i (u strictly between them). */
+    private double between(int i, double u) {
+        return Pwl.interpolate(qx[i - 1], qy[i - 1], qx[i], qy[i], u);
+    }
+
     private void buildVertices(AccumulationMethod accu, double lo, double hi, double[][] cx, double[][] cy,
             Shape[] shapes) {
         if (act.n == 0 || !(lo < hi)) {
@@ -135,26 +420,38 @@ final class SetBuilder {
     private void clipCrossings(int j, double[] x, double[] y, int n, double level, double lo, double hi) {
         crossStart[j] = nc;
         for (int i = 0; i + 1 < n; i++) {
-            double y0 = y[i];
-            double y1 = y[i + 1];
-            if ((y0 - level) * (y1 - level) < 0 && x[i + 1] > x[i]) {
-                double u = x[i] + (x[i + 1] - x[i]) * (level - y0) / (y1 - y0);
-                if (!(u < x[i + 1])) {
-                    u = Math.nextDown(x[i + 1]);
+            double u = crossing(x[i], y[i], x[i + 1], y[i + 1], level);
+            if (u > lo && u < hi) {
+                addBreakpoint(u);
+                if (nc == crossU.length) {
+                    crossU = Arrays.copyOf(crossU, 2 * nc);
                 }
-                if (!(u > x[i])) {
-                    u = Math.nextUp(x[i]);
-                }
-                if (u > lo && u < hi && u > x[i] && u < x[i + 1]) {
-                    addBreakpoint(u);
-                    if (nc == crossU.length) {
-                        crossU = Arrays.copyOf(crossU, 2 * nc);
-                    }
-                    crossU[nc++] = u;
-                }
+                crossU[nc++] = u;
             }
         }
         crossEnd[j] = nc;
+    }
+
+    /**
+     * Where a MIN clip level crosses the segment from (x0, y0) to (x1, y1) strictly inside it, or NaN: a crossing
+     * that rounds onto an end is kept one ulp inside, so the piece beyond stays a plateau (NaN when there is no
+     * double inside).
+     */
+    static double crossing(double x0, double y0, double x1, double y1, double level) {
+        if (!((y0 - level) * (y1 - level) < 0 && x1 > x0)) {
+            return Double.NaN;
+        }
+        double dy = y1 - y0;
+        double p = (x1 - x0) * (level - y0);
+        // on a piece from degree 0 to 1 or back (the usual) the quotient by ±1 is p or −p exactly: no division
+        double u = x0 + (dy == 1 ? p : dy == -1 ? -p : p / dy);
+        if (!(u < x1)) {
+            u = Math.nextDown(x1);
+        }
+        if (!(u > x0)) {
+            u = Math.nextUp(x0);
+        }
+        return u > x0 && u < x1 ? u : Double.NaN;
     }
 
     private void addBreakpoint(double u) {

@@ -21,12 +21,14 @@ import org.objectweb.asm.MethodVisitor;
  * evaluated again with the running bounds (and, if still undecided, exactly).
  *
  * <p>It covers the blocks whose every output the compiled kernel computes whole (singleton terms, MAX accumulation,
- * CoGS) and whose rules are one term or one AND (MIN, PROD) or OR (MAX) of terms, negated or not, with constant
+ * CoGS) or is CoG over a chain of point terms ({@link #chainOutput}), and whose rules are one term or one AND (MIN,
+ * PROD) or OR (MAX) of terms, negated or not, with constant
  * weights, over input terms of constant points with degrees in [0, 1]. The doubles are computed by the interpreter's
  * operations in its order ({@link Pwl#degree}, the fold of {@code aggregateTerms}, w·d, {@code degreesPerTerm}'s MAX,
- * {@code centreOfGravityForSingletons}), so they are the interpreter's bit for bit.
+ * {@code centreOfGravityForSingletons}; for a chain output its own {@link SetBuilder#buildChain} and CoG), so they
+ * are the interpreter's bit for bit.
  *
- * <p>Its size (about 800 lines, above the project's 700) is earned: the static bounds, the step interpreted and the
+ * <p>Its size (about 1 000 lines, above the project's 700) is earned: the static bounds, the step interpreted and the
  * step generated sit side by side, so that every operation the generator leaves out or replaces can be read beside
  * the argument that it cannot change a bit, and the bounds beside the running formulas they dominate.
  *
@@ -81,8 +83,36 @@ final class StaticFilter {
     final int[] contributionOutput;
     final int[] contributionSingleton;
     final double[] threshold;
-    /** The step as generated code ({@link #compile}), or null when the block is too large for one method. */
+    /** The step as generated code ({@link #compile}), or null when the block is too large for one method or has chains. */
     final Step compiled;
+    /**
+     * Per output: its chain of terms when it is a point-set output the kernel leaves to the interpreter (CoG under MAX
+     * over a {@link TermChain}, see {@link #chainOutput}), else null; its interval, and the two parts of CoG's area
+     * test (docs/semantics.md, point 10): the largest static bound of its contributions, and M (decideSet's m).
+     */
+    private final TermChain[] chainOf;
+    private final double[] chainLo;
+    private final double[] chainHi;
+    private final double[] chainSpread;
+    private final double[] chainM;
+    /** Per contribution (in output order): its term's shape and activation, for the chain outputs. */
+    private final int[] contributionShape;
+    private final org.fclcert.model.ActivationMethod[] contributionActivation;
+    /** Per contribution (in output order): its index in the plan (of contributionBound). */
+    private final int[] contributionIndex;
+    /** Per shape of the plan: its points (constant for every shape of a chain output). */
+    private final double[][] shapeX;
+    private final double[][] shapeY;
+    /** Per input term: a degree 0 is exact (bound 0) at an input outside (slopedFrom, slopedTo), its sloped pieces. */
+    private final double[] slopedFrom;
+    private final double[] slopedTo;
+    /** For a block with chain outputs: the term and rule degrees as generated code ({@link #compileFront}), or null. */
+    final Front front;
+
+    /** The term and rule degrees of {@link #step} written out for one plan, into arrays (for blocks with chains). */
+    interface Front {
+        void front(double[] values, double[] td, double[] rd);
+    }
 
     /** {@link #step} written out for one plan: the same operations on the same operands, its numbers as constants. */
     interface Step {
@@ -100,8 +130,10 @@ final class StaticFilter {
     final int maxOutputTerms;
 
     private StaticFilter(BlockPlan plan, int[][] rulesTerms, int[] ops, boolean[][] nots, int[] contributionRules,
-            double[] weights) {
+            double[] weights, TermChain[] chains) {
         int nt = plan.termShape.length;
+        slopedFrom = new double[nt];
+        slopedTo = new double[nt];
         this.terms = nt;
         termSlot = plan.termVariableSlot.clone();
         termX = new double[nt][];
@@ -111,6 +143,8 @@ final class StaticFilter {
         double[] termMax = new double[nt];
         for (int t = 0; t < nt; t++) {
             Shape s = plan.shapes[plan.termShape[t]];
+            slopedFrom[t] = Double.POSITIVE_INFINITY;
+            slopedTo[t] = Double.NEGATIVE_INFINITY;
             if (s.singleton) {
                 singletonAt[t] = s.sortedX[0];
                 termMax[t] = 1;
@@ -119,6 +153,12 @@ final class StaticFilter {
             termX[t] = s.sortedX;
             termY[t] = s.sortedY;
             termBound[t] = termBound(s.sortedX, s.sortedY);
+            for (int i = 1; i < s.n; i++) {
+                if (s.sortedX[i] > s.sortedX[i - 1] && s.sortedY[i] != s.sortedY[i - 1]) {
+                    slopedFrom[t] = Math.min(slopedFrom[t], s.sortedX[i - 1]);
+                    slopedTo[t] = s.sortedX[i];
+                }
+            }
             double m = 0;
             for (double y : s.sortedY) {
                 m = Math.max(m, y);
@@ -187,6 +227,21 @@ final class StaticFilter {
         contributionDegreeBound = new double[plan.contributionCount];
         contributionOutput = new int[plan.contributionCount];
         contributionSingleton = new int[plan.contributionCount];
+        contributionShape = new int[nc];
+        contributionIndex = new int[nc];
+        shapeX = new double[plan.shapes.length][];
+        shapeY = new double[plan.shapes.length][];
+        for (int s = 0; s < plan.shapes.length; s++) {
+            shapeX[s] = plan.shapes[s].sortedX;
+            shapeY[s] = plan.shapes[s].sortedY;
+        }
+        contributionActivation = new org.fclcert.model.ActivationMethod[nc];
+        chainOf = chains;
+        chainLo = new double[no];
+        chainHi = new double[no];
+        chainSpread = new double[no];
+        chainM = new double[no];
+        boolean anyChain = false;
         for (int i = 0; i < no; i++) {
             OutputPlan o = plan.outputs[i];
             outputSlot[i] = o.slot();
@@ -216,6 +271,27 @@ final class StaticFilter {
                 contributionDegreeBound[c] = ruleBound[r];
                 contributionOutput[c] = i;
                 contributionSingleton[c] = t;
+                contributionShape[at] = o.termShapes()[t];
+                contributionIndex[at] = c;
+                contributionActivation[at] = o.contributionActivation()[k];
+                chainSpread[i] = Math.max(chainSpread[i], e);
+            }
+            if (chains[i] != null) {
+                anyChain = true;
+                double lo = o.rangeMin();
+                double hi = o.rangeMax();
+                if (!o.hasRange()) {        // as FunctionBlockInstance.pointSet: the hull of the terms' points
+                    lo = Double.POSITIVE_INFINITY;
+                    hi = Double.NEGATIVE_INFINITY;
+                    for (int s : o.termShapes()) {
+                        lo = Math.min(lo, plan.shapes[s].sortedX[0]);
+                        hi = Math.max(hi, plan.shapes[s].sortedX[plan.shapes[s].n - 1]);
+                    }
+                }
+                chainLo[i] = lo;
+                chainHi[i] = hi;
+                // decideSet's m, by its expression (its rounding term 8(np + 2)·u·m depends on the step's vertices)
+                chainM[i] = Math.max(Math.max(Math.abs(lo), Math.abs(hi)), hi - lo);
             }
             double sum = 0;
             for (int t = 0; t < n; t++) {
@@ -223,7 +299,8 @@ final class StaticFilter {
             }
             threshold[i] = sum;
         }
-        compiled = compile();
+        compiled = anyChain ? null : compile();
+        front = anyChain ? compileFront() : null;
     }
 
     // ------------------------------------------------------------------------------------------ generated step
@@ -249,57 +326,17 @@ final class StaticFilter {
         }
         String self = "org/fclcert/eval/StaticStep";
         ClassWriter cw = KernelCompiler.newClass(self, "org/fclcert/eval/StaticFilter$Step");
-        // each term's degree in a small method of its own, so that the step stays under HotSpot's size for inlining
-        // a hot method (FreqInlineSize, 325 bytes) and the JIT inlines it, and the terms into it
-        for (int t = 0; t < terms; t++) {
-            MethodVisitor tm = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, "term" + t, "(D)D", null, null);
-            tm.visitCode();
-            term(tm, t, 0, 2);
-            tm.visitVarInsn(DLOAD, 2);
-            tm.visitInsn(DRETURN);
-            tm.visitMaxs(0, 0);
-            tm.visitEnd();
-        }
+        termMethods(cw, self);
         MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "step", "([D[D)Z", null, null);
         mv.visitCode();
         // locals: this, values, out; u; then the term degrees, rule degrees, singleton degrees, num, den
-        int u = 3;
         int td = 5;
         int rd = td + 2 * terms;
         int sd = rd + 2 * rules;
         int num = sd + 2 * maxOutputTerms;
         int den = num + 2;
         int result = den + 2;
-        for (int t = 0; t < terms; t++) {
-            mv.visitVarInsn(ALOAD, 1);
-            KernelCompiler.push(mv, termSlot[t]);
-            mv.visitInsn(DALOAD);
-            mv.visitMethodInsn(INVOKESTATIC, self, "term" + t, "(D)D", false);
-            mv.visitVarInsn(DSTORE, td + 2 * t);
-        }
-        for (int r = 0; r < rules; r++) {
-            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
-                if (ruleNot[j]) {
-                    mv.visitInsn(DCONST_1);
-                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
-                    mv.visitInsn(DSUB);
-                } else {
-                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
-                }
-                if (j > ruleFrom[r]) {
-                    if (ruleOp[r] == PROD) {
-                        mv.visitInsn(DMUL);
-                    } else {
-                        // Math.min/max are the plain comparison's choice for operands neither NaN nor -0.0: the
-                        // terms' degrees are not (points' degrees in [0, 1], not -0.0; an interpolation is a sum of
-                        // products at least +0 over a positive width), nor MIN, MAX or PROD of them; 1 - d is not
-                        // -0.0 either, but may be below 0, and a PROD of it with +0 is -0.0: Math's after a NOT
-                        select(mv, ruleOp[r] == MIN, !plainSoFar(r, j + 1));
-                    }
-                }
-            }
-            mv.visitVarInsn(DSTORE, rd + 2 * r);
-        }
+        degrees(mv, self, td, rd);
         Label undecided = new Label();
         // a rule degree is not below +0 when its fold has no NOT (1 - d of a degree rounded above 1 is below 0)
         boolean[] nonNegative = new boolean[rules];
@@ -445,6 +482,97 @@ final class StaticFilter {
         mv.visitMaxs(0, 0);
         mv.visitEnd();
         return (Step) KernelCompiler.instance(cw, "the static filter's step");
+    }
+
+    /**
+     * Each term's degree in a small method of its own, so that the step stays under HotSpot's size for inlining a hot
+     * method (FreqInlineSize, 325 bytes) and the JIT inlines it, and the terms into it.
+     */
+    private void termMethods(ClassWriter cw, String self) {
+        for (int t = 0; t < terms; t++) {
+            MethodVisitor tm = cw.visitMethod(ACC_PRIVATE | ACC_STATIC, "term" + t, "(D)D", null, null);
+            tm.visitCode();
+            term(tm, t, 0, 2);
+            tm.visitVarInsn(DLOAD, 2);
+            tm.visitInsn(DRETURN);
+            tm.visitMaxs(0, 0);
+            tm.visitEnd();
+        }
+    }
+
+    /** The term degrees (of the values array in local 1) into locals td + 2t, the rule degrees into rd + 2r. */
+    private void degrees(MethodVisitor mv, String self, int td, int rd) {
+        for (int t = 0; t < terms; t++) {
+            mv.visitVarInsn(ALOAD, 1);
+            KernelCompiler.push(mv, termSlot[t]);
+            mv.visitInsn(DALOAD);
+            mv.visitMethodInsn(INVOKESTATIC, self, "term" + t, "(D)D", false);
+            mv.visitVarInsn(DSTORE, td + 2 * t);
+        }
+        for (int r = 0; r < rules; r++) {
+            for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+                if (ruleNot[j]) {
+                    mv.visitInsn(DCONST_1);
+                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
+                    mv.visitInsn(DSUB);
+                } else {
+                    mv.visitVarInsn(DLOAD, td + 2 * ruleTerm[j]);
+                }
+                if (j > ruleFrom[r]) {
+                    if (ruleOp[r] == PROD) {
+                        mv.visitInsn(DMUL);
+                    } else {
+                        // Math.min/max are the plain comparison's choice for operands neither NaN nor -0.0: the
+                        // terms' degrees are not (points' degrees in [0, 1], not -0.0; an interpolation is a sum of
+                        // products at least +0 over a positive width), nor MIN, MAX or PROD of them; 1 - d is not
+                        // -0.0 either, but may be below 0, and a PROD of it with +0 is -0.0: Math's after a NOT
+                        select(mv, ruleOp[r] == MIN, !plainSoFar(r, j + 1));
+                    }
+                }
+            }
+            mv.visitVarInsn(DSTORE, rd + 2 * r);
+        }
+    }
+
+    /**
+     * {@link #step}'s term and rule degrees as one generated method, for a block with chain outputs: the same code as
+     * {@link #compile}'s, the degrees stored into arrays for {@link #step}'s outputs. Null when the class file cannot
+     * hold it or the estimate exceeds {@link #BUDGET}.
+     */
+    private Front compileFront() {
+        int cost = 0;
+        for (int t = 0; t < terms; t++) {
+            cost += 30 + (termX[t] == null ? 10 : 60 * termX[t].length);
+        }
+        cost += 30 * ruleTerm.length + 10 * rules;
+        if (cost > BUDGET) {
+            return null;
+        }
+        String self = "org/fclcert/eval/StaticFront";
+        ClassWriter cw = KernelCompiler.newClass(self, "org/fclcert/eval/StaticFilter$Front");
+        termMethods(cw, self);
+        MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "front", "([D[D[D)V", null, null);
+        mv.visitCode();
+        // locals: this, values, td, rd; then the term degrees and rule degrees
+        int td = 4;
+        int rd = td + 2 * terms;
+        degrees(mv, self, td, rd);
+        for (int t = 0; t < terms; t++) {
+            mv.visitVarInsn(ALOAD, 2);
+            KernelCompiler.push(mv, t);
+            mv.visitVarInsn(DLOAD, td + 2 * t);
+            mv.visitInsn(DASTORE);
+        }
+        for (int r = 0; r < rules; r++) {
+            mv.visitVarInsn(ALOAD, 3);
+            KernelCompiler.push(mv, r);
+            mv.visitVarInsn(DLOAD, rd + 2 * r);
+            mv.visitInsn(DASTORE);
+        }
+        mv.visitInsn(RETURN);
+        mv.visitMaxs(0, 0);
+        mv.visitEnd();
+        return (Front) KernelCompiler.instance(cw, "the static filter's front");
     }
 
     /** Pwl.degree (or a singleton's 1/0) of term t at local {@code u}, into local {@code into}. */
@@ -613,8 +741,9 @@ final class StaticFilter {
      * one AND/OR of terms under MIN, PROD or MAX, constant weights, input term degrees in [0, 1] (not −0.0).
      */
     static StaticFilter build(BlockPlan plan, KernelCompiler.Compiled kernel) {
-        for (boolean b : kernel.outputs()) {
-            if (!b) {
+        TermChain[] chains = new TermChain[plan.outputs.length];
+        for (int i = 0; i < chains.length; i++) {
+            if (!kernel.outputs()[i] && (chains[i] = chainOutput(plan, i)) == null) {
                 return null;
             }
         }
@@ -665,9 +794,49 @@ final class StaticFilter {
                 }
             }
         }
+        boolean anyChain = false;
+        for (TermChain c : chains) {
+            anyChain |= c != null;
+        }
+        if (anyChain && ops.size() > CHAIN_RULES) {
+            return null;
+        }
         // every contribution is a subconclusion of some rule (BlockCompiler), so each has its rule now
         return new StaticFilter(plan, terms.toArray(new int[0][]), ops.stream().mapToInt(Integer::intValue).toArray(),
-                nots.toArray(new boolean[0][]), contributionRules, weights);
+                nots.toArray(new boolean[0][]), contributionRules, weights, chains);
+    }
+
+    /**
+     * The chain of output i when the filter covers it although the kernel leaves it to the interpreter: a point-set
+     * output with CoG under MAX over a chain of terms ({@link TermChain}), MIN or PROD activations, a REAL or LREAL
+     * variable, no NC (nothing fired is left to the running path anyway) and, without RANGE, no term positive at its
+     * outer points (else a fired one has no finite interval: the running path reports it). Null otherwise.
+     */
+    /**
+     * The most rules of a block with chain outputs the filter takes: its step computes every rule and tests every
+     * rule of degree 0 for an exact 0, where the kernel's running path skips the rules whose first term is an exact 0
+     * (ZeroSkip) — faster from a few dozen rules on (125 rules: 1.4 µs a step against the kernel's 0.5 µs).
+     */
+    static final int CHAIN_RULES = 16;
+
+    private static TermChain chainOutput(BlockPlan plan, int i) {
+        OutputPlan o = plan.outputs[i];
+        if (o.singletons() || plan.smoothOutputs[i] || o.method() != org.fclcert.model.DefuzzificationMethod.COG
+                || o.accumulation() != AccumulationMethod.MAX || o.noChange() || plan.types[o.slot()].isInteger()) {
+            return null;
+        }
+        for (org.fclcert.model.ActivationMethod a : o.contributionActivation()) {
+            if (a != org.fclcert.model.ActivationMethod.MIN && a != org.fclcert.model.ActivationMethod.PROD) {
+                return null;
+            }
+        }
+        for (int s : o.termShapes()) {
+            Shape shape = plan.shapes[s];
+            if (!o.hasRange() && (shape.sortedY[0] > 0 || shape.sortedY[shape.n - 1] > 0)) {
+                return null;
+            }
+        }
+        return TermChain.of(o, plan.shapes);
     }
 
     /**
@@ -677,25 +846,20 @@ final class StaticFilter {
      * returns true. Else it returns false and writes nothing: the step must be evaluated with the running bounds
      * (which also report an output that does not fit).
      */
-    boolean step(double[] values, double[] saved, double[] td, double[] rd, double[] sd, double[] out) {
-        for (int t = 0; t < terms; t++) {
-            double u = values[termSlot[t]];
-            double[] x = termX[t];
-            td[t] = x == null ? (u == singletonAt[t] ? 1.0 : 0.0) : Pwl.degree(x, termY[t], x.length, u);
-        }
-        for (int r = 0; r < rules; r++) {
-            int from = ruleFrom[r];
-            int to = ruleFrom[r + 1];
-            double acc = ruleNot[from] ? 1.0 - td[ruleTerm[from]] : td[ruleTerm[from]];
-            int op = ruleOp[r];
-            for (int j = from + 1; j < to; j++) {
-                double y = ruleNot[j] ? 1.0 - td[ruleTerm[j]] : td[ruleTerm[j]];
-                acc = op == MIN ? Norms.and(AndAlgorithm.MIN, acc, y) : op == PROD ? Norms.and(AndAlgorithm.PROD, acc, y)
-                        : Norms.or(OrAlgorithm.MAX, acc, y);
-            }
-            rd[r] = acc;
+    boolean step(double[] values, double[] saved, double[] td, double[] rd, double[] sd, double[] out, Front code,
+            SetBuilder set, double[] area) {
+        if (code != null) {
+            code.front(values, td, rd);
+        } else {
+            degrees(values, td, rd);
         }
         for (int i = 0; i < outputSlot.length; i++) {
+            if (chainOf[i] != null) {
+                if (!chainOutput(i, values, td, rd, out, set, area)) {
+                    return false;
+                }
+                continue;
+            }
             double[] v = singletonValue[i];
             int n = v.length;
             for (int t = 0; t < n; t++) {
@@ -727,5 +891,101 @@ final class StaticFilter {
             saved[k] = values[inputSlot[k]];
         }
         return true;
+    }
+
+    /** {@link #step}'s term and rule degrees, interpreted: the operations {@link #degrees(MethodVisitor, String, int, int)} generates. */
+    private void degrees(double[] values, double[] td, double[] rd) {
+        for (int t = 0; t < terms; t++) {
+            double u = values[termSlot[t]];
+            double[] x = termX[t];
+            td[t] = x == null ? (u == singletonAt[t] ? 1.0 : 0.0) : Pwl.degree(x, termY[t], x.length, u);
+        }
+        for (int r = 0; r < rules; r++) {
+            int from = ruleFrom[r];
+            int to = ruleFrom[r + 1];
+            double acc = ruleNot[from] ? 1.0 - td[ruleTerm[from]] : td[ruleTerm[from]];
+            int op = ruleOp[r];
+            for (int j = from + 1; j < to; j++) {
+                double y = ruleNot[j] ? 1.0 - td[ruleTerm[j]] : td[ruleTerm[j]];
+                acc = op == MIN ? Norms.and(AndAlgorithm.MIN, acc, y) : op == PROD ? Norms.and(AndAlgorithm.PROD, acc, y)
+                        : Norms.or(OrAlgorithm.MAX, acc, y);
+            }
+            rd[r] = acc;
+        }
+    }
+
+    /**
+     * A chain output of {@link #step}: the running path's point set and CoG on the same doubles
+     * ({@code FunctionBlockInstance.collect} and {@code pointSet}: the contributions that fired merged under MAX, the
+     * chain's construction, {@link Defuzzifier#centreOfGravity}), and its decisions with the static bounds:
+     * <ul>
+     * <li>whether a contribution fired (collectOne): w·d above its static bound, or an exact 0 — a weight 0, or a rule
+     * degree 0 that {@link #exactZero} shows has running bound 0;</li>
+     * <li>nothing fired (DEFAULT) and a step the chain construction declines are left to the running path;</li>
+     * <li>CoG's area test (decideSet): the area above 2Δ with Δ = S·W + 8(n + 2)·u·M, S the largest static bound of a
+     * contribution, in decideSet's expression, which its running Δ (the largest running bound for S) does not
+     * exceed;</li>
+     * <li>a value that does not fit the variable's type, or NaN, is left to the running path (which reports it).</li>
+     * </ul>
+     */
+    private boolean chainOutput(int i, double[] values, double[] td, double[] rd, double[] out, SetBuilder set,
+            double[] area) {
+        Activations act = set.act;
+        act.clear();
+        for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+            int r = contributionRule[k];
+            double d = rd[r];
+            double w = contributionWeight[k];
+            double dw = d * w;
+            if (dw > 0) {
+                if (!(dw > contributionBound[contributionIndex[k]])) {
+                    return false;
+                }
+                act.addUnderMax(contributionShape[k], d, w, contributionActivation[k]);
+            } else if (!(dw == 0 && (w == 0 || exactZero(r, values, td)))) {
+                return false;
+            }
+        }
+        if (act.n == 0) {
+            return false;
+        }
+        double lo = chainLo[i];
+        double hi = chainHi[i];
+        if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY)) {
+            return false;
+        }
+        double c = set.chainCentreOfGravity(area);
+        double delta = chainSpread[i] * (hi - lo) + 8 * (set.np + 2) * U * chainM[i];
+        if (!(area[0] > 2 * delta) || !(c >= outputMin[i] && c <= outputMax[i])) {
+            return false;
+        }
+        out[i] = c;
+        return true;
+    }
+
+    /** The unit roundoff, as FunctionBlockInstance's. */
+    private static final double U = 0x1.0p-53;
+
+    /**
+     * Whether rule r's degree, 0 here, has running bound 0: MIN or PROD give an exact 0 (bound 0) when one operand is
+     * one (Norms.minError, productError), a single term is its own, MAX needs all of its operands exact 0s. A term's
+     * degree 0 is exact when it was read at or outside its points or on a flat piece (the bound of a degree 0 point,
+     * 0; FunctionBlockInstance.degree), which an input outside the hull of its sloped pieces guarantees, and a
+     * singleton's always is; a NOT is not counted (conservatively: the running path decides those).
+     */
+    private boolean exactZero(int r, double[] values, double[] td) {
+        boolean all = ruleOp[r] == MAX;
+        for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+            int t = ruleTerm[j];
+            double u = values[termSlot[t]];
+            boolean exact = !ruleNot[j] && td[t] == 0 && !(u > slopedFrom[t] && u < slopedTo[t]);
+            if (exact && !all) {
+                return true;
+            }
+            if (!exact && all) {
+                return false;
+            }
+        }
+        return all;
     }
 }

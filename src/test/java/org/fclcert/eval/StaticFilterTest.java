@@ -186,6 +186,63 @@ class StaticFilterTest {
     }
 
     /**
+     * A chain output's decisions (TermChain; docs/semantics.md, "The static filter"): a step whose every test passes is
+     * decided statically with the interpreter's value; one whose CoG area is within its bound (a term of width 2e-12
+     * under a RANGE of 1000: area 5e-13 against 2Δ ≥ 2·8·(n + 2)·u·1000 ≈ 1e-11) is left to the running path, which
+     * hands it to exact arithmetic; a rule of a degree not above its static bound, and nothing fired, likewise.
+     */
+    @Test
+    void chainOutputDecisions() throws Exception {
+        LoadedProgram p = load("""
+                FUNCTION_BLOCK c
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x
+                    TERM up := (0, 0) (10, 1);
+                    TERM down := (0, 1) (10, 0);
+                END_FUZZIFY
+                DEFUZZIFY y
+                    TERM thin := (0, 0) (0.000000000001, 1) (0.000000000002, 0);
+                    TERM wide := (600, 0) (800, 1) (1000, 0);
+                    METHOD : CoG;
+                    DEFAULT := -1;
+                    RANGE := (0 .. 1000);
+                END_DEFUZZIFY
+                RULEBLOCK r
+                    AND : MIN;
+                    ACT : MIN;
+                    ACCU : MAX;
+                    RULE 1 : IF x IS up THEN y IS thin;
+                    RULE 2 : IF x IS down THEN y IS wide;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """);
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        FunctionBlockInstance plain = p.newInstance();
+        plain.interpretOnly();
+        double[] xs = {2, 10, 1e-300, 5};
+        for (double x : xs) {
+            fb.setInputs(x);
+            plain.setInputs(x);
+            fb.evaluate();
+            plain.evaluate();
+            assertEquals(plain.output(0), fb.output(0), "x = " + x);
+            assertEquals(plain.bound("y"), fb.bound("y"), "x = " + x);
+        }
+        assertNotNull(fb.staticFilter(), "the chain output is covered");
+        // x = 2: up 0.2, down 0.8, both fired, area 0.8·200·1.2 ≫ 2Δ: statically; x = 10: down an exact 0 at its
+        // point, only 'thin' at 1: area 1e-12 within the bound: the running path, then exact arithmetic (a lone thin
+        // triangle's centre is its peak, 1e-12); x = 1e-300: up's degree 1e-301 is not above its bound (running and
+        // static): exact; x = 5: both at 0.5: statically
+        assertEquals(2, fb.staticEvaluations());
+        assertEquals(2, fb.fallbacks());
+        assertEquals(plain.fallbacks(), fb.fallbacks());
+        fb.setInputs(10);
+        fb.evaluate();
+        assertEquals(1e-12, fb.output(0), 1e-24);
+    }
+
+    /**
      * Random programs the static filter covers (1-3 inputs of 2-4 piece-wise linear terms with points off and on
      * binary fractions, steep and wide pieces, large abscissas; MIN, PROD or MAX of 1-3 terms, IS NOT, weights; 2-4
      * singletons, CoGS), 40 steps each at random inputs, on points, next to points, and on multiples of 1/1024. After
@@ -196,14 +253,32 @@ class StaticFilterTest {
      */
     @Test
     void staticBoundsDominateRunningBoundsOnRandomPrograms() throws Exception {
+        randomPrograms(24_5_0L, StaticFilterTest::program);
+    }
+
+    /**
+     * The same on random programs whose output has point terms in a chain (TermChain: triangles, trapezoids and
+     * shoulders of a fuzzy partition, on a decimal grid and off it; with RANGE or without), CoG, MIN or PROD
+     * activation, MAX accumulation: the outputs the filter computes by the chain construction.
+     */
+    @Test
+    void chainOutputsOnRandomPrograms() throws Exception {
+        randomPrograms(24_7_0L, StaticFilterTest::chainProgram);
+    }
+
+    interface Generator {
+        String program(Random rnd, List<double[]> points);
+    }
+
+    private static void randomPrograms(long seed, Generator generator) throws Exception {
         int programs = 0;
         long decided = 0;
         long steps = 0;
         long fallbacks = 0;
         for (int n = 0; n < 400; n++) {
-            Random rnd = new Random(24_5_0L + n);
+            Random rnd = new Random(seed + n);
             List<double[]> points = new ArrayList<>();
-            String text = program(rnd, points);
+            String text = generator.program(rnd, points);
             LoadedProgram p = load(text);
             FunctionBlockInstance gen = p.newCompiledInstance(null);
             FunctionBlockInstance interpreted = p.newCompiledInstance(null);
@@ -251,8 +326,8 @@ class StaticFilterTest {
             steps += gen.evaluations();
             fallbacks = 0;
         }
-        System.out.println("static filter: " + programs + " programs, " + steps + " steps, " + decided
-                + " decided statically");
+        System.out.println("static filter (seed " + seed + "): " + programs + " programs, " + steps + " steps, "
+                + decided + " decided statically");
         assertTrue(decided > steps / 4 && decided < steps, decided + " of " + steps + " decided statically");
     }
 
@@ -362,6 +437,65 @@ class StaticFilterTest {
         }
         s.append("END_RULEBLOCK\nEND_FUNCTION_BLOCK\n");
         return s.toString();
+    }
+
+    /** A random program whose output y is CoG over a chain of point terms (see {@link #chainOutputsOnRandomPrograms}). */
+    private static String chainProgram(Random rnd, List<double[]> points) {
+        String text = program(rnd, points);
+        int from = text.indexOf("DEFUZZIFY y");
+        int to = text.indexOf("END_DEFUZZIFY");
+        int singletons = 0;
+        while (text.indexOf("TERM s" + singletons + " ", from) >= 0 && text.indexOf("TERM s" + singletons + " ", from) < to) {
+            singletons++;
+        }
+        StringBuilder d = new StringBuilder("DEFUZZIFY y\n");
+        boolean grid = rnd.nextBoolean();
+        // without RANGE the checks want every term 0 at its outer points (FCL-C025): shoulders only with one
+        boolean range = rnd.nextInt(4) != 0;
+        double at = grid ? rnd.nextInt(41) - 20 : rnd.nextDouble() * 40 - 20;
+        double first = at;
+        double end = Double.NEGATIVE_INFINITY;
+        for (int k = 0; k < singletons; k++) {
+            // a triangle or trapezoid rising from `at` to past the last term's end, then falling
+            double rise = grid ? 1 + rnd.nextInt(10) : 0.5 + rnd.nextDouble() * 10;
+            double x1 = Double.parseDouble(dec(Math.max(at + rise, end + (grid ? 1 : 0.25))));
+            double x2 = Double.parseDouble(dec(x1 + (rnd.nextBoolean() ? 0 : grid ? 1 + rnd.nextInt(4) : rnd.nextDouble() * 5)));
+            double x3 = Double.parseDouble(dec(x2 + (grid ? 1 + rnd.nextInt(10) : 0.5 + rnd.nextDouble() * 10)));
+            String peak = rnd.nextInt(4) == 0 ? "0.5" : "1";
+            boolean leftShoulder = range && k == 0 && rnd.nextInt(3) == 0;
+            boolean rightShoulder = range && k == singletons - 1 && rnd.nextInt(3) == 0;
+            d.append("    TERM s").append(k).append(" :=");
+            if (!leftShoulder) {
+                d.append(" (").append(dec(at)).append(", 0)");
+            }
+            d.append(" (").append(dec(x1)).append(", ").append(peak).append(')');
+            if (x2 > x1) {
+                d.append(" (").append(dec(x2)).append(", ").append(peak).append(')');
+            }
+            if (!rightShoulder) {
+                d.append(" (").append(dec(x3)).append(", 0)");
+            }
+            d.append(";\n");
+            end = x3;
+            // the next term starts on this one's fall (an overlap), at its end (touching) or beyond (a gap)
+            at = Double.parseDouble(dec(switch (rnd.nextInt(4)) {
+                case 0 -> x3;
+                case 1 -> x3 + (grid ? 1 : rnd.nextDouble());
+                default -> x2 + (x3 - x2) * (grid ? 0.5 : rnd.nextDouble());
+            }));
+        }
+        d.append("    METHOD : CoG;\n    DEFAULT := -7;\n");
+        if (range) {
+            d.append("    RANGE := (").append(dec(first - (rnd.nextBoolean() ? 0 : 3))).append(" .. ")
+                    .append(dec(end - (rnd.nextBoolean() && end - 2 > first + 1 ? 2 : 0))).append(");\n");
+        }
+        String act = rnd.nextInt(3) == 0 ? "PROD" : "MIN";
+        String out = text.substring(0, from) + d + text.substring(to);
+        return out.replace("    ACCU : MAX;\n", "    ACT : " + act + ";\n    ACCU : MAX;\n");
+    }
+
+    private static String dec(double v) {
+        return new BigDecimal(v).round(new MathContext(6)).stripTrailingZeros().toPlainString();
     }
 
     /** An input: random in the points' span, on a point, next to one, or a multiple of 1/1024. */
