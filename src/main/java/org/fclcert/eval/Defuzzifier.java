@@ -13,7 +13,7 @@ final class Defuzzifier {
     static double area(double[] px, double[] py, int np) {
         double area = 0;
         for (int j = 0; j + 1 < np; j++) {
-            area += (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+            area += pieceArea(px[j], py[j], px[j + 1], py[j + 1]);
         }
         return area;
     }
@@ -31,11 +31,8 @@ final class Defuzzifier {
         double area = 0;
         double moment = 0;
         for (int j = 0; j + 1 < np; j++) {
-            double h = px[j + 1] - px[j];
-            double y0 = py[j];
-            double y1 = py[j + 1];
-            area += h * (y0 + y1) * 0.5;
-            moment += h * (px[j] * (2 * y0 + y1) + px[j + 1] * (y0 + 2 * y1));
+            area += pieceArea(px[j], py[j], px[j + 1], py[j + 1]);
+            moment += pieceSixMoments(px[j], py[j], px[j + 1], py[j + 1]);
         }
         if (areaOut != null) {
             areaOut[0] = area;
@@ -49,6 +46,16 @@ final class Defuzzifier {
      */
     static double centreOfGravity(double area, double sixMoments) {
         return area > 0 ? sixMoments / 6.0 / area : Double.NaN;
+    }
+
+    /** The area of the linear piece from (u0, y0) to (u1, y1): a trapezoid. */
+    static double pieceArea(double u0, double y0, double u1, double y1) {
+        return (u1 - u0) * (y0 + y1) * 0.5;
+    }
+
+    /** Six times the first moment ∫u·μ of the linear piece from (u0, y0) to (u1, y1). */
+    static double pieceSixMoments(double u0, double y0, double u1, double y1) {
+        return (u1 - u0) * (u0 * (2 * y0 + y1) + u1 * (y0 + 2 * y1));
     }
 
     /**
@@ -69,7 +76,7 @@ final class Defuzzifier {
     private static double fromLeft(double[] px, double[] py, int np, double half, double tol) {
         double cum = 0;
         for (int j = 0; j + 1 < np; j++) {
-            double a = (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+            double a = pieceArea(px[j], py[j], px[j + 1], py[j + 1]);
             if (Math.abs(cum + a - half) <= tol) {
                 return px[j + 1];
             }
@@ -84,7 +91,7 @@ final class Defuzzifier {
     private static double fromRight(double[] px, double[] py, int np, double half, double tol) {
         double cum = 0;
         for (int j = np - 2; j >= 0; j--) {
-            double a = (px[j + 1] - px[j]) * (py[j] + py[j + 1]) * 0.5;
+            double a = pieceArea(px[j], py[j], px[j + 1], py[j + 1]);
             if (Math.abs(cum + a - half) <= tol) {
                 return px[j];
             }

@@ -189,9 +189,8 @@ final class SetBuilder {
             if (u0 == u && y0 == y) {
                 return;
             }
-            double h = u - u0;
-            chainArea += h * (y0 + y) * 0.5;
-            chainMoment += h * (u0 * (2 * y0 + y) + u * (y0 + 2 * y));
+            chainArea += Defuzzifier.pieceArea(u0, y0, u, y);
+            chainMoment += Defuzzifier.pieceSixMoments(u0, y0, u, y);
         }
         px[m] = u;
         py[m] = y;
