@@ -149,6 +149,19 @@ final class BlockPlan {
 
     private StaticFilter staticFilter;
     private boolean staticTried;
+    private TermChain[] chains;
+
+    /** Per output: the chain of its terms for CoG ({@link TermChain}), null for another method or layout; once. */
+    synchronized TermChain[] chains() {
+        if (chains == null) {
+            chains = new TermChain[outputs.length];
+            for (int i = 0; i < outputs.length; i++) {
+                chains[i] = outputs[i].method() == org.fclcert.model.DefuzzificationMethod.COG && !smoothOutputs[i]
+                        ? TermChain.of(outputs[i], shapes) : null;
+            }
+        }
+        return chains;
+    }
 
     /** The block's static filter (StaticFilter.build over the kernel's outputs), once; null when not covered. */
     synchronized StaticFilter staticFilter() {

@@ -261,11 +261,9 @@ public final class FunctionBlockInstance {
             }
         }
         this.smoothSets = new SmoothSet[plan.outputs.length];
-        this.chains = new TermChain[plan.outputs.length];
+        this.chains = plan.chains();
         for (int i = 0; i < smoothSets.length; i++) {
             smoothSets[i] = plan.smoothOutputs[i] ? new SmoothSet() : null;
-            chains[i] = plan.outputs[i].method() == DefuzzificationMethod.COG && !plan.smoothOutputs[i]
-                    ? TermChain.of(plan.outputs[i], plan.shapes) : null;
         }
     }
 

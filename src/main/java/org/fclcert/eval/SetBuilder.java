@@ -87,16 +87,16 @@ final class SetBuilder {
             qFrom = new int[2 * n + 1];
         }
         for (int j = 0; j < n; j++) {
-            int r = chain.rank[act.shape[j]];
+            int r = chain.rank(act.shape[j]);
             if (r < 0 || act.norm[j] != null || !(act.level[j] > 0) || !(act.weight[j] > 0)) {
                 return false;
             }
             int k = j;
-            while (k > 0 && chain.rank[act.shape[order[k - 1]]] > r) {
+            while (k > 0 && chain.rank(act.shape[order[k - 1]]) > r) {
                 order[k] = order[k - 1];
                 k--;
             }
-            if (k > 0 && chain.rank[act.shape[order[k - 1]]] == r) {
+            if (k > 0 && chain.rank(act.shape[order[k - 1]]) == r) {
                 return false;
             }
             order[k] = j;
@@ -108,7 +108,7 @@ final class SetBuilder {
             qFrom[k] = nq;
             int j = order[k];
             int s = act.shape[j];
-            contributionVertices(j, cx[s], cy[s], chain.first[s], chain.last[s]);
+            contributionVertices(j, cx[s], cy[s], chain.first(s), chain.last(s));
         }
         qFrom[n] = nq;
         if (px.length < nq + n + 2) {        // every staged vertex, a crossing per overlap, the two ends

@@ -836,7 +836,7 @@ final class StaticFilter {
                 return null;
             }
         }
-        return TermChain.of(o, plan.shapes);
+        return plan.chains()[i];
     }
 
     /**

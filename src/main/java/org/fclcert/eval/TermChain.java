@@ -14,16 +14,37 @@ import org.fclcert.model.AccumulationMethod;
  * evaluating every contribution at every breakpoint.
  */
 final class TermChain {
-    /** Per shape index (of the plan): its place in the chain, or −1 when it is not one of the output's terms. */
-    final int[] rank;
-    /** Per shape index: the first and last point of its support (the points around its positive run). */
-    final int[] first;
-    final int[] last;
+    /**
+     * Per shape index s of the plan, at s − base (the arrays span the output's shapes only, not the plan's): its place
+     * in the chain (−1 when it is not one of the output's terms), the first and last point of its support (the points
+     * around its positive run).
+     */
+    private final int base;
+    private final int[] rank;
+    private final int[] first;
+    private final int[] last;
 
-    private TermChain(int[] rank, int[] first, int[] last) {
+    private TermChain(int base, int[] rank, int[] first, int[] last) {
+        this.base = base;
         this.rank = rank;
         this.first = first;
         this.last = last;
+    }
+
+    /** Shape s's place in the chain, −1 when it is not one of the output's terms. */
+    int rank(int s) {
+        int i = s - base;
+        return i >= 0 && i < rank.length ? rank[i] : -1;
+    }
+
+    /** The first point of shape s's support (s one of the chain's terms). */
+    int first(int s) {
+        return first[s - base];
+    }
+
+    /** The last point of shape s's support (s one of the chain's terms). */
+    int last(int s) {
+        return last[s - base];
     }
 
     /** The chain of o's terms, or null when they do not form one (or o is not a MAX accumulation of point terms). */
@@ -37,14 +58,24 @@ final class TermChain {
         double[] end = new double[m];
         int[] rise = new int[m];
         int[] fall = new int[m];
-        int[] rank = new int[shapes.length];
-        int[] first = new int[shapes.length];
-        int[] last = new int[shapes.length];
+        int lowest = Integer.MAX_VALUE;
+        int highest = -1;
+        for (int s : ts) {
+            lowest = Math.min(lowest, s);
+            highest = Math.max(highest, s);
+        }
+        if (m == 0 || highest - lowest >= 4 * m) {
+            return null;            // the output's shapes far apart in the plan: not worth arrays over the span
+        }
+        int base = lowest;
+        int[] rank = new int[highest - lowest + 1];
+        int[] first = new int[rank.length];
+        int[] last = new int[rank.length];
         java.util.Arrays.fill(rank, -1);
         Integer[] order = new Integer[m];
         for (int t = 0; t < m; t++) {
             Shape s = shapes[ts[t]];
-            if (s.singleton || !s.constant || s.kind != null || s.computed != null || s.n < 2 || rank[ts[t]] != -1) {
+            if (s.singleton || !s.constant || s.kind != null || s.computed != null || s.n < 2 || rank[ts[t] - base] != -1) {
                 return null;
             }
             double[] x = s.sortedX;
@@ -72,11 +103,11 @@ final class TermChain {
             if (f < 0 || d > r) {
                 return null;            // never positive, or not unimodal
             }
-            rank[ts[t]] = 0;
-            first[ts[t]] = Math.max(0, f - 1);
-            last[ts[t]] = Math.min(n - 1, l + 1);
-            start[t] = y[0] > 0 ? Double.NEGATIVE_INFINITY : x[first[ts[t]]];
-            end[t] = y[n - 1] > 0 ? Double.POSITIVE_INFINITY : x[last[ts[t]]];
+            rank[ts[t] - base] = 0;
+            first[ts[t] - base] = Math.max(0, f - 1);
+            last[ts[t] - base] = Math.min(n - 1, l + 1);
+            start[t] = y[0] > 0 ? Double.NEGATIVE_INFINITY : x[first[ts[t] - base]];
+            end[t] = y[n - 1] > 0 ? Double.POSITIVE_INFINITY : x[last[ts[t] - base]];
             rise[t] = r;
             fall[t] = d;
             order[t] = t;
@@ -84,7 +115,7 @@ final class TermChain {
         java.util.Arrays.sort(order, (a, b) -> Double.compare(start[a], start[b]));
         for (int k = 0; k < m; k++) {
             int t = order[k];
-            rank[ts[t]] = k;
+            rank[ts[t] - base] = k;
             if (k > 0 && start[t] == Double.NEGATIVE_INFINITY || k < m - 1 && end[t] == Double.POSITIVE_INFINITY) {
                 return null;            // a shoulder inside the chain overlaps more than its neighbour
             }
@@ -101,6 +132,6 @@ final class TermChain {
                 }
             }
         }
-        return new TermChain(rank, first, last);
+        return new TermChain(base, rank, first, last);
     }
 }
