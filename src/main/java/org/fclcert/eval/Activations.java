@@ -73,7 +73,12 @@ final class Activations {
         if (norm[j] != null) {
             return weight[j] * Norms.and(norm[j], l, mu);
         }
-        return weight[j] * (prod[j] ? l * mu : Math.min(l, mu));
+        return activate(weight[j], l, prod[j], mu);
+    }
+
+    /** A.15 with Table 4's MIN or PROD: w · min(level, μ), or w · (level · μ). */
+    static double activate(double w, double level, boolean byProd, double mu) {
+        return w * (byProd ? level * mu : Math.min(level, mu));
     }
 
     /**

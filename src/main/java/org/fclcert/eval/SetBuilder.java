@@ -216,18 +216,20 @@ final class SetBuilder {
         }
         double[] vx = qx;
         double[] vy = qy;
-        // Activations.activate with its operations (the chain admits no other t-norm): w·min(level, μ) or w·(level·μ)
+        // the activation of a chain's contribution is Table 4's MIN or PROD (buildChain declines any other)
         double level = act.level[j];
         double w = act.weight[j];
         boolean prod = act.prod[j];
+        // the ends: at the support's end point its degree, where the range cuts the term Pwl.degree's interpolation
         vx[q] = a;
-        vy[q++] = a == x[f] ? w * (prod ? level * y[f] : Math.min(level, y[f])) : chainDegree(j, x, y, a);
+        vy[q++] = Activations.activate(w, level, prod, a == x[f] ? y[f] : Pwl.degree(x, y, n, a));
         for (int i = f; i <= l; i++) {
             if (i > f && !prod) {
                 double c = crossing(x[i - 1], y[i - 1], x[i], y[i], level);
                 if (c > a && c < b) {
+                    // a clip crossing: the term's degree there is the level, exactly
                     vx[q] = c;
-                    vy[q++] = w * Math.min(level, level);
+                    vy[q++] = Activations.activate(w, level, prod, level);
                 }
             }
             double xi = x[i];
@@ -235,39 +237,17 @@ final class SetBuilder {
             // a point above a MIN level lies on the clipped plateau, which its neighbours bound: not a vertex
             if (xi > a && xi < b && (prod || !(yi > level))) {
                 vx[q] = xi;
-                vy[q++] = w * (prod ? level * yi : Math.min(level, yi));
+                vy[q++] = Activations.activate(w, level, prod, yi);
             }
         }
         vx[q] = b;
-        vy[q++] = b == x[l] ? w * (prod ? level * y[l] : Math.min(level, y[l])) : chainDegree(j, x, y, b);
+        vy[q++] = Activations.activate(w, level, prod, b == x[l] ? y[l] : Pwl.degree(x, y, n, b));
         nq = q;
     }
 
     /** The range of the set {@link #buildChain} is building. */
     private double rangeLo;
     private double rangeHi;
-
-    /**
-     * Contribution j's activated degree at u as {@link #activatedValues} computes it at a place that is not one of
-     * its clip crossings (at those callers take the vertex's own degree, the level): at a point its degree, between
-     * points the interpolation.
-     */
-    private double chainDegree(int j, double[] x, double[] y, double u) {
-        int n = x.length;
-        double v;
-        if (u <= x[0]) {
-            v = y[0];
-        } else if (u >= x[n - 1]) {
-            v = y[n - 1];
-        } else {
-            int i = 1;
-            while (x[i] < u) {
-                i++;
-            }
-            v = x[i] == u ? y[i] : Pwl.interpolate(x[i - 1], y[i - 1], x[i], y[i], u);
-        }
-        return act.activate(j, v);
-    }
 
     /** The degree at the place {@link #overtake} returned. */
     private double overtakeDegree;
