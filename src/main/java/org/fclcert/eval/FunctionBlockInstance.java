@@ -1413,8 +1413,8 @@ public final class FunctionBlockInstance {
      */
     private void decideSet(OutputPlan o, double spread, double lo, double hi, double result) {
         double width = hi - lo;
-        double m = Math.max(Math.max(Math.abs(lo), Math.abs(hi)), width);
-        double rounding = 8 * (set.np + 2) * U * m;
+        double m = setScale(lo, hi);
+        double rounding = setRounding(set.np, m);
         switch (o.method()) {
             case COA -> {
                 methodBound = Double.POSITIVE_INFINITY;
@@ -1456,6 +1456,19 @@ public final class FunctionBlockInstance {
                 }
             }
         }
+    }
+
+    /** M of a point set's bounds over [lo, hi]: the largest of the interval's width and its ends' magnitudes. */
+    static double setScale(double lo, double hi) {
+        return Math.max(Math.max(Math.abs(lo), Math.abs(hi)), hi - lo);
+    }
+
+    /**
+     * The rounding term of a point set's bounds with np vertices, 8(np + 2)·u·M (docs/semantics.md, point 10; the
+     * static filter's CoG test uses it too).
+     */
+    static double setRounding(int np, double m) {
+        return 8 * (np + 2) * U * m;
     }
 
     /** Set by {@link #clipsAtVertices}: see there. */

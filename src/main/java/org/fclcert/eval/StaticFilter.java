@@ -88,7 +88,7 @@ final class StaticFilter {
     /**
      * Per output: its chain of terms when it is a point-set output the kernel leaves to the interpreter (CoG under MAX
      * over a {@link TermChain}, see {@link #chainOutput}), else null; its interval, and the two parts of CoG's area
-     * test (docs/semantics.md, point 10): the largest static bound of its contributions, and M (decideSet's m).
+     * test (docs/semantics.md, point 10): the largest static bound of its contributions, and M (decideSet's).
      */
     private final TermChain[] chainOf;
     private final double[] chainLo;
@@ -290,8 +290,7 @@ final class StaticFilter {
                 }
                 chainLo[i] = lo;
                 chainHi[i] = hi;
-                // decideSet's m, by its expression (its rounding term 8(np + 2)·u·m depends on the step's vertices)
-                chainM[i] = Math.max(Math.max(Math.abs(lo), Math.abs(hi)), hi - lo);
+                chainM[i] = FunctionBlockInstance.setScale(lo, hi);
             }
             double sum = 0;
             for (int t = 0; t < n; t++) {
@@ -955,16 +954,13 @@ final class StaticFilter {
             return false;
         }
         double c = set.chainCentreOfGravity(area);
-        double delta = chainSpread[i] * (hi - lo) + 8 * (set.np + 2) * U * chainM[i];
+        double delta = chainSpread[i] * (hi - lo) + FunctionBlockInstance.setRounding(set.np, chainM[i]);
         if (!(area[0] > 2 * delta) || !(c >= outputMin[i] && c <= outputMax[i])) {
             return false;
         }
         out[i] = c;
         return true;
     }
-
-    /** The unit roundoff, as FunctionBlockInstance's. */
-    private static final double U = 0x1.0p-53;
 
     /**
      * Whether rule r's degree, 0 here, has running bound 0: MIN or PROD give an exact 0 (bound 0) when one operand is
