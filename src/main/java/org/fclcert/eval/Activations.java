@@ -27,11 +27,16 @@ final class Activations {
 
     /** Adds the activated set w · ACT(level, μ_shape); callers skip contributions with w · level = 0. */
     void add(int shapeIndex, double activationLevel, double ruleWeight, boolean byProd) {
-        add(shapeIndex, activationLevel, ruleWeight, byProd ? ActivationMethod.PROD : ActivationMethod.MIN);
+        add(shapeIndex, activationLevel, ruleWeight, byProd, null);
     }
 
     /** Adds the activated set w · T(level, μ_shape), T the activation's t-norm. */
     void add(int shapeIndex, double activationLevel, double ruleWeight, ActivationMethod activation) {
+        add(shapeIndex, activationLevel, ruleWeight, activation == ActivationMethod.PROD,
+                activation.standard() ? null : activation.tNorm());
+    }
+
+    private void add(int shapeIndex, double activationLevel, double ruleWeight, boolean byProd, AndAlgorithm tNorm) {
         if (n == shape.length) {
             int c = 2 * n;
             shape = Arrays.copyOf(shape, c);
@@ -43,8 +48,8 @@ final class Activations {
         shape[n] = shapeIndex;
         level[n] = activationLevel;
         weight[n] = ruleWeight;
-        prod[n] = activation == ActivationMethod.PROD;
-        norm[n] = activation.standard() ? null : activation.tNorm();
+        prod[n] = byProd;
+        norm[n] = tNorm;
         n++;
     }
 

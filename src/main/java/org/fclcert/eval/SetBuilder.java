@@ -57,10 +57,19 @@ final class SetBuilder {
      * or weight not above 0): the caller then builds with {@link #build}.
      */
     boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy) {
+        return buildChain(chain, lo, hi, cx, cy, false);
+    }
+
+    /**
+     * {@link #buildChain(TermChain, double, double, double[][], double[][])}; {@code inOrder} when the caller added
+     * the contributions in the chain's order, at most one per term, each MIN or PROD with level and weight above 0
+     * (the static filter's chain outputs, whose terms have one rule each): then they are not sorted nor checked.
+     */
+    boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy, boolean inOrder) {
         np = 0;
         chainArea = 0;      // an empty set has none (not the sums of an earlier step)
         chainMoment = 0;
-        boolean built = chainVertices(chain, lo, hi, cx, cy);
+        boolean built = chainVertices(chain, lo, hi, cx, cy, inOrder);
         if (!built) {
             np = 0;
         }
@@ -77,7 +86,8 @@ final class SetBuilder {
     private double[] qy = new double[32];
     private int nq;
 
-    private boolean chainVertices(TermChain chain, double lo, double hi, double[][] cx, double[][] cy) {
+    private boolean chainVertices(TermChain chain, double lo, double hi, double[][] cx, double[][] cy,
+            boolean inOrder) {
         int n = act.n;
         if (n == 0 || !(lo < hi)) {
             return true;
@@ -86,7 +96,7 @@ final class SetBuilder {
             order = new int[2 * n];
             qFrom = new int[2 * n + 1];
         }
-        for (int j = 0; j < n; j++) {
+        for (int j = 0; j < n && !inOrder; j++) {
             int r = chain.rank(act.shape[j]);
             if (r < 0 || act.norm[j] != null || !(act.level[j] > 0) || !(act.weight[j] > 0)) {
                 return false;
@@ -106,7 +116,7 @@ final class SetBuilder {
         rangeHi = hi;
         for (int k = 0; k < n; k++) {
             qFrom[k] = nq;
-            int j = order[k];
+            int j = inOrder ? k : order[k];
             int s = act.shape[j];
             contributionVertices(j, cx[s], cy[s], chain.first(s), chain.last(s));
         }

@@ -98,6 +98,13 @@ final class StaticFilter {
     /** Per contribution (in output order): its term's shape and activation, for the chain outputs. */
     private final int[] contributionShape;
     private final org.fclcert.model.ActivationMethod[] contributionActivation;
+    private final boolean[] contributionProd;
+    /**
+     * Per chain output: its contributions are stored in the chain's order, one per term
+     * ({@link #contributionPlaces}), so that {@link #chainOutput} adds them without merging and
+     * {@link SetBuilder#buildChain} takes them in that order.
+     */
+    private final boolean[] chainInOrder;
     /** Per contribution (in output order): its index in the plan (of contributionBound). */
     private final int[] contributionIndex;
     /** Per shape of the plan: its points (constant for every shape of a chain output). */
@@ -112,6 +119,12 @@ final class StaticFilter {
     /** The term and rule degrees of {@link #step} written out for one plan, into arrays (for blocks with chains). */
     interface Front {
         void front(double[] values, double[] td, double[] rd);
+
+        /**
+         * Chain output i's contributions that fired, into {@code act} (cleared), with {@link #chainOutput}'s tests
+         * on them written out; false as soon as one test fails.
+         */
+        boolean collect(int i, double[] values, double[] td, double[] rd, Activations act);
     }
 
     /** {@link #step} written out for one plan: the same operations on the same operands, its numbers as constants. */
@@ -236,7 +249,9 @@ final class StaticFilter {
             shapeY[s] = plan.shapes[s].sortedY;
         }
         contributionActivation = new org.fclcert.model.ActivationMethod[nc];
+        contributionProd = new boolean[nc];
         chainOf = chains;
+        chainInOrder = new boolean[no];
         chainLo = new double[no];
         chainHi = new double[no];
         chainSpread = new double[no];
@@ -254,9 +269,11 @@ final class StaticFilter {
                 singletonValue[i][t] = plan.shapes[o.termShapes()[t]].sortedX[0];
             }
             int[] cs = o.contributions();
+            int[] place = contributionPlaces(o, chains[i]);
+            chainInOrder[i] = chains[i] != null && place != null;
             for (int k = 0; k < cs.length; k++) {
                 int c = cs[k];
-                int at = outFrom[i] + k;
+                int at = outFrom[i] + (place != null ? place[k] : k);
                 int r = contributionRules[c];
                 double w = weights[c];
                 contributionRule[at] = r;
@@ -274,6 +291,7 @@ final class StaticFilter {
                 contributionShape[at] = o.termShapes()[t];
                 contributionIndex[at] = c;
                 contributionActivation[at] = o.contributionActivation()[k];
+                contributionProd[at] = o.contributionActivation()[k] == org.fclcert.model.ActivationMethod.PROD;
                 chainSpread[i] = Math.max(chainSpread[i], e);
             }
             if (chains[i] != null) {
@@ -300,6 +318,35 @@ final class StaticFilter {
         }
         compiled = anyChain ? null : compile();
         front = anyChain ? compileFront() : null;
+    }
+
+    /**
+     * For a chain output whose terms are concluded by one contribution each: each contribution's place among the
+     * output's, in the chain's order of their terms; else null (the contributions keep the rules' order). The order
+     * changes no double: MAX merges nothing here, and the chain construction sorts by that order anyway.
+     */
+    private static int[] contributionPlaces(OutputPlan o, TermChain chain) {
+        if (chain == null) {
+            return null;
+        }
+        int[] cs = o.contributions();
+        int[] rank = new int[cs.length];
+        boolean[] taken = new boolean[o.termShapes().length];
+        for (int k = 0; k < cs.length; k++) {
+            int t = o.contributionTerm()[k];
+            if (taken[t]) {
+                return null;
+            }
+            taken[t] = true;
+            rank[k] = chain.rank(o.termShapes()[t]);
+        }
+        int[] place = new int[cs.length];
+        for (int k = 0; k < cs.length; k++) {
+            for (int q = 0; q < cs.length; q++) {
+                place[k] += rank[q] < rank[k] ? 1 : 0;
+            }
+        }
+        return place;
     }
 
     // ------------------------------------------------------------------------------------------ generated step
@@ -571,7 +618,142 @@ final class StaticFilter {
         mv.visitInsn(RETURN);
         mv.visitMaxs(0, 0);
         mv.visitEnd();
+        collect(cw);
         return (Front) KernelCompiler.instance(cw, "the static filter's front");
+    }
+
+    /**
+     * {@link Front#collect}: per chain output its contributions in their stored order, each with its rule, weight,
+     * shape, activation and static bound as constants. A contribution fired when w·d &gt; 0: it then needs w·d above its
+     * static bound (else false: the running path decides it) and is added to the activations (merged under MAX unless
+     * the output's terms have one contribution each, {@link #chainInOrder}). One that did not fire needs w·d = 0 with a
+     * weight 0 or an exact 0 rule degree (else false): a degree 0 has running bound 0 when MIN or PROD has one operand
+     * that is an exact 0 (Norms.minError, productError), a single term is its own, MAX needs all of its operands to be
+     * exact 0s. A term's degree 0 is exact when it was read at or outside its points or on a flat piece (the bound of a
+     * degree 0 point, 0; FunctionBlockInstance.degree), which an input outside the hull of its sloped pieces
+     * (slopedFrom, slopedTo) guarantees, and a singleton's always is; a NOT is not counted (conservatively: the running
+     * path decides those).
+     */
+    private void collect(ClassWriter cw) {
+        MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "collect", "(I[D[D[DLorg/fclcert/eval/Activations;)Z", null,
+                null);
+        mv.visitCode();
+        // locals: this, i, values, td, rd, act; then d, dw
+        int d = 6;
+        int dw = 8;
+        Label undecided = new Label();
+        Label[] outputs = new Label[outputSlot.length];
+        for (int i = 0; i < outputs.length; i++) {
+            outputs[i] = chainOf[i] != null ? new Label() : undecided;
+        }
+        mv.visitVarInsn(ILOAD, 1);
+        mv.visitTableSwitchInsn(0, outputs.length - 1, undecided, outputs);
+        for (int i = 0; i < outputs.length; i++) {
+            if (chainOf[i] == null) {
+                continue;
+            }
+            mv.visitLabel(outputs[i]);
+            for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
+                int r = contributionRule[k];
+                double w = contributionWeight[k];
+                Label notFired = new Label();
+                Label next = new Label();
+                mv.visitVarInsn(ALOAD, 4);
+                KernelCompiler.push(mv, r);
+                mv.visitInsn(DALOAD);
+                mv.visitVarInsn(DSTORE, d);
+                mv.visitVarInsn(DLOAD, d);
+                mv.visitLdcInsn(w);
+                mv.visitInsn(DMUL);
+                mv.visitVarInsn(DSTORE, dw);
+                // w·d > 0, else notFired (NaN too)
+                mv.visitVarInsn(DLOAD, dw);
+                mv.visitInsn(DCONST_0);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFLE, notFired);
+                // !(w·d > bound): undecided
+                mv.visitVarInsn(DLOAD, dw);
+                mv.visitLdcInsn(contributionBound[contributionIndex[k]]);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFLE, undecided);
+                mv.visitVarInsn(ALOAD, 5);
+                KernelCompiler.push(mv, contributionShape[k]);
+                mv.visitVarInsn(DLOAD, d);
+                mv.visitLdcInsn(w);
+                if (chainInOrder[i]) {
+                    mv.visitInsn(contributionProd[k] ? ICONST_1 : ICONST_0);
+                    mv.visitMethodInsn(INVOKEVIRTUAL, "org/fclcert/eval/Activations", "add", "(IDDZ)V", false);
+                } else {
+                    mv.visitFieldInsn(GETSTATIC, "org/fclcert/model/ActivationMethod",
+                            contributionActivation[k].name(), "Lorg/fclcert/model/ActivationMethod;");
+                    mv.visitMethodInsn(INVOKEVIRTUAL, "org/fclcert/eval/Activations", "addUnderMax",
+                            "(IDDLorg/fclcert/model/ActivationMethod;)V", false);
+                }
+                mv.visitJumpInsn(GOTO, next);
+                mv.visitLabel(notFired);
+                // !(w·d == 0): undecided (NaN too)
+                mv.visitVarInsn(DLOAD, dw);
+                mv.visitInsn(DCONST_0);
+                mv.visitInsn(DCMPL);
+                mv.visitJumpInsn(IFNE, undecided);
+                if (w != 0) {
+                    exactZero(mv, r, next, undecided);
+                }
+                mv.visitLabel(next);
+            }
+            mv.visitInsn(ICONST_1);
+            mv.visitInsn(IRETURN);
+        }
+        mv.visitLabel(undecided);
+        mv.visitInsn(ICONST_0);
+        mv.visitInsn(IRETURN);
+        mv.visitMaxs(0, 0);
+        mv.visitEnd();
+    }
+
+    /** Jumps to {@code exact} when rule r's degree (0 here) is an exact 0 ({@link #collect}), else to {@code not}. */
+    private void exactZero(MethodVisitor mv, int r, Label exact, Label not) {
+        boolean all = ruleOp[r] == MAX;
+        for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
+            if (ruleNot[j]) {
+                if (all) {
+                    mv.visitJumpInsn(GOTO, not);
+                    return;
+                }
+                continue;
+            }
+            int t = ruleTerm[j];
+            // the term's degree 0 is exact: td[t] == 0 and !(u > slopedFrom && u < slopedTo)
+            Label inexact = all ? not : new Label();
+            mv.visitVarInsn(ALOAD, 3);
+            KernelCompiler.push(mv, t);
+            mv.visitInsn(DALOAD);
+            mv.visitInsn(DCONST_0);
+            mv.visitInsn(DCMPL);
+            mv.visitJumpInsn(IFNE, inexact);
+            Label outside = all ? new Label() : exact;
+            mv.visitVarInsn(ALOAD, 2);
+            KernelCompiler.push(mv, termSlot[t]);
+            mv.visitInsn(DALOAD);
+            mv.visitInsn(DUP2);
+            mv.visitLdcInsn(slopedFrom[t]);
+            mv.visitInsn(DCMPL);
+            Label above = new Label();
+            mv.visitJumpInsn(IFGT, above);
+            mv.visitInsn(POP2);
+            mv.visitJumpInsn(GOTO, outside);
+            mv.visitLabel(above);
+            mv.visitLdcInsn(slopedTo[t]);
+            mv.visitInsn(DCMPG);
+            mv.visitJumpInsn(IFGE, outside);
+            mv.visitJumpInsn(GOTO, inexact);
+            if (all) {
+                mv.visitLabel(outside);
+            } else {
+                mv.visitLabel(inexact);
+            }
+        }
+        mv.visitJumpInsn(GOTO, all ? exact : not);
     }
 
     /** Pwl.degree (or a singleton's 1/0) of term t at local {@code u}, into local {@code into}. */
@@ -854,7 +1036,7 @@ final class StaticFilter {
         }
         for (int i = 0; i < outputSlot.length; i++) {
             if (chainOf[i] != null) {
-                if (!chainOutput(i, values, td, rd, out, set, area)) {
+                if (code == null || !chainOutput(i, values, td, rd, out, code, set, area)) {
                     return false;
                 }
                 continue;
@@ -919,7 +1101,8 @@ final class StaticFilter {
      * chain's construction, {@link Defuzzifier#centreOfGravity}), and its decisions with the static bounds:
      * <ul>
      * <li>whether a contribution fired (collectOne): w·d above its static bound, or an exact 0 — a weight 0, or a rule
-     * degree 0 that {@link #exactZero} shows has running bound 0;</li>
+     * degree 0 that has running bound 0 — in the generated front ({@link #collect}; a block without one is left to
+     * the running path);</li>
      * <li>nothing fired (DEFAULT) and a step the chain construction declines are left to the running path;</li>
      * <li>CoG's area test (decideSet): the area above 2Δ with Δ = S·W + 8(n + 2)·u·M, S the largest static bound of a
      * contribution, in decideSet's expression, which its running Δ (the largest running bound for S) does not
@@ -927,30 +1110,19 @@ final class StaticFilter {
      * <li>a value that does not fit the variable's type, or NaN, is left to the running path (which reports it).</li>
      * </ul>
      */
-    private boolean chainOutput(int i, double[] values, double[] td, double[] rd, double[] out, SetBuilder set,
-            double[] area) {
+    private boolean chainOutput(int i, double[] values, double[] td, double[] rd, double[] out, Front code,
+            SetBuilder set, double[] area) {
         Activations act = set.act;
         act.clear();
-        for (int k = outFrom[i]; k < outFrom[i + 1]; k++) {
-            int r = contributionRule[k];
-            double d = rd[r];
-            double w = contributionWeight[k];
-            double dw = d * w;
-            if (dw > 0) {
-                if (!(dw > contributionBound[contributionIndex[k]])) {
-                    return false;
-                }
-                act.addUnderMax(contributionShape[k], d, w, contributionActivation[k]);
-            } else if (!(dw == 0 && (w == 0 || exactZero(r, values, td)))) {
-                return false;
-            }
+        if (!code.collect(i, values, td, rd, act)) {
+            return false;
         }
         if (act.n == 0) {
             return false;
         }
         double lo = chainLo[i];
         double hi = chainHi[i];
-        if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY)) {
+        if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY, chainInOrder[i])) {
             return false;
         }
         double c = set.chainCentreOfGravity(area);
@@ -962,26 +1134,4 @@ final class StaticFilter {
         return true;
     }
 
-    /**
-     * Whether rule r's degree, 0 here, has running bound 0: MIN or PROD give an exact 0 (bound 0) when one operand is
-     * one (Norms.minError, productError), a single term is its own, MAX needs all of its operands exact 0s. A term's
-     * degree 0 is exact when it was read at or outside its points or on a flat piece (the bound of a degree 0 point,
-     * 0; FunctionBlockInstance.degree), which an input outside the hull of its sloped pieces guarantees, and a
-     * singleton's always is; a NOT is not counted (conservatively: the running path decides those).
-     */
-    private boolean exactZero(int r, double[] values, double[] td) {
-        boolean all = ruleOp[r] == MAX;
-        for (int j = ruleFrom[r]; j < ruleFrom[r + 1]; j++) {
-            int t = ruleTerm[j];
-            double u = values[termSlot[t]];
-            boolean exact = !ruleNot[j] && td[t] == 0 && !(u > slopedFrom[t] && u < slopedTo[t]);
-            if (exact && !all) {
-                return true;
-            }
-            if (!exact && all) {
-                return false;
-            }
-        }
-        return all;
-    }
 }
