@@ -448,7 +448,7 @@ class StaticFilterTest {
         while (text.indexOf("TERM s" + singletons + " ", from) >= 0 && text.indexOf("TERM s" + singletons + " ", from) < to) {
             singletons++;
         }
-        StringBuilder d = new StringBuilder("DEFUZZIFY y\n");
+        List<String> terms = new ArrayList<>();
         boolean grid = rnd.nextBoolean();
         // without RANGE the checks want every term 0 at its outer points (FCL-C025): shoulders only with one
         boolean range = rnd.nextInt(4) != 0;
@@ -464,6 +464,7 @@ class StaticFilterTest {
             String peak = rnd.nextInt(4) == 0 ? "0.5" : "1";
             boolean leftShoulder = range && k == 0 && rnd.nextInt(3) == 0;
             boolean rightShoulder = range && k == singletons - 1 && rnd.nextInt(3) == 0;
+            StringBuilder d = new StringBuilder();
             d.append("    TERM s").append(k).append(" :=");
             if (!leftShoulder) {
                 d.append(" (").append(dec(at)).append(", 0)");
@@ -476,6 +477,7 @@ class StaticFilterTest {
                 d.append(" (").append(dec(x3)).append(", 0)");
             }
             d.append(";\n");
+            terms.add(d.toString());
             end = x3;
             // the next term starts on this one's fall (an overlap), at its end (touching) or beyond (a gap)
             at = Double.parseDouble(dec(switch (rnd.nextInt(4)) {
@@ -484,6 +486,11 @@ class StaticFilterTest {
                 default -> x2 + (x3 - x2) * (grid ? 0.5 : rnd.nextDouble());
             }));
         }
+        // declared in any order: the chain's order (and the static filter's stored order) is the terms' places,
+        // not their declaration's or the rules'
+        java.util.Collections.shuffle(terms, rnd);
+        StringBuilder d = new StringBuilder("DEFUZZIFY y\n");
+        terms.forEach(d::append);
         d.append("    METHOD : CoG;\n    DEFAULT := -7;\n");
         if (range) {
             d.append("    RANGE := (").append(dec(first - (rnd.nextBoolean() ? 0 : 3))).append(" .. ")
