@@ -1390,7 +1390,7 @@ public final class FunctionBlockInstance {
             }
             trace.add(new Trace.AccumulatedSet(o.variable(), false, pts));
         }
-        double result = chained ? set.chainCentreOfGravity(setArea) : defuzzifySet(o.method());
+        double result = defuzzifySet(o.method());
         if (set.act.n > 0) {
             decideSet(o, spread, lo, hi, result);
         }

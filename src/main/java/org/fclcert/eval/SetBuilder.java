@@ -67,8 +67,6 @@ final class SetBuilder {
      */
     boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy, boolean inOrder) {
         np = 0;
-        chainArea = 0;      // an empty set has none (not the sums of an earlier step)
-        chainMoment = 0;
         boolean built = chainVertices(chain, lo, hi, cx, cy, inOrder);
         if (!built) {
             np = 0;
@@ -175,32 +173,13 @@ final class SetBuilder {
     }
 
     /**
-     * ∫μ and six times ∫u·μ of the set {@link #buildChain} built, summed as it emitted its vertices by
-     * {@link Defuzzifier#centreOfGravity}'s operations in its order: the same doubles as that method on the vertices.
-     */
-    private double chainArea;
-    private double chainMoment;
-
-    /** CoG of the set {@link #buildChain} built (as Defuzzifier.centreOfGravity on its vertices); ∫μ into area[0]. */
-    double chainCentreOfGravity(double[] area) {
-        area[0] = chainArea;
-        return Defuzzifier.centreOfGravity(chainArea, chainMoment);
-    }
-
-    /**
      * Appends a vertex of the chain's set (at most one per staged vertex, the crossings and the two ends: the arrays
-     * were sized for them), and its piece to the sums; a vertex equal to the last adds nothing.
+     * were sized for them); a vertex equal to the last adds nothing.
      */
     private void put(double u, double y) {
         int m = np;
-        if (m > 0) {
-            double u0 = px[m - 1];
-            double y0 = py[m - 1];
-            if (u0 == u && y0 == y) {
-                return;
-            }
-            chainArea += Defuzzifier.pieceArea(u0, y0, u, y);
-            chainMoment += Defuzzifier.pieceSixMoments(u0, y0, u, y);
+        if (m > 0 && px[m - 1] == u && py[m - 1] == y) {
+            return;
         }
         px[m] = u;
         py[m] = y;

@@ -1125,7 +1125,7 @@ final class StaticFilter {
         if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY, chainInOrder[i])) {
             return false;
         }
-        double c = set.chainCentreOfGravity(area);
+        double c = Defuzzifier.centreOfGravity(set.px, set.py, set.np, area);
         double delta = chainSpread[i] * (hi - lo) + FunctionBlockInstance.setRounding(set.np, chainM[i]);
         if (!(area[0] > 2 * delta) || !(c >= outputMin[i] && c <= outputMax[i])) {
             return false;
