@@ -212,22 +212,30 @@ final class SetBuilder {
         // the ends: at the support's end point its degree, where the range cuts the term Pwl.degree's interpolation
         vx[q] = a;
         vy[q++] = Activations.activate(w, level, prod, a == x[f] ? y[f] : Pwl.degree(x, y, n, a));
-        for (int i = f; i <= l; i++) {
-            if (i > f && !prod) {
-                double c = crossing(x[i - 1], y[i - 1], x[i], y[i], level);
+        double x0 = x[f];
+        double y0 = y[f];
+        // a point above a MIN level lies on the clipped plateau, which its neighbours bound: not a vertex
+        if (x0 > a && x0 < b && (prod || !(y0 > level))) {
+            vx[q] = x0;
+            vy[q++] = Activations.activate(w, level, prod, y0);
+        }
+        for (int i = f + 1; i <= l; i++) {
+            double x1 = x[i];
+            double y1 = y[i];
+            if (!prod) {
+                double c = crossing(x0, y0, x1, y1, level);
                 if (c > a && c < b) {
                     // a clip crossing: the term's degree there is the level, exactly
                     vx[q] = c;
-                    vy[q++] = Activations.activate(w, level, prod, level);
+                    vy[q++] = Activations.activate(w, level, false, level);
                 }
             }
-            double xi = x[i];
-            double yi = y[i];
-            // a point above a MIN level lies on the clipped plateau, which its neighbours bound: not a vertex
-            if (xi > a && xi < b && (prod || !(yi > level))) {
-                vx[q] = xi;
-                vy[q++] = Activations.activate(w, level, prod, yi);
+            if (x1 > a && x1 < b && (prod || !(y1 > level))) {
+                vx[q] = x1;
+                vy[q++] = Activations.activate(w, level, prod, y1);
             }
+            x0 = x1;
+            y0 = y1;
         }
         vx[q] = b;
         vy[q++] = Activations.activate(w, level, prod, b == x[l] ? y[l] : Pwl.degree(x, y, n, b));
