@@ -57,17 +57,19 @@ final class SetBuilder {
      * or weight not above 0): the caller then builds with {@link #build}.
      */
     boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy) {
-        return buildChain(chain, lo, hi, cx, cy, false);
+        return buildChain(chain, lo, hi, cx, cy, false, null);
     }
 
     /**
      * {@link #buildChain(TermChain, double, double, double[][], double[][])}; {@code inOrder} when the caller added
      * the contributions in the chain's order, at most one per term, each MIN or PROD with level and weight above 0
      * (the static filter's chain outputs, whose terms have one rule each): then they are not sorted nor checked.
+     * {@code staging}, when not null, stages each contribution's vertices in place of {@link #contributionVertices}.
      */
-    boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy, boolean inOrder) {
+    boolean buildChain(TermChain chain, double lo, double hi, double[][] cx, double[][] cy, boolean inOrder,
+            Staging staging) {
         np = 0;
-        boolean built = chainVertices(chain, lo, hi, cx, cy, inOrder);
+        boolean built = chainVertices(chain, lo, hi, cx, cy, inOrder, staging);
         if (!built) {
             np = 0;
         }
@@ -84,8 +86,20 @@ final class SetBuilder {
     private double[] qy = new double[32];
     private int nq;
 
+    /**
+     * {@link #contributionVertices} written out for the terms of one plan's chains, the terms' points, the support's
+     * ends and the range's as constants (the static filter's generated code, {@code StaticFilter.stage}).
+     */
+    interface Staging {
+        /**
+         * The vertices of the contribution of shape s activated at (level, w, MIN or PROD) over the plan's interval for
+         * that output, into vx and vy from q on (room made by the caller); the new q, or −1 for a shape it does not know.
+         */
+        int stage(int s, double level, double w, boolean prod, double[] vx, double[] vy, int q);
+    }
+
     private boolean chainVertices(TermChain chain, double lo, double hi, double[][] cx, double[][] cy,
-            boolean inOrder) {
+            boolean inOrder, Staging staging) {
         int n = act.n;
         if (n == 0 || !(lo < hi)) {
             return true;
@@ -116,7 +130,14 @@ final class SetBuilder {
             qFrom[k] = nq;
             int j = inOrder ? k : order[k];
             int s = act.shape[j];
-            contributionVertices(j, cx[s], cy[s], chain.first(s), chain.last(s));
+            int f = chain.first(s);
+            int l = chain.last(s);
+            room(l - f);
+            if (staging == null) {
+                contributionVertices(j, cx[s], cy[s], f, l);
+            } else if ((nq = staging.stage(s, act.level[j], act.weight[j], act.prod[j], qx, qy, nq)) < 0) {
+                return false;
+            }
         }
         qFrom[n] = nq;
         if (px.length < nq + n + 2) {        // every staged vertex, a crossing per overlap, the two ends
@@ -192,17 +213,12 @@ final class SetBuilder {
      * its clip crossings inside it, each with its activated degree.
      */
     private void contributionVertices(int j, double[] x, double[] y, int f, int l) {
-        int n = x.length;
-        double a = y[0] > 0 ? rangeLo : Math.max(rangeLo, x[f]);
-        double b = y[n - 1] > 0 ? rangeHi : Math.min(rangeHi, x[l]);
+        double a = supportStart(x, y, f, rangeLo);
+        double b = supportEnd(x, y, l, rangeHi);
         if (!(a < b)) {
             return;
         }
         int q = nq;
-        if (qx.length < q + 2 * (l - f) + 4) {
-            qx = Arrays.copyOf(qx, 2 * (q + 2 * (l - f) + 4));
-            qy = Arrays.copyOf(qy, qx.length);
-        }
         double[] vx = qx;
         double[] vy = qy;
         // the activation of a chain's contribution is Table 4's MIN or PROD (buildChain declines any other)
@@ -211,7 +227,7 @@ final class SetBuilder {
         boolean prod = act.prod[j];
         // the ends: at the support's end point its degree, where the range cuts the term Pwl.degree's interpolation
         vx[q] = a;
-        vy[q++] = Activations.activate(w, level, prod, a == x[f] ? y[f] : Pwl.degree(x, y, n, a));
+        vy[q++] = Activations.activate(w, level, prod, degreeAt(x, y, f, a));
         double x0 = x[f];
         double y0 = y[f];
         // a point above a MIN level lies on the clipped plateau, which its neighbours bound: not a vertex
@@ -238,8 +254,34 @@ final class SetBuilder {
             y0 = y1;
         }
         vx[q] = b;
-        vy[q++] = Activations.activate(w, level, prod, b == x[l] ? y[l] : Pwl.degree(x, y, n, b));
+        vy[q++] = Activations.activate(w, level, prod, degreeAt(x, y, l, b));
         nq = q;
+    }
+
+    /** Room in qx, qy for one more contribution over points f to l: its points, crossings and two ends. */
+    private void room(int pieces) {
+        if (qx.length < nq + 2 * pieces + 4) {
+            qx = Arrays.copyOf(qx, 2 * (nq + 2 * pieces + 4));
+            qy = Arrays.copyOf(qy, qx.length);
+        }
+    }
+
+    /**
+     * Where a contribution's vertices start over [lo, ...]: the range's start on a left shoulder (a term positive at
+     * its first point), else the later of it and the support's first point f.
+     */
+    static double supportStart(double[] x, double[] y, int f, double lo) {
+        return y[0] > 0 ? lo : Math.max(lo, x[f]);
+    }
+
+    /** Where they end: the range's end on a right shoulder, else the earlier of it and the support's last point l. */
+    static double supportEnd(double[] x, double[] y, int l, double hi) {
+        return y[y.length - 1] > 0 ? hi : Math.min(hi, x[l]);
+    }
+
+    /** The term's degree at u, an end of its support's part: point i's own at that point, else Pwl.degree's. */
+    static double degreeAt(double[] x, double[] y, int i, double u) {
+        return u == x[i] ? y[i] : Pwl.degree(x, y, x.length, u);
     }
 
     /** The range of the set {@link #buildChain} is building. */

@@ -117,7 +117,7 @@ final class StaticFilter {
     final Front front;
 
     /** The term and rule degrees of {@link #step} written out for one plan, into arrays (for blocks with chains). */
-    interface Front {
+    interface Front extends SetBuilder.Staging {
         void front(double[] values, double[] td, double[] rd);
 
         /**
@@ -619,7 +619,153 @@ final class StaticFilter {
         mv.visitMaxs(0, 0);
         mv.visitEnd();
         collect(cw);
+        staged = stage(cw);
         return (Front) KernelCompiler.instance(cw, "the static filter's front");
+    }
+
+    /**
+     * Whether the front's {@link SetBuilder.Staging#stage} is written out for every term of the chain outputs (else it
+     * returns −1 and {@link SetBuilder#buildChain} is given no staging: its own {@code contributionVertices}).
+     */
+    private boolean staged;
+
+    /** Whether the chain outputs' contributions are staged by generated code ({@link #stage}; for the tests). */
+    boolean staged() {
+        return staged;
+    }
+
+    /**
+     * {@link SetBuilder.Staging#stage}: per shape of a chain output (a switch on it), {@code contributionVertices}'
+     * vertices in its order with the term's points, the support's ends ({@link SetBuilder#supportStart},
+     * {@link SetBuilder#supportEnd}), their degrees ({@link SetBuilder#degreeAt}) and the range's ends as constants:
+     * which points lie inside the part is decided here, once; the clip crossings ({@link SetBuilder#crossing}), the
+     * plateau test and the activations ({@link Activations#activate}) at run time, by the same methods. A term over
+     * {@link #BUDGET} in all is left to {@code contributionVertices} (false).
+     */
+    private boolean stage(ClassWriter cw) {
+        int cost = 0;
+        // shape -> its output (BlockCompiler gives every term a shape of its own: one output each)
+        java.util.TreeMap<Integer, Integer> shapes = new java.util.TreeMap<>();
+        for (int i = 0; i < outputSlot.length; i++) {
+            for (int k = outFrom[i]; chainOf[i] != null && k < outFrom[i + 1]; k++) {
+                if (shapes.put(contributionShape[k], i) == null) {
+                    cost += 60 + 90 * shapeX[contributionShape[k]].length;
+                }
+            }
+        }
+        boolean all = cost <= BUDGET;
+        MethodVisitor mv = cw.visitMethod(ACC_PUBLIC, "stage", "(IDDZ[D[DI)I", null, null);
+        mv.visitCode();
+        // locals: this, s, level (2), w (4), prod, vx, vy, q; then c (10)
+        Label unknown = new Label();
+        int[] keys = shapes.keySet().stream().mapToInt(Integer::intValue).toArray();
+        Label[] cases = new Label[keys.length];
+        for (int k = 0; k < keys.length; k++) {
+            cases[k] = all ? new Label() : unknown;
+        }
+        mv.visitVarInsn(ILOAD, 1);
+        mv.visitLookupSwitchInsn(unknown, keys, cases);
+        for (int k = 0; all && k < keys.length; k++) {
+            mv.visitLabel(cases[k]);
+            int i = shapes.get(keys[k]);
+            stageTerm(mv, keys[k], chainOf[i], chainLo[i], chainHi[i]);
+            mv.visitVarInsn(ILOAD, 9);
+            mv.visitInsn(IRETURN);
+        }
+        mv.visitLabel(unknown);
+        mv.visitInsn(ICONST_M1);
+        mv.visitInsn(IRETURN);
+        mv.visitMaxs(0, 0);
+        mv.visitEnd();
+        return all;
+    }
+
+    /** {@link #stage} for shape s of {@code chain} over [lo, hi]: contributionVertices' steps, q in local 9. */
+    private void stageTerm(MethodVisitor mv, int s, TermChain chain, double lo, double hi) {
+        double[] x = shapeX[s];
+        double[] y = shapeY[s];
+        int f = chain.first(s);
+        int l = chain.last(s);
+        double a = SetBuilder.supportStart(x, y, f, lo);
+        double b = SetBuilder.supportEnd(x, y, l, hi);
+        if (!(a < b)) {
+            return;
+        }
+        stageVertex(mv, a, SetBuilder.degreeAt(x, y, f, a), false);
+        if (x[f] > a && x[f] < b) {
+            stagePoint(mv, x[f], y[f]);
+        }
+        for (int i = f + 1; i <= l; i++) {
+            // if (!prod) { c = crossing(x0, y0, x1, y1, level); if (c > a && c < b) stage c at the level }
+            Label skip = new Label();
+            mv.visitVarInsn(ILOAD, 6);
+            mv.visitJumpInsn(IFNE, skip);
+            mv.visitLdcInsn(x[i - 1]);
+            mv.visitLdcInsn(y[i - 1]);
+            mv.visitLdcInsn(x[i]);
+            mv.visitLdcInsn(y[i]);
+            mv.visitVarInsn(DLOAD, 2);
+            mv.visitMethodInsn(INVOKESTATIC, "org/fclcert/eval/SetBuilder", "crossing", "(DDDDD)D", false);
+            mv.visitVarInsn(DSTORE, 10);
+            mv.visitVarInsn(DLOAD, 10);
+            mv.visitLdcInsn(a);
+            mv.visitInsn(DCMPL);
+            mv.visitJumpInsn(IFLE, skip);
+            mv.visitVarInsn(DLOAD, 10);
+            mv.visitLdcInsn(b);
+            mv.visitInsn(DCMPG);
+            mv.visitJumpInsn(IFGE, skip);
+            stageVertex(mv, Double.NaN, Double.NaN, true);
+            mv.visitLabel(skip);
+            if (x[i] > a && x[i] < b) {
+                stagePoint(mv, x[i], y[i]);
+            }
+        }
+        stageVertex(mv, b, SetBuilder.degreeAt(x, y, l, b), false);
+    }
+
+    /** A point (u, μ) of the term inside the part: staged when PROD or μ is not above the MIN level. */
+    private static void stagePoint(MethodVisitor mv, double u, double mu) {
+        Label skip = new Label();
+        Label in = new Label();
+        mv.visitVarInsn(ILOAD, 6);
+        mv.visitJumpInsn(IFNE, in);
+        mv.visitLdcInsn(mu);
+        mv.visitVarInsn(DLOAD, 2);
+        mv.visitInsn(DCMPL);
+        mv.visitJumpInsn(IFGT, skip);
+        mv.visitLabel(in);
+        stageVertex(mv, u, mu, false);
+        mv.visitLabel(skip);
+    }
+
+    /**
+     * vx[q] = u; vy[q] = Activations.activate(w, level, prod, μ); q++ — or, for a crossing, u from local 10 and
+     * activate(w, level, false, level).
+     */
+    private static void stageVertex(MethodVisitor mv, double u, double mu, boolean crossing) {
+        mv.visitVarInsn(ALOAD, 7);
+        mv.visitVarInsn(ILOAD, 9);
+        if (crossing) {
+            mv.visitVarInsn(DLOAD, 10);
+        } else {
+            mv.visitLdcInsn(u);
+        }
+        mv.visitInsn(DASTORE);
+        mv.visitVarInsn(ALOAD, 8);
+        mv.visitVarInsn(ILOAD, 9);
+        mv.visitVarInsn(DLOAD, 4);
+        mv.visitVarInsn(DLOAD, 2);
+        if (crossing) {
+            mv.visitInsn(ICONST_0);
+            mv.visitVarInsn(DLOAD, 2);
+        } else {
+            mv.visitVarInsn(ILOAD, 6);
+            mv.visitLdcInsn(mu);
+        }
+        mv.visitMethodInsn(INVOKESTATIC, "org/fclcert/eval/Activations", "activate", "(DDZD)D", false);
+        mv.visitInsn(DASTORE);
+        mv.visitIincInsn(9, 1);
     }
 
     /**
@@ -1122,7 +1268,7 @@ final class StaticFilter {
         }
         double lo = chainLo[i];
         double hi = chainHi[i];
-        if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY, chainInOrder[i])) {
+        if (!set.buildChain(chainOf[i], lo, hi, shapeX, shapeY, chainInOrder[i], staged ? code : null)) {
             return false;
         }
         double c = Defuzzifier.centreOfGravity(set.px, set.py, set.np, area);

@@ -1,6 +1,7 @@
 package org.fclcert.eval;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -240,6 +241,82 @@ class StaticFilterTest {
         fb.setInputs(10);
         fb.evaluate();
         assertEquals(1e-12, fb.output(0), 1e-24);
+    }
+
+    /**
+     * A chain output whose terms are too many points for the generated staging ({@code StaticFilter.stage}'s budget:
+     * nine terms of seven points): its steps are still decided statically, each contribution staged by
+     * {@code SetBuilder.contributionVertices}, bit for bit the interpreter's; and a small chain is staged by generated
+     * code.
+     */
+    @Test
+    void aChainOverTheStagingBudgetIsStagedByTheInterpreter() throws Exception {
+        StringBuilder in = new StringBuilder();
+        StringBuilder out = new StringBuilder();
+        StringBuilder rules = new StringBuilder();
+        for (int k = 0; k < 9; k++) {
+            in.append("    TERM t").append(k).append(" := (").append(k - 1).append(", 0) (").append(k).append(", 1) (")
+                    .append(k + 1).append(", 0);\n");
+            int u = 5 * k;
+            out.append("    TERM o").append(k).append(" := (").append(u).append(", 0) (").append(u + 1).append(", 0.2) (")
+                    .append(u + 2).append(", 0.6) (").append(u + 3).append(", 1) (").append(u + 4).append(", 0.6) (")
+                    .append(u + 5).append(", 0.2) (").append(u + 6).append(", 0);\n");
+            rules.append("    RULE ").append(k + 1).append(" : IF x IS t").append(k).append(" THEN y IS o").append(k)
+                    .append(";\n");
+        }
+        LoadedProgram p = load("FUNCTION_BLOCK c\nVAR_INPUT x : REAL; END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n"
+                + "FUZZIFY x\n" + in + "END_FUZZIFY\nDEFUZZIFY y\n" + out
+                + "    METHOD : CoG;\n    DEFAULT := -1;\n    RANGE := (0 .. 46);\nEND_DEFUZZIFY\n"
+                + "RULEBLOCK r\n    AND : MIN;\n    ACT : MIN;\n    ACCU : MAX;\n" + rules
+                + "END_RULEBLOCK\nEND_FUNCTION_BLOCK\n");
+        FunctionBlockInstance fb = p.newCompiledInstance(null);
+        FunctionBlockInstance plain = p.newInstance();
+        plain.interpretOnly();
+        double[] xs = {0.3, 1.7, 2.5, 3.25, 4.9, 6.1, 7.75, 0.5, 5.5};
+        for (double x : xs) {
+            fb.setInputs(x);
+            plain.setInputs(x);
+            fb.evaluate();
+            plain.evaluate();
+            assertEquals(Double.doubleToRawLongBits(plain.output(0)), Double.doubleToRawLongBits(fb.output(0)),
+                    "x = " + x);
+            assertEquals(plain.bound("y"), fb.bound("y"), "x = " + x);
+        }
+        assertNotNull(fb.staticFilter(), "the chain output is covered");
+        assertFalse(fb.staticFilter().staged(), "nine terms of seven points: over the staging budget");
+        assertEquals(xs.length, fb.staticEvaluations(), "every step decided statically");
+        // x = 0.5: t0 and t1 at 0.5; o0 and o1 clipped at 0.5 (plateaus 1.75..4.25 and 6.75..9.25), crossing at
+        // (5.5, 0.1): the set is symmetric about 5.5, its CoG 5.5
+        fb.setInputs(0.5);
+        fb.evaluate();
+        assertEquals(5.5, fb.output(0), 1e-12);
+        FunctionBlockInstance small = load("""
+                FUNCTION_BLOCK s
+                VAR_INPUT x : REAL; END_VAR
+                VAR_OUTPUT y : REAL; END_VAR
+                FUZZIFY x
+                    TERM lo := (0, 1) (10, 0);
+                    TERM hi := (0, 0) (10, 1);
+                END_FUZZIFY
+                DEFUZZIFY y
+                    TERM a := (0, 0) (20, 1) (40, 0);
+                    TERM b := (30, 0) (50, 1) (70, 0);
+                    METHOD : CoG;
+                    DEFAULT := -1;
+                    RANGE := (0 .. 70);
+                END_DEFUZZIFY
+                RULEBLOCK r
+                    AND : MIN;
+                    ACT : MIN;
+                    ACCU : MAX;
+                    RULE 1 : IF x IS lo THEN y IS a;
+                    RULE 2 : IF x IS hi THEN y IS b;
+                END_RULEBLOCK
+                END_FUNCTION_BLOCK
+                """).newCompiledInstance(null);
+        small.setInputs(5);
+        small.evaluate();
+        assertTrue(small.staticFilter().staged(), "a small chain is staged by generated code");
     }
 
     /**
