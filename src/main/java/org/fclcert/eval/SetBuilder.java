@@ -258,7 +258,7 @@ final class SetBuilder {
         nq = q;
     }
 
-    /** Room in qx, qy for one more contribution over points f to l: its points, crossings and two ends. */
+    /** Room in qx, qy for one more contribution of that many pieces (point f to l): its points, crossings and ends. */
     private void room(int pieces) {
         if (qx.length < nq + 2 * pieces + 4) {
             qx = Arrays.copyOf(qx, 2 * (nq + 2 * pieces + 4));
