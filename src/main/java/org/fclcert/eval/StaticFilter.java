@@ -1148,8 +1148,10 @@ final class StaticFilter {
 
     private static TermChain chainOutput(BlockPlan plan, int i) {
         OutputPlan o = plan.outputs[i];
-        if (o.singletons() || plan.smoothOutputs[i] || o.method() != org.fclcert.model.DefuzzificationMethod.COG
-                || o.accumulation() != AccumulationMethod.MAX || o.noChange() || plan.types[o.slot()].isInteger()) {
+        // BlockPlan.chains holds a chain only for CoG under MAX over point terms; an INT output's value is rounded on
+        // store, which this step does not do. NC needs no test: a step where nothing fired goes to the running path
+        TermChain chain = plan.chains()[i];
+        if (chain == null || plan.types[o.slot()].isInteger()) {
             return null;
         }
         for (org.fclcert.model.ActivationMethod a : o.contributionActivation()) {
@@ -1163,7 +1165,7 @@ final class StaticFilter {
                 return null;
             }
         }
-        return plan.chains()[i];
+        return chain;
     }
 
     /**

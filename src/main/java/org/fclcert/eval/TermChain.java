@@ -75,7 +75,8 @@ final class TermChain {
         Integer[] order = new Integer[m];
         for (int t = 0; t < m; t++) {
             Shape s = shapes[ts[t]];
-            if (s.singleton || !s.constant || s.kind != null || s.computed != null || s.n < 2 || rank[ts[t] - base] != -1) {
+            // (each term has a shape of its own, BlockCompiler: no shape twice in one output)
+            if (s.singleton || !s.constant || s.kind != null || s.computed != null || s.n < 2) {
                 return null;
             }
             double[] x = s.sortedX;
@@ -103,7 +104,6 @@ final class TermChain {
             if (f < 0 || d > r) {
                 return null;            // never positive, or not unimodal
             }
-            rank[ts[t] - base] = 0;
             first[ts[t] - base] = Math.max(0, f - 1);
             last[ts[t] - base] = Math.min(n - 1, l + 1);
             start[t] = y[0] > 0 ? Double.NEGATIVE_INFINITY : x[first[ts[t] - base]];
@@ -116,9 +116,7 @@ final class TermChain {
         for (int k = 0; k < m; k++) {
             int t = order[k];
             rank[ts[t] - base] = k;
-            if (k > 0 && start[t] == Double.NEGATIVE_INFINITY || k < m - 1 && end[t] == Double.POSITIVE_INFINITY) {
-                return null;            // a shoulder inside the chain overlaps more than its neighbour
-            }
+            // (a shoulder inside the chain is refused below: its neighbour's overlap reaches past that one's slope)
             if (k + 2 < m && end[t] > start[order[k + 2]]) {
                 return null;            // meets a term beyond its neighbour
             }
