@@ -58,7 +58,12 @@ class VendorWalkthroughTest {
         Cli rerun = Cli.run("certify", "--iut", IUT, "--case", "E-WITH-CONST-001", "--out", dir.resolve("one").toString());
         assertEquals(0, rerun.exitCode(), rerun.err());
         assertTrue(rerun.out().contains("Basic Level: not determined (0 of " + basic + " run)"), rerun.out());
-        assertTrue(rerun.out().contains("Claimed, not determined: E-WITH-CONST (1 of 4 run)"), rerun.out());
+        // the cases certify counts for the row (an interpretation flag takes a case out, as for Basic above)
+        long withConst = org.fclcert.corpus.Corpus.load(Path.of("conformance")).cases().stream()
+                .filter(c -> c.tests().contains(org.fclcert.model.Feature.E_WITH_CONST) && c.interpretation().isEmpty())
+                .count();
+        assertTrue(rerun.out().contains("Claimed, not determined: E-WITH-CONST (1 of " + withConst + " run)"),
+                rerun.out());
         assertFalse(rerun.out().contains("not realised"), rerun.out());
         Report one = JsonReport.read(dir.resolve("one/report.json"));
         assertEquals(List.of(), VerdictInvariants.violations(one));
