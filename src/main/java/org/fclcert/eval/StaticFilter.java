@@ -98,7 +98,6 @@ final class StaticFilter {
     /** Per contribution (in output order): its term's shape and activation, for the chain outputs. */
     private final int[] contributionShape;
     private final org.fclcert.model.ActivationMethod[] contributionActivation;
-    private final boolean[] contributionProd;
     /**
      * Per chain output: its contributions are stored in the chain's order, one per term
      * ({@link #contributionPlaces}), so that {@link #chainOutput} adds them without merging and
@@ -249,7 +248,6 @@ final class StaticFilter {
             shapeY[s] = plan.shapes[s].sortedY;
         }
         contributionActivation = new org.fclcert.model.ActivationMethod[nc];
-        contributionProd = new boolean[nc];
         chainOf = chains;
         chainInOrder = new boolean[no];
         chainLo = new double[no];
@@ -270,7 +268,7 @@ final class StaticFilter {
             }
             int[] cs = o.contributions();
             int[] place = contributionPlaces(o, chains[i]);
-            chainInOrder[i] = chains[i] != null && place != null;
+            chainInOrder[i] = place != null;      // null for an output without a chain too
             for (int k = 0; k < cs.length; k++) {
                 int c = cs[k];
                 int at = outFrom[i] + (place != null ? place[k] : k);
@@ -291,7 +289,6 @@ final class StaticFilter {
                 contributionShape[at] = o.termShapes()[t];
                 contributionIndex[at] = c;
                 contributionActivation[at] = o.contributionActivation()[k];
-                contributionProd[at] = o.contributionActivation()[k] == org.fclcert.model.ActivationMethod.PROD;
                 chainSpread[i] = Math.max(chainSpread[i], e);
             }
             if (chains[i] != null) {
@@ -827,7 +824,8 @@ final class StaticFilter {
                 mv.visitVarInsn(DLOAD, d);
                 mv.visitLdcInsn(w);
                 if (chainInOrder[i]) {
-                    mv.visitInsn(contributionProd[k] ? ICONST_1 : ICONST_0);
+                    mv.visitInsn(contributionActivation[k] == org.fclcert.model.ActivationMethod.PROD ? ICONST_1
+                            : ICONST_0);
                     mv.visitMethodInsn(INVOKEVIRTUAL, "org/fclcert/eval/Activations", "add", "(IDDZ)V", false);
                 } else {
                     mv.visitFieldInsn(GETSTATIC, "org/fclcert/model/ActivationMethod",
